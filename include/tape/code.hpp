@@ -1,0 +1,93 @@
+// Frame codes: how frames on tape stand for characters (ISO 7-bit with a parity track, EIA RS-244).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "tape/frame.hpp"
+
+namespace tape {
+
+enum class Code { iso, eia };
+
+/// The rule for track 8 of an ISO/ASCII tape. NC tapes use even; DEC-era ASCII tapes often mark.
+enum class Parity {
+    even,   ///< track 8 makes the number of holes even (ISO 840, ГОСТ 13052-74)
+    odd,    ///< track 8 makes the number of holes odd
+    mark,   ///< track 8 always punched
+    space,  ///< track 8 never punched
+    none,   ///< track 8 ignored
+};
+
+std::string_view code_name(Code c);
+std::string_view parity_name(Parity p);
+std::optional<Code> parse_code(std::string_view name);
+std::optional<Parity> parse_parity(std::string_view name);
+
+/// A code table read from data: each entry maps one ISO character to one frame.
+/// The EIA table lives in data/eia-rs244.tab; its text is compiled in and may be replaced at run time.
+class CodeTable {
+public:
+    /// Reads the table text (format in data/eia-rs244.tab). Throws Error(Errc::bad_table) with the
+    /// line of a malformed entry, of a frame or character given twice, or of an even-parity frame.
+    static CodeTable parse(std::string_view text);
+
+    /// The built-in EIA RS-244 table.
+    static const CodeTable& builtin_eia();
+
+    /// Frame for an ISO character (0..127), or nullopt when the table has none.
+    std::optional<Frame> frame_for(char c) const;
+    /// ISO character for a frame, or nullopt when no entry uses it. NUL stands for blank tape.
+    std::optional<char> char_for(Frame f) const;
+
+private:
+    std::array<std::int16_t, 128> frame_of_char_{};
+    std::array<std::int16_t, 256> char_of_frame_{};
+};
+
+/// What one frame means under a FrameCode.
+enum class FrameKind : std::int8_t {
+    character,    ///< a character to pass on
+    blank,        ///< blank tape (NUL, ПУС): skipped
+    rubout,       ///< DEL (ЗБ): skipped wherever it stands
+    parity_error, ///< the holes fail the code's parity rule
+    not_in_code,  ///< good parity but no character of this code
+};
+
+/// One frame code with its parity rule, as two lookup tables built once.
+/// Cheap to copy; the decoder, encoder, survey and the holes writer all read frames through it.
+class FrameCode {
+public:
+    /// ISO 7-bit positions on tracks 1-7, track 8 by the parity rule.
+    static FrameCode iso(Parity parity = Parity::even);
+    /// EIA RS-244 from a table (the built-in one unless a corrected copy is given).
+    static FrameCode eia(const CodeTable& table = CodeTable::builtin_eia());
+    static FrameCode make(Code code, Parity parity, const CodeTable* eia_table = nullptr);
+
+    Code code() const { return code_; }
+    Parity parity() const { return parity_; }
+
+    FrameKind kind(Frame f) const { return static_cast<FrameKind>(kind_[f]); }
+    /// The ISO character (7-bit) of a frame of kind character.
+    char character(Frame f) const { return static_cast<char>(char_[f]); }
+    /// The frame that carries ISO character c, or nullopt when this code cannot carry it.
+    std::optional<Frame> frame_for(unsigned char c) const;
+
+    /// Short label for listings: "%", "LF", "NUL", "DEL", "SP", "parity error", "not EIA".
+    std::string label(Frame f) const;
+
+private:
+    Code code_ = Code::iso;
+    Parity parity_ = Parity::even;
+    std::array<std::int8_t, 256> kind_{};
+    std::array<std::uint8_t, 256> char_{};
+    std::array<std::int16_t, 128> frame_{};
+};
+
+/// Name of an ISO control character ("LF", "NUL"...) or the character itself.
+std::string char_label(char c);
+
+}  // namespace tape

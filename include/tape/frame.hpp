@@ -1,0 +1,23 @@
+// A frame is one row across 8-track paper tape: bit 0 = track 1 ... bit 7 = track 8.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <string>
+
+namespace tape {
+
+using Frame = std::uint8_t;
+
+inline constexpr Frame blank_frame = 0x00;  ///< feed hole only: leader, trailer, tape feed (ПУС)
+
+/// Number of holes punched in the frame (feed hole not counted).
+constexpr int hole_count(Frame f) { return std::popcount(static_cast<unsigned>(f)); }
+
+/// True when track (1..8) is punched.
+constexpr bool has_track(Frame f, int track) { return (f >> (track - 1)) & 1U; }
+
+/// The frame drawn as on tape, tracks 8..4, the feed hole, tracks 3..1: "|o o  .o o|" for ISO '%'.
+std::string holes_picture(Frame f);
+
+}  // namespace tape

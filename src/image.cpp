@@ -1,0 +1,56 @@
+// The image format table: the one place formats are listed.
+#include <algorithm>
+#include <cctype>
+
+#include "image_formats.hpp"
+#include "tape/image.hpp"
+
+namespace tape {
+namespace {
+
+const ImageFormat formats[] = {
+    holes_image_format(),
+    raw_image_format(),
+};
+
+std::string lower(std::string_view s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return std::tolower(c); });
+    return out;
+}
+
+}  // namespace
+
+std::span<const ImageFormat> image_formats() { return formats; }
+
+const ImageFormat* find_image_format(std::string_view id) {
+    for (const auto& f : formats)
+        if (f.id == id) return &f;
+    return nullptr;
+}
+
+const ImageFormat* image_format_for_path(std::string_view path) {
+    auto dot = path.rfind('.');
+    auto slash = path.rfind('/');
+    if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return nullptr;
+    std::string ext = lower(path.substr(dot));
+    for (const auto& f : formats)
+        for (auto e : f.extensions)
+            if (e == ext) return &f;
+    return nullptr;
+}
+
+const ImageFormat& detect_image_format(std::span<const std::uint8_t> prefix) {
+    const ImageFormat* best = &formats[0];
+    int best_score = -1;
+    for (const auto& f : formats) {
+        int score = f.match(prefix);
+        if (score > best_score) {
+            best = &f;
+            best_score = score;
+        }
+    }
+    return *best;
+}
+
+}  // namespace tape

@@ -1,0 +1,11 @@
+// The format modules, one file each; image.cpp lists them.
+#pragma once
+
+#include "tape/image.hpp"
+
+namespace tape {
+
+ImageFormat raw_image_format();
+ImageFormat holes_image_format();
+
+}  // namespace tape

@@ -1,0 +1,117 @@
+// holes: a text picture of the tape, one frame a line:
+//     |87654.321| comment
+// tracks 8..4, the feed hole '.', tracks 3..1; 'o' (or 'O', '*') a hole, space no hole.
+// Anything after the closing '|' is a comment (the writer puts the frame number and the decoded
+// character there); blank lines and lines starting with '#' are comments too.
+#include <cstdio>
+
+#include "image_formats.hpp"
+#include "tape/error.hpp"
+
+namespace tape {
+namespace {
+
+constexpr std::string_view holes_extensions[] = {".holes", ".txt"};
+constexpr int track_of_column[10] = {0, 8, 7, 6, 5, 4, 0, 3, 2, 1};  // column 6 is the feed hole
+
+bool is_hole(char c) { return c == 'o' || c == 'O' || c == '*'; }
+
+// The frame drawn on one line, or an explanation of what is wrong with it.
+std::optional<Frame> parse_picture(std::string_view line, std::string* why) {
+    if (line.size() < 11 || line[0] != '|' || line[10] != '|') {
+        *why = "expected a frame picture |87654.321| (10 characters between the bars incl. the feed hole)";
+        return std::nullopt;
+    }
+    if (line[6] != '.') {
+        *why = "the feed hole column (between tracks 4 and 3) must be '.'";
+        return std::nullopt;
+    }
+    Frame f = 0;
+    for (int col = 1; col <= 9; ++col) {
+        if (col == 6) continue;
+        char c = line[col];
+        if (is_hole(c)) f |= static_cast<Frame>(1U << (track_of_column[col] - 1));
+        else if (c != ' ') {
+            *why = std::string("'") + c + "' in track " + std::to_string(track_of_column[col]) +
+                   " is neither a hole 'o' nor a space";
+            return std::nullopt;
+        }
+    }
+    return f;
+}
+
+std::string_view trim_left(std::string_view s) {
+    while (!s.empty() && (s[0] == ' ' || s[0] == '\t')) s.remove_prefix(1);
+    return s;
+}
+
+template <typename Fn>
+void for_each_line(std::span<const std::uint8_t> bytes, Fn fn) {
+    std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    std::uint64_t line_no = 0;
+    while (!text.empty()) {
+        auto nl = text.find('\n');
+        std::string_view line = text.substr(0, nl);
+        text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        ++line_no;
+        line = trim_left(line);
+        if (line.empty() || line[0] == '#') continue;
+        if (!fn(line, line_no, text.empty())) return;
+    }
+}
+
+int holes_match(std::span<const std::uint8_t> prefix) {
+    int score = 0;
+    for_each_line(prefix, [&](std::string_view line, std::uint64_t, bool last) {
+        std::string why;
+        if (parse_picture(line, &why)) score = 100;
+        else if (last && line[0] == '|') score = 60;  // a line cut off by the end of the prefix
+        return false;
+    });
+    return score;
+}
+
+std::vector<Frame> holes_read(std::span<const std::uint8_t> bytes) {
+    std::vector<Frame> frames;
+    for_each_line(bytes, [&](std::string_view line, std::uint64_t line_no, bool) {
+        std::string why;
+        auto f = parse_picture(line, &why);
+        if (!f) throw Error(Errc::bad_image, Position{.line = line_no}, why);
+        frames.push_back(*f);
+        return true;
+    });
+    return frames;
+}
+
+std::string holes_write(std::span<const Frame> frames, const ImageWriteOptions& options) {
+    std::string out;
+    out.reserve(frames.size() * 32 + 200);
+    out += "# tape holes picture: one frame a line, tracks 87654.321 ('.' = feed hole, 'o' = hole)\n";
+    if (options.annotate)
+        out += "# code: " + std::string(code_name(options.annotate->code())) + ", parity " +
+               std::string(parity_name(options.annotate->parity())) + "; frame number, then character\n";
+    char number[24];
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        out += holes_picture(frames[i]);
+        std::snprintf(number, sizeof number, " %6zu", i + 1);
+        out += number;
+        if (options.annotate) {
+            FrameKind k = options.annotate->kind(frames[i]);
+            bool bad = k == FrameKind::parity_error || k == FrameKind::not_in_code;
+            out += bad ? "  ! " : "  ";
+            out += options.annotate->label(frames[i]);
+        }
+        out += '\n';
+    }
+    return out;
+}
+
+}  // namespace
+
+ImageFormat holes_image_format() {
+    return {"holes", "text picture, one frame a line: |87654.321|", holes_extensions, false,
+            holes_match, holes_read, holes_write};
+}
+
+}  // namespace tape

@@ -1,0 +1,72 @@
+// What every subcommand shares: reading inputs, writing outputs, code options, error reporting.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tape/code.hpp"
+#include "tape/decode.hpp"
+#include "tape/error.hpp"
+#include "tape/image.hpp"
+
+namespace cli {
+
+/// Thrown to end the program with an exit status once the message is printed.
+struct Exit {
+    int status;
+};
+
+/// Exit statuses: mapped here and nowhere else.
+enum Status { ok = 0, bad_data = 1, usage = 2, io_failure = 3 };
+int status_for(tape::Errc code);
+
+/// Options given before or after the subcommand.
+struct Globals {
+    int verbosity = 0;      ///< -v steps up, -q down
+    std::string eia_table;  ///< --eia-table FILE: a corrected EIA table
+    std::optional<tape::CodeTable> loaded_table;
+
+    /// The EIA table to use (loaded on first use), or nullptr for the built-in one.
+    const tape::CodeTable* table();
+};
+Globals& globals();
+
+/// "tape: FILE: WHERE: message" on stderr.
+void say(const std::string& file, const std::string& message);
+/// Prints the error as above and throws Exit with its status.
+[[noreturn]] void fail(const std::string& file, const tape::Error& e, bool raw_frames = false);
+[[noreturn]] void fail(const std::string& file, tape::Errc code, const std::string& message);
+
+/// "frame 137 (byte 0x88)" for raw images, where frame N is byte N-1.
+std::string where_text(const tape::Position& where, bool raw_frames);
+
+/// A tape image read from a file or stdin.
+struct TapeInput {
+    std::string name;  ///< as given, "-" for stdin; "stdin" in messages
+    const tape::ImageFormat* format = nullptr;
+    std::vector<tape::Frame> frames;
+    bool raw() const { return format && format->id == "raw"; }
+};
+/// Reads IN ("-" = stdin) as an image: --format, else by extension, else by content.
+TapeInput read_tape(const std::string& path, const std::string& format_id);
+std::string display_name(const std::string& path);
+
+/// The code chosen for a decoding run: --code auto detects and explains itself with -v.
+struct CodeChoice {
+    std::string code = "auto";
+    std::string parity = "even";
+    std::string charset = "ascii";
+};
+void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto);
+/// Options for the library from the choice, detecting the code when asked; fails with exit 1 when
+/// the tape fits neither code.
+tape::DecodeOptions resolve_code(const CodeChoice& choice, const TapeInput& input);
+
+/// Writes data to OUT ("-" or empty = stdout) atomically; refuses to replace a file without force,
+/// and a binary image on a terminal without force.
+void write_output(const std::string& path, const std::string& data, bool binary, bool force);
+
+}  // namespace cli

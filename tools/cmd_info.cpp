@@ -1,0 +1,102 @@
+// tape info: what is on a tape — code, parity found, frame counts, program starts.
+#include <cstdio>
+#include <sstream>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "tape/detect.hpp"
+#include "tape/survey.hpp"
+
+namespace cli {
+namespace {
+
+struct InfoArgs {
+    std::string input = "-", format, code = "auto", parity;
+    bool json = false;
+};
+
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (unsigned char c : s) {
+        if (c == '"' || c == '\\') out += '\\', out += static_cast<char>(c);
+        else if (c < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out += buf;
+        } else out += static_cast<char>(c);
+    }
+    return out + "\"";
+}
+
+std::string parity_found(const tape::ParityCounts& p) {
+    auto d = p.dominant();
+    if (!d) return p.frames == 0 ? "none" : "mixed";
+    return std::string(tape::parity_name(*d));
+}
+
+void run(const InfoArgs& a) {
+    TapeInput in = read_tape(a.input, a.format);
+    std::optional<tape::Code> code;
+    std::string reason;
+    if (a.code == "auto") {
+        auto d = tape::detect_code(in.frames);
+        code = d.code;
+        reason = d.reason;
+    } else {
+        code = tape::parse_code(a.code);
+        reason = "given with --code";
+    }
+    auto counts = tape::count_parity(in.frames);
+    tape::Parity rule = tape::Parity::even;
+    if (!a.parity.empty()) rule = *tape::parse_parity(a.parity);
+    else if (!code && counts.dominant()) rule = *counts.dominant();  // count errors against what the tape uses
+    tape::FrameCode fc = tape::FrameCode::make(code.value_or(tape::Code::iso), rule, globals().table());
+    tape::TapeSurvey s = tape::survey(in.frames, fc);
+    std::string code_text = code ? std::string(tape::code_name(*code)) : "unknown";
+    std::ostringstream out;
+    if (a.json) {
+        out << "{\"file\": " << json_string(display_name(in.name)) << ", \"format\": " << json_string(std::string(in.format->id))
+            << ", \"code\": " << (code ? json_string(code_text) : "null") << ", \"code_reason\": " << json_string(reason)
+            << ", \"parity\": " << json_string(parity_found(counts))
+            << ", \"parity_rule\": " << json_string(std::string(tape::parity_name(fc.parity())))
+            << ", \"frames\": {\"total\": " << s.frames << ", \"leader\": " << s.leader << ", \"data\": " << s.data
+            << ", \"del\": " << s.rubouts << ", \"blank_inside\": " << s.blank_inside << ", \"trailer\": " << s.trailer
+            << ", \"parity_errors\": " << s.parity_errors << ", \"not_in_code\": " << s.not_in_code
+            << "}, \"program_starts\": " << s.program_starts << ", \"end_of_blocks\": " << s.end_of_blocks << "}\n";
+    } else {
+        auto misfit = counts.dominant() ? counts.misfits(*counts.dominant()) : 0;
+        out << "file:           " << display_name(in.name) << "\n"
+            << "format:         " << in.format->id << "\n"
+            << "code:           " << code_text << " (" << reason << ")\n"
+            << "parity found:   " << parity_found(counts) << " (" << counts.frames << " punched frames, "
+            << counts.even << " even, " << counts.odd << " odd, " << counts.mark << " with track 8"
+            << (misfit ? ", " + std::to_string(misfit) + " do not fit" : "") << ")\n"
+            << "frames:         " << s.frames << "\n"
+            << "  leader:       " << s.leader << "\n"
+            << "  data:         " << s.data << "\n"
+            << "  DEL:          " << s.rubouts << "\n"
+            << "  blank inside: " << s.blank_inside << "\n"
+            << "  trailer:      " << s.trailer << "\n"
+            << "  parity errors:" << ' ' << s.parity_errors << " (" << tape::parity_name(fc.parity()) << " rule)\n";
+        if (s.not_in_code) out << "  not in code:  " << s.not_in_code << "\n";
+        out << "program starts: " << s.program_starts << "\n"
+            << "end of blocks:  " << s.end_of_blocks << "\n";
+    }
+    write_output("-", out.str(), false, false);
+}
+
+}  // namespace
+
+void add_info(CLI::App& app) {
+    auto a = std::make_shared<InfoArgs>();
+    auto* sub = app.add_subcommand("info", "Tell what is on a tape: code, parity found, frame counts, program starts");
+    sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
+    sub->add_option("--code,-c", a->code, "auto, iso or eia")->check(CLI::IsMember({"auto", "iso", "eia"}))->capture_default_str();
+    sub->add_option("--parity,-p", a->parity, "Count parity errors against this rule (default: even, or what the tape uses)")
+        ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}));
+    sub->add_option("--format,-f", a->format, "Image format of IN: raw or holes")->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_flag("--json", a->json, "One JSON object for other programs");
+    sub->callback([a] { run(*a); });
+}
+
+}  // namespace cli

@@ -1,0 +1,13 @@
+// One function per subcommand file; tape.cpp only wires them.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace cli {
+
+void add_encode(CLI::App& app);
+void add_decode(CLI::App& app);
+void add_show(CLI::App& app);
+void add_info(CLI::App& app);
+
+}  // namespace cli

@@ -1,0 +1,36 @@
+// tape: punched paper tape for NC machine tools — encode, decode, show, inspect.
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"tape: punched paper tape (перфолента) for NC machine tools.\n"
+                 "Turns part programs into 8-track tape images and back, ISO 7-bit or EIA RS-244.",
+                 "tape"};
+    app.set_version_flag("--version", std::string("tape ") + TAPE_VERSION);
+    app.require_subcommand(1);
+    app.fallthrough();
+    auto& g = cli::globals();
+    app.add_flag_function("-v,--verbose", [&g](std::int64_t n) { g.verbosity += static_cast<int>(n); },
+                          "Say more on stderr (the detected code, counts)");
+    app.add_flag_function("-q,--quiet", [&g](std::int64_t n) { g.verbosity -= static_cast<int>(n); },
+                          "Say less on stderr");
+    app.add_option("--eia-table", g.eia_table, "A corrected EIA code table (format of data/eia-rs244.tab)")
+        ->envname("TAPE_EIA_TABLE");
+    app.footer("Exit status: 0 ok, 1 bad data in the input, 2 usage error, 3 I/O failure.\n"
+               "See tape(1) and tape-image(5).");
+    cli::add_encode(app);
+    cli::add_decode(app);
+    cli::add_show(app);
+    cli::add_info(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int status = app.exit(e);
+        return status == 0 ? cli::ok : cli::usage;
+    } catch (const cli::Exit& e) {
+        return e.status;
+    }
+    return cli::ok;
+}
