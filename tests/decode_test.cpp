@@ -1,0 +1,137 @@
+// Decoding: blank tape and DEL skipped, bad frames reported with their numbers, never repaired.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "tape/decode.hpp"
+#include "tape/encode.hpp"
+#include "test_util.hpp"
+
+using namespace tape;
+
+namespace {
+// "%\nN1\n" in ISO with even parity, by hand from the spec table.
+const std::vector<Frame> small_iso = {0x00, 0x00, 0xA5, 0x0A, 0x4E, 0xB1, 0x0A, 0x00};
+}  // namespace
+
+TEST(Decode, SkipsLeaderTrailerAndBlankTape) {
+    auto r = decode(small_iso, {});
+    EXPECT_TRUE(r.ok());
+    EXPECT_TRUE(r.complete);
+    EXPECT_EQ(r.text, "%\nN1\n");
+}
+
+TEST(Decode, SkipsDelWhereverItStands) {
+    std::vector<Frame> t = {0xFF, 0xA5, 0xFF, 0x0A, 0x4E, 0xFF, 0xFF, 0xB1, 0x0A, 0xFF};
+    EXPECT_EQ(decode(t, {}).text, "%\nN1\n");
+    DecodeOptions eia{.code = Code::eia};
+    std::vector<Frame> e = {0x7F, 0x0B, 0x80, 0x45, 0x7F, 0x01, 0x80};
+    EXPECT_EQ(decode(e, eia).text, "%\nN1\n");
+}
+
+TEST(Decode, StopsAtTheFirstParityErrorWithItsFrameNumber) {
+    auto t = small_iso;
+    t[5] ^= 0x80;  // '1' loses its parity hole
+    t[6] ^= 0x01;
+    auto r = decode(t, {});
+    ASSERT_EQ(r.diagnostics.size(), 1U);
+    EXPECT_FALSE(r.complete);
+    EXPECT_EQ(r.diagnostics[0].code, Errc::parity);
+    EXPECT_EQ(*r.diagnostics[0].where.frame, 6U);
+    EXPECT_EQ(r.diagnostics[0].message, "parity error, holes |  oo .  o|");
+}
+
+TEST(Decode, KeepGoingReportsEveryBadFrameAndMarksIt) {
+    auto t = small_iso;
+    t[5] ^= 0x80;
+    t[4] ^= 0x02;
+    DecodeOptions o{.keep_going = true};
+    auto r = decode(t, o);
+    ASSERT_EQ(r.diagnostics.size(), 2U);
+    EXPECT_EQ(*r.diagnostics[0].where.frame, 5U);
+    EXPECT_EQ(*r.diagnostics[1].where.frame, 6U);
+    EXPECT_TRUE(r.complete);
+    EXPECT_EQ(r.text, "%\n" + std::string(bad_frame_marker) + std::string(bad_frame_marker) + "\n");
+}
+
+TEST(Decode, PositionsGiveTheFrameOfEveryCharacter) {
+    DecodeOptions o{.positions = true};
+    auto r = decode(small_iso, o);
+    EXPECT_EQ(r.frame_of, (std::vector<std::uint64_t>{2, 3, 4, 5, 6}));
+}
+
+TEST(Decode, FastPathAgreesWithTheTableOnRandomTapes) {
+    std::mt19937 rng(2026);
+    for (int round = 0; round < 200; ++round) {
+        std::vector<Frame> t(1 + rng() % 300);
+        // Mostly good frames, with a few random ones, blanks and DELs.
+        FrameCode iso = FrameCode::iso();
+        for (auto& f : t) {
+            unsigned pick = rng() % 100;
+            f = pick < 90 ? *iso.frame_for(static_cast<unsigned char>(0x20 + rng() % 0x5F))
+                          : pick < 94 ? 0x00 : pick < 97 ? 0xFF : static_cast<Frame>(rng());
+        }
+        for (bool keep : {false, true}) {
+            DecodeOptions fast{.keep_going = keep}, table{.keep_going = keep, .positions = true};
+            auto a = decode(t, fast), b = decode(t, table);
+            ASSERT_EQ(a.text, b.text);
+            ASSERT_EQ(a.complete, b.complete);
+            ASSERT_EQ(a.diagnostics.size(), b.diagnostics.size());
+            for (std::size_t i = 0; i < a.diagnostics.size(); ++i)
+                ASSERT_EQ(a.diagnostics[i].where.frame, b.diagnostics[i].where.frame);
+        }
+    }
+}
+
+// Every single-bit flip of every frame of a sample ISO tape is detected at that frame.
+TEST(Decode, EverySingleBitFlipOfTheSampleIsDetected) {
+    auto tape = read_frames(sample_path("gost-20999-format-example.iso.ptp"));
+    ASSERT_GT(tape.size(), 300U);
+    std::size_t flips = 0, detected = 0;
+    for (std::size_t i = 0; i < tape.size(); ++i) {
+        for (int bit = 0; bit < 8; ++bit) {
+            auto damaged = tape;
+            damaged[i] ^= static_cast<Frame>(1U << bit);
+            ++flips;
+            for (bool positions : {false, true}) {
+                auto r = decode(damaged, DecodeOptions{.positions = positions});
+                bool found = !r.diagnostics.empty() && *r.diagnostics[0].where.frame == i + 1;
+                if (!positions) detected += found;
+                else EXPECT_TRUE(found) << "frame " << i + 1 << " bit " << bit;
+            }
+        }
+    }
+    EXPECT_EQ(detected, flips) << "flips detected: " << detected << " of " << flips;
+}
+
+TEST(Decode, EiaFrameOutsideTheTableIsReported) {
+    std::vector<Frame> e = {0x0B, 0x80, 0x0D, 0x80};
+    auto r = decode(e, DecodeOptions{.code = Code::eia});
+    ASSERT_EQ(r.diagnostics.size(), 1U);
+    EXPECT_EQ(r.diagnostics[0].code, Errc::not_in_code);
+    EXPECT_EQ(*r.diagnostics[0].where.frame, 3U);
+    auto p = decode(std::vector<Frame>{0x0B, 0x03}, DecodeOptions{.code = Code::eia});
+    EXPECT_EQ(p.diagnostics.at(0).code, Errc::parity);
+}
+
+TEST(Decode, Koi7ShiftsBecomeCyrillic) {
+    // SO, 'd' 'e' (Н1: Д Е), SI, 'X'
+    FrameCode iso = FrameCode::iso();
+    std::vector<Frame> t;
+    for (char c : std::string("(\x0e" "de\x0fX)")) t.push_back(*iso.frame_for(static_cast<unsigned char>(c)));
+    EXPECT_EQ(decode(t, DecodeOptions{.charset = Charset::koi7}).text, "(ДЕX)");
+    EXPECT_EQ(decode(t, DecodeOptions{}).text, "(\x0e" "de\x0fX)");
+    auto with_pos = decode(t, DecodeOptions{.charset = Charset::koi7, .positions = true});
+    EXPECT_EQ(with_pos.frame_of.size(), with_pos.text.size());
+    EXPECT_EQ(with_pos.frame_of[1], 2U);  // both bytes of Д come from frame index 2
+    EXPECT_EQ(with_pos.frame_of[2], 2U);
+}
+
+TEST(Decode, MarkParityTapeReadsWithTheRightRule) {
+    EncodeOptions eo{.parity = Parity::mark, .leader = 3, .trailer = 3};
+    auto t = encode("HELLO\n", eo);
+    EXPECT_FALSE(decode(t, {}).ok());
+    auto r = decode(t, DecodeOptions{.parity = Parity::mark});
+    EXPECT_TRUE(r.ok());
+    EXPECT_EQ(r.text, "HELLO\n");
+}

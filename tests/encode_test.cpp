@@ -1,0 +1,110 @@
+// Encoding: leader and trailer, line endings, characters a code cannot carry, round trips.
+#include <gtest/gtest.h>
+
+#include "tape/decode.hpp"
+#include "tape/encode.hpp"
+#include "tape/error.hpp"
+#include "test_util.hpp"
+
+using namespace tape;
+
+namespace {
+Error encode_error(std::string_view text, EncodeOptions o = {}) {
+    try {
+        encode(text, o);
+    } catch (const Error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for " << text;
+    return Error(Errc::usage, "none");
+}
+}  // namespace
+
+TEST(Encode, LeaderAndTrailerAreBlankFrames) {
+    auto t = encode("%\n", {});
+    ASSERT_EQ(t.size(), 202U);
+    for (std::size_t i = 0; i < 100; ++i) EXPECT_EQ(t[i], 0x00);
+    EXPECT_EQ(t[100], 0xA5);
+    EXPECT_EQ(t[101], 0x0A);
+    EXPECT_EQ(t[201], 0x00);
+    EXPECT_EQ(encode("%\n", EncodeOptions{.leader = 0, .trailer = 0}), (std::vector<Frame>{0xA5, 0x0A}));
+}
+
+TEST(Encode, CrLfBecomesLfAndEiaEndOfBlock) {
+    EncodeOptions bare{.leader = 0, .trailer = 0};
+    EXPECT_EQ(encode("N1\r\nM2\r\n", bare), encode("N1\nM2\n", bare));
+    EncodeOptions eia{.code = Code::eia, .leader = 0, .trailer = 0};
+    EXPECT_EQ(encode("%\nN1\r\n", eia), (std::vector<Frame>{0x0B, 0x80, 0x45, 0x01, 0x80}));
+}
+
+TEST(Encode, FastPathMatchesTheTableForEveryPosition) {
+    std::string all;
+    for (int rep = 0; rep < 3; ++rep)
+        for (int c = 1; c < 127; ++c) all += static_cast<char>(c);
+    EncodeOptions bare{.leader = 0, .trailer = 0};
+    auto frames = encode(all, bare);
+    FrameCode iso = FrameCode::iso();
+    ASSERT_EQ(frames.size(), all.size());
+    for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(frames[i], *iso.frame_for(static_cast<unsigned char>(all[i])));
+}
+
+TEST(Encode, NonAsciiIsAnErrorNamingLineAndColumn) {
+    Error e = encode_error("%\nN1 X1 (é)\n");
+    EXPECT_EQ(e.code(), Errc::bad_text);
+    EXPECT_EQ(*e.where().line, 2U);
+    EXPECT_EQ(*e.where().column, 8U);
+    EXPECT_STREQ(e.what(), "'é' cannot be punched in ISO code");
+    Error far = encode_error(std::string(100, 'X') + "\xC3\xA9");  // past the eight-byte fast loop
+    EXPECT_EQ(*far.where().column, 101U);
+    Error cyr = encode_error("(Д)\n");
+    EXPECT_STREQ(cyr.what(), "'Д' cannot be punched in ISO code (Cyrillic needs --charset koi7)");
+}
+
+TEST(Encode, EiaCannotCarryColonOrLowerCase) {
+    Error e = encode_error("%\n:1\n", EncodeOptions{.code = Code::eia});
+    EXPECT_EQ(*e.where().line, 2U);
+    EXPECT_EQ(*e.where().column, 1U);
+    EXPECT_STREQ(e.what(), "':' cannot be punched in EIA code");
+    EXPECT_EQ(*encode_error("N1 x2\n", EncodeOptions{.code = Code::eia}).where().column, 4U);
+}
+
+TEST(Encode, Koi7ShiftsOutAndBackBeforeLatinLettersAndEndOfBlock) {
+    EncodeOptions o{.charset = Charset::koi7, .leader = 0, .trailer = 0};
+    auto t = encode("(ВАЛ 1)X\n(Д)\n", o);
+    auto r = decode(t, {});
+    EXPECT_EQ(r.text, "(\x0ewal 1)\x0fX\n(\x0e" "d)\x0f\n");
+    EXPECT_EQ(decode(t, DecodeOptions{.charset = Charset::koi7}).text, "(ВАЛ 1)X\n(Д)\n");
+    Error yo = encode_error("(ЁЖ)\n", o);
+    EXPECT_STREQ(yo.what(), "'Ё' cannot be punched in ISO code (КОИ-7 has no Ё: write Е)");
+    EXPECT_EQ(*yo.where().column, 2U);
+}
+
+TEST(RoundTrip, SamplesThroughBothCodes) {
+    for (const char* name : {"gost-20999-format-example.txt", "gost-20999-format-example.eia.txt", "16k20f3s5-turning.txt"}) {
+        std::string text = read_text(sample_path(name));
+        for (Code code : {Code::iso, Code::eia}) {
+            if (code == Code::eia && text.find(':') != std::string::npos) continue;  // EIA has no ':'
+            auto frames = encode(text, EncodeOptions{.code = code});
+            auto r = decode(frames, DecodeOptions{.code = code});
+            EXPECT_TRUE(r.ok()) << name;
+            EXPECT_EQ(r.text, text) << name << " " << code_name(code);
+        }
+    }
+}
+
+TEST(RoundTrip, CommittedImagesMatchTheirSources) {
+    struct Pair {
+        const char *image, *source;
+        Code code;
+    } pairs[] = {
+        {"gost-20999-format-example.iso.ptp", "gost-20999-format-example.txt", Code::iso},
+        {"gost-20999-format-example.eia.ptp", "gost-20999-format-example.eia.txt", Code::eia},
+        {"16k20f3s5-turning.iso.ptp", "16k20f3s5-turning.txt", Code::iso},
+        {"16k20f3s5-turning.eia.ptp", "16k20f3s5-turning.txt", Code::eia},
+    };
+    for (const auto& p : pairs) {
+        auto frames = read_frames(sample_path(p.image));
+        EXPECT_EQ(frames, encode(read_text(sample_path(p.source)), EncodeOptions{.code = p.code})) << p.image;
+        EXPECT_EQ(decode(frames, DecodeOptions{.code = p.code}).text, read_text(sample_path(p.source))) << p.image;
+    }
+}

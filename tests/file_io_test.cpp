@@ -1,0 +1,74 @@
+// Outputs are written whole or not at all, and never replace a file without permission.
+#include <gtest/gtest.h>
+
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+
+#include "tape/error.hpp"
+#include "tape/file_io.hpp"
+#include "test_util.hpp"
+
+using namespace tape;
+
+namespace {
+struct TempDir {
+    std::string path;
+    TempDir() {
+        char tmpl[] = "/tmp/tape-test-XXXXXX";
+        path = ::mkdtemp(tmpl);
+    }
+    ~TempDir() { std::system(("rm -rf '" + path + "'").c_str()); }
+    int entries() const {
+        int n = 0;
+        DIR* d = ::opendir(path.c_str());
+        while (auto* e = ::readdir(d)) n += e->d_name[0] != '.';
+        ::closedir(d);
+        return n;
+    }
+};
+}  // namespace
+
+TEST(FileIo, WritesAndReadsBack) {
+    TempDir dir;
+    std::string p = dir.path + "/out.ptp";
+    write_file_atomic(p, std::string("\xA5\x0A", 2), false);
+    EXPECT_EQ(read_file(p), (std::vector<std::uint8_t>{0xA5, 0x0A}));
+    EXPECT_EQ(dir.entries(), 1);  // no temporary left behind
+}
+
+TEST(FileIo, RefusesToReplaceWithoutOverwrite) {
+    TempDir dir;
+    std::string p = dir.path + "/out.ptp";
+    write_file_atomic(p, "old", false);
+    try {
+        write_file_atomic(p, "new", false);
+        FAIL() << "replaced an existing file";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), Errc::usage);
+    }
+    EXPECT_EQ(read_text(p), "old");
+    write_file_atomic(p, "new", true);
+    EXPECT_EQ(read_text(p), "new");
+    EXPECT_EQ(dir.entries(), 1);
+}
+
+TEST(FileIo, FailuresAreIoErrorsAndLeaveNothing) {
+    TempDir dir;
+    try {
+        write_file_atomic(dir.path + "/no/such/dir/out.ptp", "x", false);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), Errc::io);
+    }
+    try {
+        read_file(dir.path + "/missing.ptp");
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), Errc::io);
+        EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos);
+    }
+    EXPECT_EQ(dir.entries(), 0);
+}
