@@ -26,9 +26,15 @@ int main(int argc, char** argv) {
     cli::add_info(app);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        int status = app.exit(e);
-        return status == 0 ? cli::ok : cli::usage;
+        std::cerr << "tape: " << e.what() << "\ntape: run 'tape --help' or 'tape SUBCOMMAND --help' for the options\n";
+        return cli::usage;
     } catch (const cli::Exit& e) {
         return e.status;
     }

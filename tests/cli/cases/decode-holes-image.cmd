@@ -1,0 +1,1 @@
+$TAPE decode tapes/gost-20999-format-example.iso.holes

@@ -1,0 +1,1 @@
+$TAPE decode --keep-going tapes/bad/parity-error.ptp

@@ -1,0 +1,1 @@
+$TAPE decode --charset koi7 tapes/koi7-comment.iso.ptp

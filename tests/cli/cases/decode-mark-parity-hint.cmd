@@ -1,0 +1,1 @@
+$TAPE decode tapes/bad/mark-parity-ascii.ptp

@@ -1,0 +1,1 @@
+$TAPE decode --parity mark tapes/bad/mark-parity-ascii.ptp

@@ -1,0 +1,1 @@
+$TAPE decode no-such-tape.ptp

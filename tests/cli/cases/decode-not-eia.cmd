@@ -1,0 +1,1 @@
+$TAPE decode tapes/bad/eia-not-in-code.ptp

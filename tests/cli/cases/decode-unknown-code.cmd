@@ -1,0 +1,1 @@
+$TAPE decode tapes/bad/random-noise.ptp

@@ -1,0 +1,1 @@
+$TAPE encode tapes/bad/non-ascii.txt -o out.ptp

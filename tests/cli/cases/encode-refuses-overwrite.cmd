@@ -1,0 +1,1 @@
+$TAPE encode tapes/16k20f3s5-turning.txt -o out.ptp && $TAPE encode tapes/gost-20999-format-example.txt -o out.ptp; status=$?; cmp out.ptp tapes/16k20f3s5-turning.iso.ptp && echo unchanged; exit $status

@@ -1,0 +1,1 @@
+$TAPE info --json tapes/16k20f3s5-turning.eia.ptp

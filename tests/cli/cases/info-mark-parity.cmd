@@ -1,0 +1,1 @@
+$TAPE info tapes/bad/mark-parity-ascii.ptp

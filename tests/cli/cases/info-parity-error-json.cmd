@@ -1,0 +1,1 @@
+$TAPE info --json tapes/bad/parity-error.ptp

@@ -1,0 +1,1 @@
+$TAPE decode --code ebcdic tapes/16k20f3s5-turning.iso.ptp

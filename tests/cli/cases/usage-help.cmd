@@ -1,0 +1,1 @@
+$TAPE --help | head -3; $TAPE decode --help | grep -c -- --keep-going
