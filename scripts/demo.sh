@@ -10,4 +10,4 @@ $tape info "$sample"
 echo "== tape decode $sample"
 $tape -v decode "$sample"
 echo "== tape show $sample (first frames)"
-$tape show "$sample" | sed -n '1,2p;101,112p'
+$tape show "$sample" | sed -n '1,2p;99,114p'
