@@ -7,15 +7,19 @@
 
 using namespace tape;
 
-TEST(IsoTable, EverySpecRowEncodesToItsFrame) {
-    FrameCode iso = FrameCode::iso();
-    for (const auto& row : spec_iso_rows) {
-        auto f = iso.frame_for(static_cast<unsigned char>(row.character));
+namespace {
+template <std::size_t N>
+void expect_each_row_encodes_to_its_frame(const FrameCode& code, const SpecRow (&rows)[N]) {
+    for (const auto& row : rows) {
+        auto f = code.frame_for(static_cast<unsigned char>(row.character));
         ASSERT_TRUE(f) << row.name;
         EXPECT_EQ(*f, row.frame) << row.name;
         EXPECT_EQ(holes_picture(*f), row.holes) << row.name;
     }
 }
+}  // namespace
+
+TEST(IsoTable, EverySpecRowEncodesToItsFrame) { expect_each_row_encodes_to_its_frame(FrameCode::iso(), spec_iso_rows); }
 
 TEST(IsoTable, EverySpecFrameDecodesToItsCharacter) {
     FrameCode iso = FrameCode::iso();
@@ -59,14 +63,8 @@ TEST(IsoTable, OtherParityRules) {
 }
 
 TEST(EiaTable, EverySpecRowEncodesToItsFrame) {
-    FrameCode eia = FrameCode::eia();
-    for (const auto& row : spec_eia_rows) {
-        auto f = eia.frame_for(static_cast<unsigned char>(row.character));
-        ASSERT_TRUE(f) << row.name;
-        EXPECT_EQ(*f, row.frame) << row.name;
-        EXPECT_EQ(holes_picture(*f), row.holes) << row.name;
-    }
-    EXPECT_EQ(*eia.frame_for('\0'), 0x00);
+    expect_each_row_encodes_to_its_frame(FrameCode::eia(), spec_eia_rows);
+    EXPECT_EQ(*FrameCode::eia().frame_for('\0'), 0x00);
 }
 
 TEST(EiaTable, EverySpecFrameDecodesToItsCharacter) {
