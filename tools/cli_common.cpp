@@ -7,6 +7,7 @@
 
 #include "tape/detect.hpp"
 #include "tape/file_io.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 
@@ -133,6 +134,83 @@ void write_output(const std::string& path, const std::string& data, bool binary,
     } catch (const tape::Error& e) {
         fail(path, e);
     }
+}
+
+
+
+void add_program_source_options(CLI::App* sub, ProgramSource& source) {
+    add_code_options(sub, source.choice, true);
+    sub->add_option("--format,-f", source.format, "Image format of IN: raw or holes (IN is then a tape image)")
+        ->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_option("--input", source.kind, "What IN is: auto (image or text by extension and content), text, image")
+        ->check(CLI::IsMember({"auto", "text", "image"}))
+        ->capture_default_str();
+}
+
+ProgramInput load_program(const std::string& path, const ProgramSource& source) {
+    ProgramInput in;
+    std::string name = display_name(path);
+    in.name = name;
+    std::vector<std::uint8_t> bytes;
+    try {
+        bytes = tape::read_file(path.empty() ? "-" : path);
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+    bool image = source.kind == "image" || !source.format.empty();
+    if (source.kind == "auto" && !image) {
+        const tape::ImageFormat* by_ext = path == "-" ? nullptr : tape::image_format_for_path(path);
+        auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
+        image = (by_ext && by_ext->id == "raw") || tape::find_image_format("holes")->match(prefix) >= 60 ||
+                !tape::is_program_text(bytes);
+    }
+    if (!image) {
+        in.tape = tape::load(std::string(bytes.begin(), bytes.end()));
+        return in;
+    }
+    TapeInput t;
+    t.name = path.empty() ? "-" : path;
+    t.format = source.format.empty() ? nullptr : tape::find_image_format(source.format);
+    if (!t.format && path != "-") t.format = tape::image_format_for_path(path);
+    if (!t.format || t.format->id == "holes") {
+        auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
+        t.format = &tape::detect_image_format(prefix);
+    }
+    try {
+        t.frames = t.format->read(bytes);
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+    tape::DecodeOptions o = resolve_code(source.choice, t);
+    o.positions = true;
+    tape::DecodeResult r = tape::decode(t.frames, o);
+    for (const auto& d : r.diagnostics) say(name, where_text(d.where, t.raw()) + ": " + d.message);
+    if (!r.ok()) throw Exit{bad_data};
+    in.from_tape = true;
+    in.tape = tape::load(std::move(r.text), std::move(r.frame_of));
+    return in;
+}
+
+std::string json_string(const std::string& s) {
+    std::string out = "\"";
+    for (unsigned char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += static_cast<char>(c);
+        } else if (c < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out += buf;
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out + "\"";
+}
+
+std::string position_text(const tape::Location& where, bool from_tape) {
+    if (from_tape && where.frame) return "frame " + std::to_string(*where.frame);
+    return "line " + std::to_string(where.line);
 }
 
 }  // namespace cli

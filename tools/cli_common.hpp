@@ -11,6 +11,7 @@
 #include "tape/decode.hpp"
 #include "tape/error.hpp"
 #include "tape/image.hpp"
+#include "tape/program.hpp"
 
 namespace cli {
 
@@ -68,5 +69,28 @@ tape::DecodeOptions resolve_code(const CodeChoice& choice, const TapeInput& inpu
 /// Writes data to OUT ("-" or empty = stdout) atomically; refuses to replace a file without force,
 /// and a binary image on a terminal without force.
 void write_output(const std::string& path, const std::string& data, bool binary, bool force);
+
+/// A program read for the loader: a text program, or a tape image decoded with frame positions.
+struct ProgramInput {
+    std::string name;  ///< for messages
+    bool from_tape = false;
+    tape::LoadedTape tape;
+};
+/// Options saying how IN is read: as decode's, plus --input text|image|auto.
+struct ProgramSource {
+    CodeChoice choice;
+    std::string format;
+    std::string kind = "auto";
+};
+void add_program_source_options(CLI::App* sub, ProgramSource& source);
+/// Reads IN: an image (by --format, extension, or content) is decoded with positions; anything that
+/// is clean UTF-8 text is a text program. A bad frame on a tape fails with exit 1, as decode does.
+ProgramInput load_program(const std::string& path, const ProgramSource& source);
+
+/// A JSON string literal for s (UTF-8 passed through, controls escaped).
+std::string json_string(const std::string& s);
+
+/// "frame 137" for tapes, "line 3" for text.
+std::string position_text(const tape::Location& where, bool from_tape);
 
 }  // namespace cli

@@ -15,19 +15,6 @@ struct InfoArgs {
     bool json = false;
 };
 
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (unsigned char c : s) {
-        if (c == '"' || c == '\\') out += '\\', out += static_cast<char>(c);
-        else if (c < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-        } else out += static_cast<char>(c);
-    }
-    return out + "\"";
-}
-
 std::string parity_found(const tape::ParityCounts& p) {
     auto d = p.dominant();
     if (!d) return p.frames == 0 ? "none" : "mixed";

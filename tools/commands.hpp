@@ -9,5 +9,9 @@ void add_encode(CLI::App& app);
 void add_decode(CLI::App& app);
 void add_show(CLI::App& app);
 void add_info(CLI::App& app);
+void add_blocks(CLI::App& app);
+void add_lint(CLI::App& app);
+void add_format(CLI::App& app);
+void add_search(CLI::App& app);
 
 }  // namespace cli

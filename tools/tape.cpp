@@ -24,6 +24,10 @@ int main(int argc, char** argv) {
     cli::add_decode(app);
     cli::add_show(app);
     cli::add_info(app);
+    cli::add_blocks(app);
+    cli::add_lint(app);
+    cli::add_format(app);
+    cli::add_search(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

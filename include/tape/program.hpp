@@ -1,0 +1,98 @@
+// Programs, blocks (кадры) and words rebuilt from a character stream per ГОСТ 20999-83.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tape {
+
+/// Where something stands: on tape (frame, from 1) when the text came from a tape, and always in the
+/// text (byte offset from 0; line and column, in characters, from 1).
+struct Location {
+    std::uint64_t offset = 0;
+    std::optional<std::uint64_t> frame{};
+    std::uint64_t line = 0;
+    std::uint64_t column = 0;
+};
+
+/// One word: address letter, optional sign, digits, optional explicit decimal point (§3.1).
+struct Word {
+    char address = 0;        ///< 'A'..'Z', or ':' for the number of a main block
+    std::string text;        ///< as written, spaces removed: "X+12.5", "S64"
+    char sign = 0;           ///< '+', '-' or 0
+    std::string digits;      ///< the digits without the point: "125"
+    int point = -1;          ///< explicit point: digits before it (X.03 -> 0, X1030. -> 4); -1 none
+    Location where;
+
+    bool has_point() const { return point >= 0; }
+    /// The integer value of a word without a point (G01 -> 1), or nullopt (point, no digits, too long).
+    std::optional<long long> integer() const;
+};
+
+struct Comment {
+    std::string text;  ///< between the brackets, as written
+    Location where;    ///< the '('
+};
+
+struct Block {
+    Location where;               ///< the first character of the block
+    std::uint64_t ordinal = 0;    ///< 1-based count of blocks on the whole tape
+    bool skip = false;            ///< '/' block skip (§2.7)
+    bool main = false;            ///< ':' main block (§2.6)
+    std::optional<Word> number{}; ///< N… or :… (address 'N' or ':')
+    std::vector<Word> words;      ///< the other words, in order
+    std::vector<Comment> comments;
+
+    /// "N001", ":005" or "".
+    std::string number_text() const { return number ? number->text : std::string(); }
+    /// True when the block holds M02 or M30 (end of program / end of information).
+    bool ends_program() const;
+    /// The block written out: "/N006 M00 (TEXT)", words separated by one space.
+    std::string text() const;
+};
+
+struct Program {
+    Location start;                     ///< the '%' that starts it
+    std::optional<std::string> number{};///< between '%' and LF (§1.6)
+    std::vector<Block> blocks;
+    bool ended = false;                 ///< a block with M02/M30 closes it (§1.9)
+    std::string after_end;              ///< text after the end, up to the next '%': not part of it
+    std::optional<Location> after_end_at{};
+};
+
+enum class Severity { info, warning, error };
+std::string_view severity_name(Severity s);
+
+/// A finding of the loader or of lint: a stable rule id, a severity, where, and a message.
+struct Finding {
+    std::string_view rule;
+    Severity severity = Severity::error;
+    Location where;
+    std::uint64_t block = 0;  ///< Block::ordinal, 0 when not in a block
+    std::string message;
+};
+
+/// The contents of a tape: the label section, the programs, and what the loader found wrong.
+struct LoadedTape {
+    std::string label;               ///< before the first '%' (§1.8): kept and shown, never executed
+    bool physical_start = false;     ///< "%%": the physical start of the tape (§1.8)
+    std::vector<Program> programs;
+    std::vector<Finding> findings;   ///< syntax findings, in text order
+    std::string text;                ///< the characters the tape was loaded from
+    std::vector<std::uint64_t> frame_of;  ///< 0-based frame of each byte of text, empty for text input
+
+    /// The location of byte offset in text.
+    Location locate(std::uint64_t offset) const;
+};
+
+/// Rebuilds programs from decoded characters. frame_of (0-based frame of each byte, as decode() gives
+/// with positions) may be empty for a plain text program. Never throws on bad input: syntax problems
+/// become findings (rule ids unexpected-character, no-digits, two-points, skip-position,
+/// main-position, percent-in-block, comment-forbidden-char, unclosed-comment, program-start).
+LoadedTape load(std::string text, std::vector<std::uint64_t> frame_of = {});
+
+}  // namespace tape

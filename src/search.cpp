@@ -1,0 +1,74 @@
+#include <algorithm>
+
+#include "tape/search.hpp"
+
+namespace tape {
+namespace {
+
+template <typename Fn>
+void for_each_block(const LoadedTape& t, Fn fn) {
+    for (const auto& p : t.programs)
+        for (const auto& b : p.blocks)
+            if (!fn(BlockRef{&p, &b})) return;
+}
+
+std::string_view without_leading_zeros(std::string_view s) {
+    while (s.size() > 1 && s[0] == '0') s.remove_prefix(1);
+    return s;
+}
+
+}  // namespace
+
+std::uint64_t frame_offset(const LoadedTape& t, std::uint64_t frame) {
+    if (t.frame_of.empty()) {
+        std::uint64_t line = 1, i = 0;
+        for (; i < t.text.size() && line < frame; ++i) line += t.text[i] == '\n';
+        return i;
+    }
+    auto it = std::lower_bound(t.frame_of.begin(), t.frame_of.end(), frame == 0 ? 0 : frame - 1);
+    return static_cast<std::uint64_t>(it - t.frame_of.begin());
+}
+
+std::optional<BlockRef> find_main_block(const LoadedTape& t, std::uint64_t from, std::optional<long long> number) {
+    std::optional<BlockRef> hit;
+    for_each_block(t, [&](BlockRef r) {
+        if (!r.block->main || r.block->where.offset < from) return true;
+        if (number && r.block->number && r.block->number->integer() != number) return true;
+        hit = r;
+        return false;
+    });
+    return hit;
+}
+
+const Program* find_rewind_stop(const LoadedTape& t, std::uint64_t from) {
+    const Program* stop = nullptr;
+    for (const auto& p : t.programs)
+        if (p.start.offset < from) stop = &p;
+    return stop;
+}
+
+const Program* find_program(const LoadedTape& t, std::string_view number) {
+    for (const auto& p : t.programs)
+        if (p.number && without_leading_zeros(*p.number) == without_leading_zeros(number)) return &p;
+    return nullptr;
+}
+
+std::vector<BlockRef> find_numbered_blocks(const LoadedTape& t, long long number) {
+    std::vector<BlockRef> hits;
+    for_each_block(t, [&](BlockRef r) {
+        if (r.block->number && r.block->number->integer() == number) hits.push_back(r);
+        return true;
+    });
+    return hits;
+}
+
+std::vector<BlockRef> main_blocks(const LoadedTape& t) {
+    std::vector<BlockRef> hits;
+    for_each_block(t, [&](BlockRef r) {
+        if (r.block->main) hits.push_back(r);
+        return true;
+    });
+    return hits;
+}
+
+}  // namespace tape

@@ -1,0 +1,98 @@
+// tape format: rewrite a program for a controller's format (§9): explicit <-> implied point, digits, signs.
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "tape/encode.hpp"
+#include "tape/lint.hpp"
+
+namespace cli {
+namespace {
+
+struct FormatArgs {
+    std::string input = "-", output = "-", spec, from, out_format;
+    ProgramSource source;
+    std::string out_code = "iso";
+    bool strip_zeros = false, spaces = false, force = false;
+};
+
+std::optional<tape::FormatSpec> parse_spec(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    try {
+        return tape::parse_format_spec(text);
+    } catch (const tape::Error& e) {
+        fail("", e);
+    }
+}
+
+void run(const FormatArgs& a) {
+    tape::FormatSpec spec = *parse_spec(a.spec);
+    std::optional<tape::FormatSpec> from = parse_spec(a.from);
+    ProgramInput in = load_program(a.input, a.source);
+    const std::string sep = a.spaces ? " " : "";
+    std::string text = in.tape.label;
+    bool failed = false;
+    for (const auto& p : in.tape.programs) {
+        if (!from && !tape::uses_explicit_points(p))
+            say(in.name, position_text(p.start, in.from_tape) + ": the program writes no decimal point: its numbers are "
+                                                                 "taken as whole numbers (give --from SPEC for implied points)");
+        text += (in.tape.physical_start && &p == &in.tape.programs.front() ? "%%" : "%") + p.number.value_or("") + "\n";
+        for (const auto& b : p.blocks) {
+            std::string line = b.skip ? "/" : "";
+            auto put = [&](const tape::Word& w) {
+                try {
+                    line += (line.empty() || line == "/" ? "" : sep) + tape::format_word(w, spec, from ? &*from : nullptr, a.strip_zeros);
+                } catch (const tape::Error& e) {
+                    say(in.name, position_text(w.where, in.from_tape) + ": block " + std::to_string(b.ordinal) + ": " + e.what());
+                    failed = true;
+                }
+            };
+            if (b.number) put(*b.number);
+            for (const auto& w : b.words) put(w);
+            for (const auto& c : b.comments) line += (line.empty() ? "" : sep) + "(" + c.text + ")";
+            text += line + "\n";
+        }
+        text += p.after_end;
+    }
+    if (failed) throw Exit{bad_data};
+    std::string kind = a.out_format;
+    if (kind.empty()) {
+        const tape::ImageFormat* f = a.output == "-" ? nullptr : tape::image_format_for_path(a.output);
+        bool text_name = a.output.size() >= 4 && a.output.compare(a.output.size() - 4, 4, ".txt") == 0;
+        kind = f && !text_name ? std::string(f->id) : "text";
+    }
+    if (kind == "text") {
+        write_output(a.output, text, false, a.force);
+        return;
+    }
+    tape::EncodeOptions eo;
+    eo.code = *tape::parse_code(a.out_code);
+    eo.eia_table = globals().table();
+    try {
+        auto frames = tape::encode(text, eo);
+        tape::FrameCode code = tape::FrameCode::make(eo.code, eo.parity, eo.eia_table);
+        const tape::ImageFormat* f = tape::find_image_format(kind);
+        write_output(a.output, f->write(frames, tape::ImageWriteOptions{&code}), f->binary, a.force);
+    } catch (const tape::Error& e) {
+        fail(in.name + " (formatted)", e);
+    }
+}
+
+}  // namespace
+
+void add_format(CLI::App& app) {
+    auto a = std::make_shared<FormatArgs>();
+    auto* sub = app.add_subcommand("format", "Rewrite a program for a controller's format (ГОСТ 20999-83 §9)");
+    sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
+    sub->add_option("--spec,-s", a->spec, "The controller's format, e.g. \"N03 G02 X+053 Y+053 F031 M02\"")->required();
+    sub->add_option("--from", a->from, "The format the program is written in, for words with an implied point");
+    sub->add_option("-o,--output", a->output, "Where to write: text, or a tape image when OUT has an image extension");
+    sub->add_option("--to", a->out_format, "Output: text, raw or holes (default: by the extension of OUT, else text)")
+        ->check(CLI::IsMember({"text", "raw", "holes"}));
+    sub->add_option("--to-code", a->out_code, "Code of an image output: iso or eia")->check(CLI::IsMember({"iso", "eia"}))->capture_default_str();
+    sub->add_flag("--strip-zeros", a->strip_zeros, "Leave out leading (or trailing) zeros where the format allows");
+    sub->add_flag("--spaces", a->spaces, "Put a space between words");
+    sub->add_flag("--force", a->force, "Replace an existing OUT");
+    add_program_source_options(sub, a->source);
+    sub->callback([a] { run(*a); });
+}
+
+}  // namespace cli

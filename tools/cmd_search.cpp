@@ -1,0 +1,71 @@
+// tape search: what a tape reader searches for — main blocks, the rewind stop, programs, blocks.
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "tape/search.hpp"
+
+namespace cli {
+namespace {
+
+struct SearchArgs {
+    std::string input = "-";
+    ProgramSource source;
+    std::optional<long long> main_number;
+    bool main = false, rewind = false;
+    std::string program;
+    std::optional<long long> block;
+    std::uint64_t from = 1;
+};
+
+std::string hit(const ProgramInput& in, const tape::Location& where, const std::string& what) {
+    return position_text(where, in.from_tape) + (in.from_tape ? " (line " + std::to_string(where.line) + ")" : "") + ": " + what + "\n";
+}
+
+void run(const SearchArgs& a, const CLI::App& sub) {
+    ProgramInput in = load_program(a.input, a.source);
+    std::uint64_t from = tape::frame_offset(in.tape, a.from);
+    std::string out;
+    std::string where = std::string(in.from_tape ? "frame " : "line ") + std::to_string(a.from);
+    if (a.main || sub.count("--main")) {
+        auto first = tape::find_main_block(in.tape, from, a.main_number);
+        for (auto r = first; r; r = tape::find_main_block(in.tape, r->block->where.offset + 1, a.main_number))
+            out += hit(in, r->block->where, r->block->text());
+        if (out.empty()) fail(in.name, tape::Errc::not_in_code, std::string("no main block") + (a.main_number ? " :" + std::to_string(*a.main_number) : "") + " from " + where);
+    } else if (a.rewind) {
+        const tape::Program* p = tape::find_rewind_stop(in.tape, from == 0 ? 0 : from);
+        if (!p) fail(in.name, tape::Errc::not_in_code, "no '%' before " + where);
+        out += hit(in, p->start, "%" + p->number.value_or(""));
+    } else if (!a.program.empty()) {
+        const tape::Program* p = tape::find_program(in.tape, a.program);
+        if (!p) fail(in.name, tape::Errc::not_in_code, "no program " + a.program);
+        out += hit(in, p->start, "%" + p->number.value_or(""));
+    } else if (a.block) {
+        for (auto r : tape::find_numbered_blocks(in.tape, *a.block)) out += hit(in, r.block->where, r.block->text());
+        if (out.empty()) fail(in.name, tape::Errc::not_in_code, "no block numbered " + std::to_string(*a.block));
+    }
+    write_output("-", out, false, false);
+}
+
+}  // namespace
+
+void add_search(CLI::App& app) {
+    auto a = std::make_shared<SearchArgs>();
+    auto* sub = app.add_subcommand("search", "Find main blocks, the rewind stop, a program or a block, with their frames");
+    sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
+    auto* main = sub->add_option("--main", a->main_number, "Main blocks (':') from --from on, or only the one numbered N")
+                     ->expected(0, 1);
+    auto* rewind = sub->add_flag("--rewind", a->rewind, "The '%' a rewinding reader stops at, before --from");
+    auto* program = sub->add_option("--program", a->program, "The program numbered N (after '%')");
+    auto* block = sub->add_option("--block", a->block, "Blocks numbered N (N or ':' word)");
+    main->excludes(rewind)->excludes(program)->excludes(block);
+    rewind->excludes(program)->excludes(block);
+    program->excludes(block);
+    sub->add_option("--from", a->from, "Frame (line, for text) to search from; default the start")->capture_default_str();
+    add_program_source_options(sub, a->source);
+    sub->callback([a, sub] {
+        if (!sub->count("--main") && !a->rewind && a->program.empty() && !a->block)
+            throw CLI::RequiredError("one of --main, --rewind, --program, --block");
+        run(*a, *sub);
+    });
+}
+
+}  // namespace cli
