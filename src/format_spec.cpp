@@ -120,13 +120,13 @@ FormatSpec parse_format_spec(std::string_view text) {
 DecimalValue word_value(const Word& w, const WordFormat* from) {
     DecimalValue v;
     v.negative = w.sign == '-';
-    std::string whole = w.digits, fraction;
+    std::string whole = w.digits(), fraction;
     if (w.has_point()) {
-        whole = w.digits.substr(0, static_cast<std::size_t>(w.point));
-        fraction = w.digits.substr(static_cast<std::size_t>(w.point));
+        fraction = whole.substr(static_cast<std::size_t>(w.point));
+        whole.resize(static_cast<std::size_t>(w.point));
     } else if (from && from->dimension) {
         std::size_t total = static_cast<std::size_t>(from->before + from->after);
-        std::string d = w.digits;
+        std::string d = whole;
         if (d.size() < total) d = from->omit_trailing ? d + std::string(total - d.size(), '0') : std::string(total - d.size(), '0') + d;
         std::size_t cut = d.size() - static_cast<std::size_t>(from->after);
         whole = d.substr(0, cut);
@@ -149,13 +149,13 @@ std::vector<std::pair<std::string_view, std::string>> check_word(const Word& w, 
     if (w.has_point()) {
         if (!spec.explicit_point) problems.emplace_back("spec-point", w.text + ": the format has no DS, so no explicit decimal point");
         else if (!f->dimension) problems.emplace_back("spec-point", w.text + ": " + f->text + " is a whole number");
-        int before = w.point, after = static_cast<int>(w.digits.size()) - w.point;
+        int before = w.point, after = static_cast<int>(w.digits().size()) - w.point;
         if (f->dimension && (before > f->before || after > f->after))
             problems.emplace_back("spec-digits", w.text + ": " + f->text + " allows " + std::to_string(f->before) +
                                                      " digits before the point and " + std::to_string(f->after) + " after");
         return problems;
     }
-    int n = static_cast<int>(w.digits.size());
+    int n = static_cast<int>(w.digits().size());
     if (!f->dimension || (program_has_points && spec.explicit_point)) {
         // A whole number: dimensionless words, or dimension words of a program with explicit points (§3.1.4).
         int allowed = f->before;

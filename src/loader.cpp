@@ -1,8 +1,10 @@
 // Loader: characters -> label, programs, blocks, words (ГОСТ 20999-83 §1-§3).
 // One pass over the text, a line (block) at a time; problems become findings, never exceptions.
 #include <algorithm>
+#include <array>
 #include <cstring>
 
+#include "swar.hpp"
 #include "tape/program.hpp"
 #include "utf8.hpp"
 
@@ -17,17 +19,31 @@ std::string_view severity_name(Severity s) {
     return "?";
 }
 
+std::string Word::digits() const {
+    std::string d;
+    for (char c : text)
+        if (c >= '0' && c <= '9') d += c;
+    return d;
+}
+
 std::optional<long long> Word::integer() const {
-    if (has_point() || digits.empty() || digits.size() > 18) return std::nullopt;
+    if (has_point()) return std::nullopt;
     long long v = 0;
-    for (char d : digits) v = v * 10 + (d - '0');
+    int n = 0;
+    for (char c : text) {
+        if (c < '0' || c > '9') continue;
+        if (++n > 18) return std::nullopt;
+        v = v * 10 + (c - '0');
+    }
+    if (n == 0) return std::nullopt;
     return sign == '-' ? -v : v;
 }
 
 bool Block::ends_program() const {
     return std::any_of(words.begin(), words.end(), [](const Word& w) {
+        if (w.address != 'M') return false;
         auto v = w.integer();
-        return w.address == 'M' && v && (*v == 2 || *v == 30);
+        return v && (*v == 2 || *v == 30);
     });
 }
 
@@ -59,46 +75,63 @@ Location LoadedTape::locate(std::uint64_t offset) const {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// What a character can be inside a word, looked up once per character in the hot loop.
+enum class CharClass : std::uint8_t { other, digit, point, sign, blank };
+constexpr auto char_class = [] {
+    std::array<CharClass, 256> t{};
+    for (int c = '0'; c <= '9'; ++c) t[static_cast<std::size_t>(c)] = CharClass::digit;
+    t['.'] = CharClass::point;
+    t['+'] = t['-'] = CharClass::sign;
+    t[' '] = t['\t'] = t['\r'] = CharClass::blank;
+    return t;
+}();
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_address(char c) { return c >= 'A' && c <= 'Z'; }
 
 class Loader {
 public:
-    explicit Loader(LoadedTape& t) : t_(t), text_(t.text) {}
+    Loader(std::string_view text, std::span<const std::uint64_t> frame_of, ProgramVisitor& v)
+        : text_(text), frame_of_(frame_of), v_(v) {}
 
     void run() {
         std::size_t b = 0;
         while (b < text_.size()) {
             auto nl = text_.find('\n', b);
-            std::size_t e = nl == std::string::npos ? text_.size() : nl;
+            std::size_t e = nl == std::string_view::npos ? text_.size() : nl;
             begin_line(b, e);
-            line(b, e, nl != std::string::npos);
+            line(b, e, nl != std::string_view::npos);
             b = e + 1;
         }
-        if (!t_.programs.empty() && !t_.programs.back().ended) unterminated(t_.programs.back());
+        if (state_ != State::label && state_ != State::after_end) unterminated();
     }
 
 private:
     enum class State { label, program, after_end };
 
-    LoadedTape& t_;
-    const std::string& text_;
+    std::string_view text_;
+    std::span<const std::uint64_t> frame_of_;
+    ProgramVisitor& v_;
     State state_ = State::label;
     std::uint64_t line_no_ = 0, ordinal_ = 0;
     std::size_t line_start_ = 0;
     bool line_ascii_ = true;
+    bool any_program_ = false;
+    bool after_end_started_ = false;
+    Location program_start_, last_block_where_;
+    std::uint64_t last_block_ordinal_ = 0;
+    Block blk_;  // reused: its vectors keep their capacity from block to block
 
     void begin_line(std::size_t b, std::size_t e) {
         ++line_no_;
         line_start_ = b;
-        line_ascii_ = std::none_of(text_.begin() + static_cast<std::ptrdiff_t>(b), text_.begin() + static_cast<std::ptrdiff_t>(e),
-                                   [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
+        line_ascii_ = !swar::any_high_byte(text_.data() + b, e - b);
     }
 
     Location at(std::size_t offset) const {
         Location l;
         l.offset = offset;
-        if (!t_.frame_of.empty()) l.frame = t_.frame_of[std::min(offset, t_.frame_of.size() - 1)] + 1;
+        if (!frame_of_.empty()) l.frame = frame_of_[std::min(offset, frame_of_.size() - 1)] + 1;
         l.line = line_no_;
         l.column = offset - line_start_ + 1;
         if (!line_ascii_)
@@ -109,7 +142,7 @@ private:
     }
 
     void find(std::string_view rule, Severity s, std::size_t offset, std::uint64_t block, std::string message) {
-        t_.findings.push_back(Finding{rule, s, at(offset), block, std::move(message)});
+        v_.finding(Finding{rule, s, at(offset), block, std::move(message)});
     }
 
     std::size_t skip_blanks(std::size_t i, std::size_t e) const {
@@ -122,12 +155,11 @@ private:
         switch (state_) {
         case State::label: {
             auto pct = text_.find('%', b);
-            if (pct == std::string::npos || pct >= e) {
-                t_.label.append(text_, b, e - b);
-                if (has_lf) t_.label += '\n';
+            if (pct == std::string_view::npos || pct >= e) {
+                v_.label(text_.substr(b, e - b + (has_lf ? 1 : 0)));
                 return;
             }
-            t_.label.append(text_, b, pct - b);
+            if (pct > b) v_.label(text_.substr(b, pct - b));
             start_program(pct, e);
             return;
         }
@@ -136,16 +168,14 @@ private:
                 start_program(first, e);
                 return;
             }
-            if (first < e || !t_.programs.back().after_end.empty()) {
-                auto& p = t_.programs.back();
-                if (!p.after_end_at) p.after_end_at = at(b);
-                p.after_end.append(text_, b, e - b);
-                if (has_lf) p.after_end += '\n';
+            if (first < e || after_end_started_) {
+                after_end_started_ = true;
+                v_.after_end(text_.substr(b, e - b + (has_lf ? 1 : 0)), at(b));
             }
             return;
         case State::program:
             if (first < e && text_[first] == '%') {
-                unterminated(t_.programs.back());
+                unterminated();
                 start_program(first, e);
                 return;
             }
@@ -154,11 +184,10 @@ private:
         }
     }
 
-    void unterminated(const Program& p) {
-        t_.findings.push_back(Finding{"program-end", Severity::error,
-                                      p.blocks.empty() ? p.start : p.blocks.back().where,
-                                      p.blocks.empty() ? 0 : p.blocks.back().ordinal,
-                                      "the program does not end with M02 or M30 (§1.9)"});
+    void unterminated() {
+        bool blocks = last_block_ordinal_ != 0;
+        v_.finding(Finding{"program-end", Severity::error, blocks ? last_block_where_ : program_start_, last_block_ordinal_,
+                           "the program does not end with M02 or M30 (§1.9)"});
     }
 
     void start_program(std::size_t pct, std::size_t e) {
@@ -166,7 +195,7 @@ private:
         p.start = at(pct);
         std::size_t i = skip_blanks(pct + 1, e);
         if (i < e && text_[i] == '%') {
-            if (t_.programs.empty()) t_.physical_start = true;
+            if (!any_program_) v_.physical_start();
             else find("program-start", Severity::error, i, 0, "'%%' marks the physical start of the tape only before the first program (§1.8)");
             i = skip_blanks(i + 1, e);
         }
@@ -181,92 +210,118 @@ private:
             find("program-start", Severity::error, pct, 0,
                  "between '%' and the end of block only a program number may stand, not '" + number + "' (§1.4, §1.6)");
         if (!number.empty()) p.number = number;
-        t_.programs.push_back(std::move(p));
+        any_program_ = true;
+        after_end_started_ = false;
+        program_start_ = p.start;
+        last_block_ordinal_ = 0;
         state_ = State::program;
+        v_.program_start(p);
     }
 
     // Address (or ':'), sign, digits and point, spaces allowed between; i at the address.
-    Word word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t block_no, bool report = true) {
-        Word w;
+    // Scans first, then copies whole runs: this is the loader's hot loop.
+    void word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t block_no, Word& w, bool report = true) {
         w.address = text_[i];
         w.where = at(i);
-        w.text += text_[i];
-        int points = 0;
-        for (++i; i < e; ++i) {
-            char c = text_[i];
-            if (is_blank(c)) continue;
-            if ((c == '+' || c == '-') && !w.sign && w.digits.empty() && points == 0) {
-                w.sign = c;
-            } else if (is_digit(c)) {
-                w.digits += c;
-            } else if (c == '.') {
-                if (++points == 1) w.point = static_cast<int>(w.digits.size());
-            } else {
-                break;
-            }
-            w.text += c;
+        w.sign = 0;
+        w.point = -1;
+        int points = 0, digits = 0;
+        std::size_t j = i + 1, end = j, first_blank = std::string_view::npos;
+        for (; j < e; ++j) {
+            char c = text_[j];
+            CharClass k = char_class[static_cast<unsigned char>(c)];
+            if (k == CharClass::digit) ++digits;
+            else if (k == CharClass::point) {
+                if (++points == 1) w.point = digits;
+            } else if (k == CharClass::sign && !w.sign && digits == 0 && points == 0) w.sign = c;
+            else if (k == CharClass::blank) {
+                if (first_blank == std::string_view::npos) first_blank = j;
+                continue;
+            } else break;
+            end = j + 1;
         }
-        *next = i;
-        if (!report) return w;
-        if (w.digits.empty())
+        *next = j;
+        std::string_view span = text_.substr(i, end - i);
+        if (first_blank >= end) {
+            w.text.resize(span.size());  // within the reused capacity: no allocation, one copy
+            std::memcpy(w.text.data(), span.data(), span.size());
+        } else {
+            w.text.clear();
+            for (char c : span)
+                if (!is_blank(c)) w.text += c;
+        }
+        if (!report) return;
+        if (digits == 0)
             find("no-digits", Severity::error, w.where.offset, block_no, "the word " + w.text + " has no digits (§3.1.1)");
         if (points > 1)
             find("two-points", Severity::error, w.where.offset, block_no, "the word " + w.text + " has " + std::to_string(points) + " decimal points");
-        return w;
+    }
+
+    // The next reused slot of blk_.words, grown only when a block has more words than any before.
+    Word& next_word(std::size_t& used) {
+        if (used == blk_.words.size()) blk_.words.emplace_back();
+        return blk_.words[used++];
     }
 
     void block(std::size_t i, std::size_t e) {
         if (i >= e) return;  // an empty line is no block
-        Block blk;
+        Block& blk = blk_;
+        std::size_t used = 0, comments = 0;
         blk.where = at(i);
         blk.ordinal = ++ordinal_;
+        blk.skip = blk.main = false;
+        blk.number.reset();
         if (text_[i] == '/') {
             blk.skip = true;
             i = skip_blanks(i + 1, e);
         }
         if (i < e && (text_[i] == ':' || text_[i] == 'N')) {
             blk.main = text_[i] == ':';
-            blk.number = word(i, e, &i, blk.ordinal);
+            blk.number.emplace();
+            word(i, e, &i, blk.ordinal, *blk.number);
         }
+        Word scratch;
         while ((i = skip_blanks(i, e)) < e) {
             char c = text_[i];
             if (is_address(c)) {
-                blk.words.push_back(word(i, e, &i, blk.ordinal));
+                word(i, e, &i, blk.ordinal, next_word(used));
             } else if (c == ':' || (c >= 'a' && c <= 'z')) {
                 unexpected(i, e, blk.ordinal);
-                word(i, e, &i, blk.ordinal, false);  // read past its digits; it is no word of this block
+                word(i, e, &i, blk.ordinal, scratch, false);  // read past its digits; it is no word of this block
             } else if (c == '(') {
-                i = comment(i, e, blk);
+                i = comment(i, e, comments);
             } else {
                 unexpected(i, e, blk.ordinal);
                 i += utf8::length(text_, i);
             }
         }
-        auto& p = t_.programs.back();
-        p.blocks.push_back(std::move(blk));
-        if (p.blocks.back().ends_program()) {
-            p.ended = true;
-            state_ = State::after_end;
-        }
+        blk.words.resize(used);
+        blk.comments.resize(comments);
+        last_block_where_ = blk.where;
+        last_block_ordinal_ = blk.ordinal;
+        v_.block(blk);
+        if (blk.ends_program()) state_ = State::after_end;
     }
 
-    std::size_t comment(std::size_t open, std::size_t e, Block& blk) {
+    std::size_t comment(std::size_t open, std::size_t e, std::size_t& used) {
         auto close = text_.find(')', open);
-        bool closed = close != std::string::npos && close < e;
+        bool closed = close != std::string_view::npos && close < e;
         std::size_t end = closed ? close : e;
-        Comment c{text_.substr(open + 1, end - open - 1), at(open)};
+        if (used == blk_.comments.size()) blk_.comments.emplace_back();
+        Comment& c = blk_.comments[used++];
+        c.text.assign(text_.substr(open + 1, end - open - 1));
+        c.where = at(open);
         for (std::size_t k = open + 1; k < end; ++k)
             if (text_[k] == '%' || text_[k] == ':')
-                find("comment-forbidden-char", Severity::error, k, blk.ordinal,
+                find("comment-forbidden-char", Severity::error, k, blk_.ordinal,
                      std::string("'") + text_[k] + "' must not stand inside a comment (§1.5)");
-        if (!closed) find("unclosed-comment", Severity::error, open, blk.ordinal, "the comment is not closed with ')' before the end of block");
-        blk.comments.push_back(std::move(c));
+        if (!closed) find("unclosed-comment", Severity::error, open, blk_.ordinal, "the comment is not closed with ')' before the end of block");
         return closed ? close + 1 : e;
     }
 
     void unexpected(std::size_t i, std::size_t e, std::uint64_t block_no) {
         char c = text_[i];
-        std::string shown(utf8::char_at(std::string_view(text_).substr(0, e), i));
+        std::string shown(utf8::char_at(text_.substr(0, e), i));
         if (c == '/')
             find("skip-position", Severity::error, i, block_no, "'/' (block skip) may stand only at the start of a block, before N or ':' (§2.7)");
         else if (c == ':')
@@ -280,13 +335,41 @@ private:
     }
 };
 
+// load(): keeps everything the loader streams.
+class Collector : public ProgramVisitor {
+public:
+    explicit Collector(LoadedTape& t) : t_(t) {}
+    void label(std::string_view text) override { t_.label += text; }
+    void program_start(const Program& header) override { t_.programs.push_back(header); }
+    void block(const Block& b) override {
+        Program& p = t_.programs.back();
+        p.blocks.push_back(b);
+        if (b.ends_program()) p.ended = true;
+    }
+    void after_end(std::string_view text, const Location& where) override {
+        Program& p = t_.programs.back();
+        if (!p.after_end_at) p.after_end_at = where;
+        p.after_end += text;
+    }
+    void physical_start() override { t_.physical_start = true; }
+    void finding(const Finding& f) override { t_.findings.push_back(f); }
+
+private:
+    LoadedTape& t_;
+};
+
 }  // namespace
+
+void load_each(std::string_view text, std::span<const std::uint64_t> frame_of, ProgramVisitor& visitor) {
+    Loader(text, frame_of, visitor).run();
+}
 
 LoadedTape load(std::string text, std::vector<std::uint64_t> frame_of) {
     LoadedTape t;
     t.text = std::move(text);
     t.frame_of = std::move(frame_of);
-    Loader(t).run();
+    Collector collect(t);
+    load_each(t.text, t.frame_of, collect);
     return t;
 }
 

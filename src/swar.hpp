@@ -2,6 +2,7 @@
 // plain words elsewhere. Byte shifts are per lane, so the parity fold below is exact per byte.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -31,6 +32,16 @@ inline bool any16(bytes16 v) {
     std::uint64_t w[2];
     std::memcpy(w, &v, sizeof w);
     return (w[0] | w[1]) != 0;
+}
+
+/// True when any of the n bytes at p has bit 7 set (a UTF-8 sequence in text).
+inline bool any_high_byte(const char* p, std::size_t n) {
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16)
+        if (any16(load16(p + i) & 0x80)) return true;
+    for (; i < n; ++i)
+        if (static_cast<unsigned char>(p[i]) & 0x80) return true;
+    return false;
 }
 
 }  // namespace tape::swar

@@ -39,10 +39,10 @@ TEST(Loader, WordsKeepSignDigitsAndPoint) {
     ASSERT_EQ(w.size(), 5U);
     EXPECT_EQ(w[0].text, "X.03");
     EXPECT_EQ(w[0].point, 0);
-    EXPECT_EQ(w[0].digits, "03");
+    EXPECT_EQ(w[0].digits(), "03");
     EXPECT_EQ(w[1].point, 4);
     EXPECT_EQ(w[2].sign, '-');
-    EXPECT_EQ(w[2].digits, "125");
+    EXPECT_EQ(w[2].digits(), "125");
     EXPECT_EQ(w[2].point, 2);
     EXPECT_EQ(w[3].text, "S64");
     EXPECT_EQ(w[3].integer(), 64);

@@ -24,11 +24,12 @@ struct Word {
     char address = 0;        ///< 'A'..'Z', or ':' for the number of a main block
     std::string text;        ///< as written, spaces removed: "X+12.5", "S64"
     char sign = 0;           ///< '+', '-' or 0
-    std::string digits;      ///< the digits without the point: "125"
     int point = -1;          ///< explicit point: digits before it (X.03 -> 0, X1030. -> 4); -1 none
     Location where;
 
     bool has_point() const { return point >= 0; }
+    /// The digits without sign and point: "125" for.
+    std::string digits() const;
     /// The integer value of a word without a point (G01 -> 1), or nullopt (point, no digits, too long).
     std::optional<long long> integer() const;
 };
@@ -88,6 +89,28 @@ struct LoadedTape {
     /// The location of byte offset in text.
     Location locate(std::uint64_t offset) const;
 };
+
+/// Receives what the loader finds, in text order, without anything being kept: the way to read long
+/// tapes, or a tape as it comes off a reader. The Block passed is reused for the next one: copy what
+/// you keep.
+class ProgramVisitor {
+public:
+    virtual ~ProgramVisitor() = default;
+    /// Text before the first '%' (§1.8), in pieces as lines come.
+    virtual void label(std::string_view text) { (void)text; }
+    /// A '%' starts a program; the header has its start and number and no blocks yet.
+    virtual void program_start(const Program& header) { (void)header; }
+    virtual void block(const Block& block) { (void)block; }
+    /// Text after M02/M30 up to the next '%' (§1.9), a line at a time.
+    virtual void after_end(std::string_view text, const Location& where) { (void)text, (void)where; }
+    /// The '%%' physical start mark (§1.8).
+    virtual void physical_start() {}
+    virtual void finding(const Finding& finding) { (void)finding; }
+};
+
+/// Streams text through the loader: the same parse as load(), block by block.
+/// frame_of as for load(); text and frame_of must outlive the call only.
+void load_each(std::string_view text, std::span<const std::uint64_t> frame_of, ProgramVisitor& visitor);
 
 /// Rebuilds programs from decoded characters. frame_of (0-based frame of each byte, as decode() gives
 /// with positions) may be empty for a plain text program. Never throws on bad input: syntax problems
