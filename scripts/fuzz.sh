@@ -7,7 +7,7 @@ seconds=${1:-30}
 bash scripts/install-deps.sh
 CXX=clang++-14 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DTAPE_BUILD_FUZZ=ON -DTAPE_BUILD_TESTS=OFF -DTAPE_BUILD_BENCH=OFF >/dev/null
-for target in decode; do
+for target in decode loader; do
   cmake --build build-fuzz --target "${target}_fuzz"
   scratch=$(mktemp -d)
   echo "fuzz: ${target}_fuzz for ${seconds} s"

@@ -1,4 +1,6 @@
 // tape search: what a tape reader searches for — main blocks, the rewind stop, programs, blocks.
+#include <charconv>
+
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "tape/search.hpp"
@@ -9,8 +11,8 @@ namespace {
 struct SearchArgs {
     std::string input = "-";
     ProgramSource source;
-    std::optional<long long> main_number;
-    bool main = false, rewind = false;
+    std::optional<std::string> main_value;  // N, or IN when written "--main IN"
+    bool rewind = false;
     std::string program;
     std::optional<long long> block;
     std::uint64_t from = 1;
@@ -20,16 +22,29 @@ std::string hit(const ProgramInput& in, const tape::Location& where, const std::
     return position_text(where, in.from_tape) + (in.from_tape ? " (line " + std::to_string(where.line) + ")" : "") + ": " + what + "\n";
 }
 
-void run(const SearchArgs& a, const CLI::App& sub) {
+std::optional<long long> as_number(const std::string& s) {
+    long long n = 0;
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
+    if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
+    return n;
+}
+
+void run(SearchArgs a, const CLI::App& sub) {
+    std::optional<long long> main_number;
+    if (a.main_value && !a.main_value->empty()) {
+        main_number = as_number(*a.main_value);
+        if (!main_number && a.input == "-") a.input = *a.main_value;  // "--main IN": the option took the file
+        else if (!main_number) fail("", tape::Errc::usage, "--main takes a block number, not '" + *a.main_value + "'");
+    }
     ProgramInput in = load_program(a.input, a.source);
     std::uint64_t from = tape::frame_offset(in.tape, a.from);
     std::string out;
     std::string where = std::string(in.from_tape ? "frame " : "line ") + std::to_string(a.from);
-    if (a.main || sub.count("--main")) {
-        auto first = tape::find_main_block(in.tape, from, a.main_number);
-        for (auto r = first; r; r = tape::find_main_block(in.tape, r->block->where.offset + 1, a.main_number))
+    if (sub.count("--main")) {
+        auto first = tape::find_main_block(in.tape, from, main_number);
+        for (auto r = first; r; r = tape::find_main_block(in.tape, r->block->where.offset + 1, main_number))
             out += hit(in, r->block->where, r->block->text());
-        if (out.empty()) fail(in.name, tape::Errc::not_in_code, std::string("no main block") + (a.main_number ? " :" + std::to_string(*a.main_number) : "") + " from " + where);
+        if (out.empty()) fail(in.name, tape::Errc::not_in_code, std::string("no main block") + (main_number ? " :" + std::to_string(*main_number) : "") + " from " + where);
     } else if (a.rewind) {
         const tape::Program* p = tape::find_rewind_stop(in.tape, from == 0 ? 0 : from);
         if (!p) fail(in.name, tape::Errc::not_in_code, "no '%' before " + where);
@@ -51,7 +66,7 @@ void add_search(CLI::App& app) {
     auto a = std::make_shared<SearchArgs>();
     auto* sub = app.add_subcommand("search", "Find main blocks, the rewind stop, a program or a block, with their frames");
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
-    auto* main = sub->add_option("--main", a->main_number, "Main blocks (':') from --from on, or only the one numbered N")
+    auto* main = sub->add_option("--main", a->main_value, "Main blocks (':') from --from on, or only the one numbered N")
                      ->expected(0, 1);
     auto* rewind = sub->add_flag("--rewind", a->rewind, "The '%' a rewinding reader stops at, before --from");
     auto* program = sub->add_option("--program", a->program, "The program numbered N (after '%')");

@@ -1,0 +1,1 @@
+$TAPE blocks --explain tapes/circle-examples.iso.ptp

@@ -1,0 +1,1 @@
+$TAPE blocks tapes/gost-20999-format-example.iso.ptp

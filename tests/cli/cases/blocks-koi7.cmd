@@ -1,0 +1,1 @@
+$TAPE blocks --charset koi7 tapes/koi7-comment.iso.ptp

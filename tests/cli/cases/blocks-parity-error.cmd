@@ -1,0 +1,1 @@
+$TAPE blocks tapes/bad/parity-error.ptp

@@ -1,0 +1,1 @@
+$TAPE blocks tapes/16k20f3s5-turning.txt

@@ -1,0 +1,1 @@
+$TAPE format --spec "N03 G02 X+022 Y+053 Z+053 F031 S04 T04 M02" tapes/gost-20999-format-example.txt -o out.txt; status=$?; ls; exit $status

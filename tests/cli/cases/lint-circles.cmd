@@ -1,0 +1,1 @@
+$TAPE lint tapes/circle-examples.txt

@@ -1,0 +1,1 @@
+$TAPE lint tapes/gost-20999-format-example.iso.ptp

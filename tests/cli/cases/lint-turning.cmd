@@ -1,0 +1,1 @@
+$TAPE lint tapes/16k20f3s5-turning.iso.ptp

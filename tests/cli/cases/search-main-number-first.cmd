@@ -1,0 +1,1 @@
+$TAPE search tapes/gost-20999-format-example.iso.ptp --main 1

@@ -1,0 +1,38 @@
+// libFuzzer target: any bytes as a program text through the loader, lint, search and a format rewrite.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "tape/error.hpp"
+#include "tape/format_spec.hpp"
+#include "tape/lint.hpp"
+#include "tape/search.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    std::string text(reinterpret_cast<const char*>(data), size);
+    std::vector<std::uint64_t> frames(text.size());
+    for (std::size_t i = 0; i < frames.size(); ++i) frames[i] = i * 2 + 100;  // a tape with gaps
+    bool with_frames = size % 2 == 0;
+    tape::LoadedTape t = tape::load(text, with_frames ? frames : std::vector<std::uint64_t>{});
+    static const tape::FormatSpec spec = tape::parse_format_spec("% : / DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*");
+    static const tape::FormatSpec implied = tape::parse_format_spec("N03 G02 X+053 Y+530 Z+53 F031 S04 T04 M02");
+    auto findings = tape::lint(t, tape::LintOptions{&spec});
+    for (const auto& f : findings)
+        if (f.where.offset > text.size()) __builtin_trap();
+    for (const auto& p : t.programs)
+        for (const auto& b : p.blocks) {
+            if (b.where.offset >= text.size()) __builtin_trap();
+            for (const auto& w : b.words) {
+                try {
+                    tape::format_word(w, implied, &spec, size % 3 == 0);
+                    tape::format_word(w, spec, &implied, false);
+                } catch (const tape::Error&) {
+                }
+            }
+        }
+    tape::find_main_block(t, text.size() / 2);
+    tape::find_rewind_stop(t, text.size());
+    tape::find_numbered_blocks(t, 1);
+    tape::frame_offset(t, size);
+    return 0;
+}
