@@ -108,9 +108,23 @@ std::vector<Frame> encode(std::string_view text, const EncodeOptions& options) {
     std::string converted;
     std::vector<std::size_t> origin;
     std::string_view chars = text;
-    bool plain = options.charset == Charset::ascii && text.find('\r') == std::string_view::npos;
+    bool plain = options.charset == Charset::ascii && text.find('\r') == std::string_view::npos && !options.crlf;
     if (!plain) {
         converted = to_seven_bit(text, options.charset, options.code, &origin);
+        if (options.crlf) {
+            std::string with_cr;
+            std::vector<std::size_t> with_cr_origin;
+            for (std::size_t i = 0; i < converted.size(); ++i) {
+                if (converted[i] == '\n') {
+                    with_cr += '\r';
+                    with_cr_origin.push_back(origin[i]);
+                }
+                with_cr += converted[i];
+                with_cr_origin.push_back(origin[i]);
+            }
+            converted = std::move(with_cr);
+            origin = std::move(with_cr_origin);
+        }
         chars = converted;
     }
     std::vector<Frame> frames(options.leader + chars.size() + options.trailer, blank_frame);

@@ -91,3 +91,40 @@ void write_file_atomic(const std::string& path, std::string_view data, bool over
 }
 
 }  // namespace tape
+
+#include "tape/code.hpp"
+#include "tape/image.hpp"
+
+namespace tape {
+
+FrameFileWriter::FrameFileWriter(const std::string& path, const ImageFormat& format, const FrameCode* annotate, bool replace)
+    : path_(path), format_(format), annotate_(annotate), last_sync_(std::chrono::steady_clock::now()) {
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : O_EXCL), 0666);
+    if (fd_ < 0) {
+        if (errno == EEXIST) throw Error(Errc::usage, "already exists (use --force to replace it)");
+        io_fail("cannot create");
+    }
+    std::string header = format_.write({}, ImageWriteOptions{annotate_, 1, true});
+    if (!write_all(fd_, header)) io_fail("cannot write");
+}
+
+FrameFileWriter::~FrameFileWriter() {
+    if (fd_ < 0) return;
+    ::fsync(fd_);
+    ::close(fd_);
+}
+
+void FrameFileWriter::append(std::span<const std::uint8_t> frames) {
+    if (frames.empty()) return;
+    std::string data = format_.write(frames, ImageWriteOptions{annotate_, frames_ + 1, false});
+    if (!write_all(fd_, data)) io_fail("cannot write");
+    frames_ += frames.size();
+    if (std::chrono::steady_clock::now() - last_sync_ >= std::chrono::seconds(1)) sync();
+}
+
+void FrameFileWriter::sync() {
+    if (::fsync(fd_) != 0) io_fail("cannot flush to disk");
+    last_sync_ = std::chrono::steady_clock::now();
+}
+
+}  // namespace tape

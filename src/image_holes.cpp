@@ -87,14 +87,14 @@ std::vector<Frame> holes_read(std::span<const std::uint8_t> bytes) {
 std::string holes_write(std::span<const Frame> frames, const ImageWriteOptions& options) {
     std::string out;
     out.reserve(frames.size() * 32 + 200);
-    out += "# tape holes picture: one frame a line, tracks 87654.321 ('.' = feed hole, 'o' = hole)\n";
-    if (options.annotate)
+    if (options.header) out += "# tape holes picture: one frame a line, tracks 87654.321 ('.' = feed hole, 'o' = hole)\n";
+    if (options.header && options.annotate)
         out += "# code: " + std::string(code_name(options.annotate->code())) + ", parity " +
                std::string(parity_name(options.annotate->parity())) + "; frame number, then character\n";
     char number[24];
     for (std::size_t i = 0; i < frames.size(); ++i) {
         out += holes_picture(frames[i]);
-        std::snprintf(number, sizeof number, " %6zu", i + 1);
+        std::snprintf(number, sizeof number, " %6llu", static_cast<unsigned long long>(options.first_number + i));
         out += number;
         if (options.annotate) {
             FrameKind k = options.annotate->kind(frames[i]);

@@ -13,5 +13,11 @@ void add_blocks(CLI::App& app);
 void add_lint(CLI::App& app);
 void add_format(CLI::App& app);
 void add_search(CLI::App& app);
+void add_feed(CLI::App& app);
+void add_receive(CLI::App& app);
+void add_emulate(CLI::App& app);
+void add_read(CLI::App& app);
+void add_punch(CLI::App& app);
+void add_devices(CLI::App& app);
 
 }  // namespace cli

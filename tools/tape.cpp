@@ -18,8 +18,8 @@ int main(int argc, char** argv) {
                           "Say less on stderr");
     app.add_option("--eia-table", g.eia_table, "A corrected EIA code table (format of data/eia-rs244.tab)")
         ->envname("TAPE_EIA_TABLE");
-    app.footer("Exit status: 0 ok, 1 bad data in the input, 2 usage error, 3 I/O failure.\n"
-               "See tape(1) and tape-image(5).");
+    app.footer("Exit status: 0 ok, 1 bad data in the input, 2 usage error, 3 I/O or device failure,\n"
+               "130 a device run stopped with Ctrl-C. See tape(1), tape-image(5), tape-devices(7).");
     cli::add_encode(app);
     cli::add_decode(app);
     cli::add_show(app);
@@ -28,6 +28,12 @@ int main(int argc, char** argv) {
     cli::add_lint(app);
     cli::add_format(app);
     cli::add_search(app);
+    cli::add_feed(app);
+    cli::add_receive(app);
+    cli::add_emulate(app);
+    cli::add_read(app);
+    cli::add_punch(app);
+    cli::add_devices(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -21,6 +21,7 @@ struct EncodeOptions {
     Charset charset = Charset::ascii;
     std::size_t leader = default_leader;
     std::size_t trailer = default_trailer;
+    bool crlf = false;                   ///< CR LF on tape at the end of each block (ISO only)
     const CodeTable* eia_table = nullptr;///< a corrected EIA table; nullptr = built-in
 };
 

@@ -16,6 +16,8 @@ namespace tape {
 /// How the holes writer annotates frames: decoded character and frame number, by this code.
 struct ImageWriteOptions {
     const FrameCode* annotate = nullptr;  ///< nullptr: frame numbers only
+    std::uint64_t first_number = 1;       ///< number of the first frame (when appending to an image)
+    bool header = true;                   ///< write the format's header, if it has one
 };
 
 /// One image format. Adding a format = one file, one line in image.cpp's table, one CMake line.

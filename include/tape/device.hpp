@@ -1,0 +1,78 @@
+// Devices: a small Transport per backend (file, serial), chosen by a device string from one table.
+//   file:PATH
+//   serial:/dev/ttyUSB0?baud=9600&bits=7&parity=even&stop=2&flow=xonxoff|rtscts|none
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace tape {
+
+/// Flow control on a line.
+enum class Flow {
+    none,
+    xonxoff,  ///< DC1 (XON) resume, DC3 (XOFF) pause, in band; done by tape, not by the kernel
+    rtscts,   ///< CTS from the other side allows sending; RTS asserted while we accept data
+};
+
+/// What one read returned.
+struct ReadResult {
+    std::size_t count = 0;  ///< bytes stored (0 on time-out or end)
+    bool end = false;       ///< the other side hung up, or a file ended: no more will come
+};
+
+/// Modem control lines, where a transport has them (serial ports do, files and ptys do not).
+class ModemLines {
+public:
+    virtual ~ModemLines() = default;
+    /// True when the other side asserts CTS (it will accept data).
+    virtual bool cts() = 0;
+    /// Asserts or drops RTS (we will accept data).
+    virtual void set_rts(bool on) = 0;
+};
+
+/// One open device. All calls may throw Error(Errc::io) naming the device and the system's reason.
+class Transport {
+public:
+    virtual ~Transport() = default;
+    /// Reads up to buffer.size() bytes, waiting at most timeout (0: do not wait). Never blocks longer.
+    virtual ReadResult read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) = 0;
+    /// Writes all bytes, blocking until the kernel has taken them. Throws when the other side hung up.
+    virtual void write(std::span<const std::uint8_t> bytes) = 0;
+    /// Waits until everything written has left (tcdrain for serial; flush for files).
+    virtual void drain() = 0;
+    /// The modem lines, or nullptr when the transport has none.
+    virtual ModemLines* modem() { return nullptr; }
+    /// Flow control the device string asked for.
+    virtual Flow flow() const { return Flow::none; }
+    /// Characters per second the line carries (0: as fast as it goes), for pacing.
+    virtual double line_rate() const { return 0; }
+    /// True when bytes written go out with 7 data bits (the UART adds the parity): track 8 is dropped.
+    virtual bool seven_bit() const { return false; }
+    /// As given, for messages.
+    virtual std::string name() const = 0;
+};
+
+/// What a backend is opened for.
+enum class DeviceUse { read, write, both };
+
+/// One backend: an entry of the table in device.cpp.
+struct DeviceBackend {
+    std::string_view prefix;       ///< "file", "serial"
+    std::string_view description;
+    std::string_view syntax;       ///< "file:PATH"
+    /// Opens the part after "prefix:". replace: an existing output may be replaced.
+    std::unique_ptr<Transport> (*open)(std::string_view rest, DeviceUse use, bool replace);
+};
+
+/// All backends, in the order `tape devices` lists them.
+std::span<const DeviceBackend> device_backends();
+
+/// Opens "prefix:rest". A string without a known prefix is an error (Errc::usage) listing the prefixes.
+std::unique_ptr<Transport> open_device(std::string_view device, DeviceUse use, bool replace = false);
+
+}  // namespace tape

@@ -1,0 +1,103 @@
+// Devices over a transport: sending frames (feeding a controller, punching), receiving them (from a
+// controller or a reader), and emulating a tape reader a controller pulls from.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tape/clock.hpp"
+#include "tape/code.hpp"
+#include "tape/device.hpp"
+#include "tape/frame.hpp"
+#include "tape/line_state.hpp"
+
+namespace tape {
+
+/// How far a run has come, for progress displays.
+struct LineProgress {
+    std::uint64_t frames = 0;  ///< sent or received so far
+    std::uint64_t total = 0;   ///< to send (0 when unknown)
+    std::uint64_t pauses = 0;  ///< XOFFs (DC3) received
+    bool paused = false;
+    double rate = 0;           ///< frames per second so far
+};
+
+struct SendOptions {
+    double rate = 0;                          ///< frames per second; 0: the line's rate, or unpaced for files
+    std::optional<Flow> flow{};               ///< default: what the device string says
+    bool wait_xon = false;                    ///< send nothing before the first DC1 from the other side
+    std::chrono::milliseconds xon_timeout{0}; ///< with wait_xon: give up after this long (0: wait for ever)
+    std::uint8_t xon = dc1, xoff = dc3;       ///< the flow characters (Fanuc-style DC1/DC3 by default)
+    const std::atomic<bool>* stop = nullptr;  ///< set (e.g. by SIGINT) to stop after the current frame
+    std::function<void(const LineProgress&)> progress{};  ///< called a few times a second
+};
+
+struct SendResult {
+    std::uint64_t sent = 0;
+    std::uint64_t pauses = 0;
+    bool stopped = false;  ///< ended by the stop flag before the last frame
+};
+
+/// Sends frames in order, each exactly once: paced, paused by DC3 (or CTS dropped) before the next
+/// frame and resumed by DC1, with track 8 dropped on a 7-bit line (the UART adds the parity).
+/// Throws Error(Errc::io) naming the frame when the other side hangs up or no DC1 comes in time.
+SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock = system_clock());
+
+struct ReceiveOptions {
+    std::chrono::milliseconds idle_timeout{0};  ///< end after this long without a frame (0: never)
+    bool until_program_end = false;             ///< end at the '%' after M02/M30
+    Code code = Code::iso;                      ///< to recognise M02/M30 and '%'
+    bool drop_flow_codes = false;               ///< DC1-DC4 are line control, not tape: not kept
+    const std::atomic<bool>* stop = nullptr;
+    std::function<void(std::span<const Frame>)> sink{};  ///< every frame, as it arrives
+    std::function<void(const LineProgress&)> progress{};
+};
+
+struct ReceiveResult {
+    enum class End { program_end, idle, hangup, stopped };
+    std::uint64_t frames = 0;
+    End end = End::hangup;
+};
+
+/// Receives frames until the end the options ask for. Frames go to sink as they arrive, so nothing
+/// already received is lost whatever ends the run. On stop it sends DC3 and still takes what the
+/// other side sends in the next moments (controllers may send up to 10 characters after DC3).
+ReceiveResult receive_frames(Transport& line, const ReceiveOptions& options, Clock& clock = system_clock());
+
+struct EmulatorOptions {
+    double rate = 1500;                       ///< frames per second (ФС-1501)
+    bool skip_leader = true;                  ///< start at the first punched frame
+    std::uint8_t start = dc1, stop_code = dc3;  ///< DC1 starts the reader, DC3 stops it
+    std::uint8_t search = ':';                ///< then optional digits: search forward to that main block
+    std::uint8_t rewind = '%';                ///< rewind to the '%' stop before the current position
+    Code code = Code::iso;
+    std::optional<Flow> flow{};               ///< rtscts: CTS starts and stops the reader instead of DC1/DC3
+    const std::atomic<bool>* stop = nullptr;  ///< ends the emulation
+    std::function<void(std::uint64_t frame, const std::string& what)> log{};  ///< tape position events
+};
+
+struct EmulatorResult {
+    std::uint64_t frames_sent = 0;
+    std::uint64_t starts = 0, stops = 0, rewinds = 0, searches = 0;
+};
+
+/// Acts as a tape reader holding tape: on DC1 (or CTS) sends frames at the rate, on DC3 stops before
+/// the next frame, at the end of a program (the block with M02/M30) rewinds to its '%' and waits, and
+/// on request searches forward to a main block or rewinds. Runs until stop is set or the line hangs up.
+EmulatorResult emulate_reader(Transport& line, std::span<const Frame> tape, const EmulatorOptions& options,
+                              Clock& clock = system_clock());
+
+/// Where a reader searching forward from `from` stops: the next ':' frame (with that block number,
+/// when given). nullopt when there is none.
+std::optional<std::size_t> seek_main_block(std::span<const Frame> tape, std::size_t from, const FrameCode& code,
+                                           std::optional<long long> number = {});
+/// Where a reader rewinding from `from` stops: the last '%' frame before it, or 0.
+std::size_t seek_rewind_stop(std::span<const Frame> tape, std::size_t from, const FrameCode& code);
+
+}  // namespace tape

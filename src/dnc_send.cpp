@@ -1,0 +1,104 @@
+// Sending frames over a line: pacing, XON/XOFF or RTS/CTS, exactly once each, in order.
+#include <cmath>
+
+#include "tape/dnc.hpp"
+#include "tape/error.hpp"
+
+namespace tape {
+namespace {
+
+using namespace std::chrono_literals;
+
+class Sender {
+public:
+    Sender(Transport& line, const SendOptions& o, Clock& clock)
+        : line_(line), o_(o), clock_(clock), flow_(o.flow.value_or(line.flow())), xonxoff_(o.xon, o.xoff) {}
+
+    SendResult run(std::span<const Frame> frames) {
+        SendResult r;
+        double rate = o_.rate > 0 ? o_.rate : line_.line_rate();
+        auto period = rate > 0 ? std::chrono::duration_cast<Clock::time_point::duration>(std::chrono::duration<double>(1.0 / rate))
+                               : Clock::time_point::duration::zero();
+        if (o_.wait_xon) wait_for_xon();
+        auto start = clock_.now(), next = start, last_report = start;
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            if (stopped()) {
+                r.stopped = true;
+                break;
+            }
+            if (period.count() > 0) {
+                if (clock_.now() > next + 100 * period) next = clock_.now();  // after a pause: no burst to catch up
+                clock_.sleep_until(next);
+                next += period;
+            }
+            // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
+            if (flow_ == Flow::xonxoff) take_input(0ms, i);
+            while (blocked() && !stopped()) {
+                report(i, frames.size(), start, true);
+                if (flow_ == Flow::xonxoff) take_input(50ms, i);
+                else clock_.sleep_until(clock_.now() + 5ms);
+            }
+            if (stopped()) {
+                r.stopped = true;
+                break;
+            }
+            std::uint8_t byte = line_.seven_bit() ? frames[i] & 0x7F : frames[i];
+            line_.write({&byte, 1});
+            r.sent = i + 1;
+            if (o_.progress && clock_.now() - last_report > 250ms) {
+                last_report = clock_.now();
+                report(i + 1, frames.size(), start, false);
+            }
+        }
+        line_.drain();
+        r.pauses = xonxoff_.pauses();
+        report(r.sent, frames.size(), start, false);
+        return r;
+    }
+
+private:
+    Transport& line_;
+    const SendOptions& o_;
+    Clock& clock_;
+    Flow flow_;
+    XonXoff xonxoff_;
+
+    bool stopped() const { return o_.stop && o_.stop->load(); }
+    bool blocked() {
+        if (flow_ == Flow::xonxoff) return xonxoff_.paused();
+        if (flow_ == Flow::rtscts && line_.modem()) return !line_.modem()->cts();
+        return false;
+    }
+
+    void take_input(std::chrono::milliseconds wait, std::size_t frame) {
+        std::uint8_t buf[64];
+        ReadResult got = line_.read(buf, wait);
+        for (std::size_t k = 0; k < got.count; ++k) xonxoff_.receive(buf[k]);
+        if (got.end) throw Error(Errc::io, Position{.frame = frame + 1}, line_.name() + ": the other side hung up after " + std::to_string(frame) + " frame(s)");
+    }
+
+    void wait_for_xon() {
+        auto deadline = clock_.now() + o_.xon_timeout;
+        while (!xonxoff_.seen_xon() && !stopped()) {
+            take_input(100ms, 0);
+            if (o_.xon_timeout.count() > 0 && clock_.now() >= deadline && !xonxoff_.seen_xon())
+                throw Error(Errc::io, line_.name() + ": no DC1 (XON) from the other side within " +
+                                          std::to_string(o_.xon_timeout.count() / 1000.0).substr(0, 4) + " s");
+        }
+        if (xonxoff_.paused()) xonxoff_ = XonXoff(o_.xon, o_.xoff);
+    }
+
+    void report(std::uint64_t done, std::uint64_t total, Clock::time_point start, bool paused) {
+        if (!o_.progress) return;
+        double seconds = std::chrono::duration<double>(clock_.now() - start).count();
+        o_.progress(LineProgress{done, total, xonxoff_.pauses(), paused, seconds > 0 ? static_cast<double>(done) / seconds : 0});
+    }
+};
+
+}  // namespace
+
+SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock) {
+    return Sender(line, options, clock).run(frames);
+}
+
+}  // namespace tape

@@ -1,0 +1,160 @@
+// A tape reader a controller pulls from: start/stop on DC1/DC3 (or CTS), paced at the reader's speed,
+// rewinding to '%' at the end of a program, searching ':' main blocks on request.
+#include <cmath>
+
+#include "tape/dnc.hpp"
+#include "tape/error.hpp"
+
+namespace tape {
+namespace {
+
+using namespace std::chrono_literals;
+
+bool is_char(const FrameCode& code, Frame f, char c) { return code.kind(f) == FrameKind::character && code.character(f) == c; }
+
+class Emulator {
+public:
+    Emulator(Transport& line, std::span<const Frame> tape, const EmulatorOptions& o, Clock& clock)
+        : line_(line), tape_(tape), o_(o), clock_(clock), code_(FrameCode::make(o.code, Parity::even)),
+          flow_(o.flow.value_or(line.flow())) {}
+
+    EmulatorResult run() {
+        if (o_.skip_leader)
+            while (pos_ < tape_.size() && tape_[pos_] == blank_frame) ++pos_;
+        log("loaded, waiting for " + std::string(flow_ == Flow::rtscts ? "CTS" : "DC1"));
+        auto period = std::chrono::duration_cast<Clock::time_point::duration>(std::chrono::duration<double>(1.0 / o_.rate));
+        Clock::time_point next = clock_.now();
+        while (!(o_.stop && o_.stop->load())) {
+            if (!take_input(running_ ? 0ms : 20ms)) break;  // hung up
+            if (flow_ == Flow::rtscts && line_.modem()) set_running(line_.modem()->cts());
+            if (!running_) {
+                next = clock_.now();
+                continue;
+            }
+            if (pos_ >= tape_.size()) {
+                set_running(false);
+                log("end of tape");
+                continue;
+            }
+            clock_.sleep_until(next);
+            next += period;
+            if (clock_.now() > next + 10 * period) next = clock_.now();  // late: no burst to catch up
+            std::uint8_t byte = line_.seven_bit() ? tape_[pos_] & 0x7F : tape_[pos_];
+            line_.write({&byte, 1});
+            ++r_.frames_sent;
+            Frame sent = tape_[pos_++];
+            if (code_.kind(sent) == FrameKind::character && watch_.feed(code_.character(sent)) == ProgramEndWatch::Event::program_end) {
+                std::size_t stop = seek_rewind_stop(tape_, pos_, code_);
+                log("end of program");
+                set_running(false);
+                rewind_to(stop);
+            }
+        }
+        return r_;
+    }
+
+private:
+    Transport& line_;
+    std::span<const Frame> tape_;
+    const EmulatorOptions& o_;
+    Clock& clock_;
+    FrameCode code_;
+    Flow flow_;
+    std::size_t pos_ = 0;
+    bool running_ = false;
+    ProgramEndWatch watch_;
+    EmulatorResult r_;
+    std::optional<std::string> search_digits_;  // after the search character, until a non-digit
+
+    void log(const std::string& what) {
+        if (o_.log) o_.log(pos_ + 1, what);
+    }
+
+    void set_running(bool on) {
+        if (on == running_) return;
+        running_ = on;
+        ++(on ? r_.starts : r_.stops);
+        log(on ? "start" : "stop");
+    }
+
+    void rewind_to(std::size_t stop) {
+        pos_ = stop;
+        watch_ = ProgramEndWatch{};
+        ++r_.rewinds;
+        log("rewound to the '%' stop");
+    }
+
+    void finish_search() {
+        std::optional<long long> number;
+        if (search_digits_ && !search_digits_->empty() && search_digits_->size() < 18) number = std::stoll(*search_digits_);
+        search_digits_.reset();
+        ++r_.searches;
+        auto hit = seek_main_block(tape_, pos_, code_, number);
+        if (!hit) {
+            log("search: no main block" + (number ? " :" + std::to_string(*number) : std::string()) + " ahead");
+            return;
+        }
+        pos_ = *hit;
+        watch_ = ProgramEndWatch{};
+        log("search: at main block" + (number ? " :" + std::to_string(*number) : std::string()));
+    }
+
+    // Commands from the controller. Returns false when the line hung up.
+    bool take_input(std::chrono::milliseconds wait) {
+        std::uint8_t buf[64];
+        ReadResult got = line_.read(buf, wait);
+        for (std::size_t i = 0; i < got.count; ++i) {
+            std::uint8_t b = buf[i] & 0x7F;  // commands come in either parity
+            if (search_digits_) {
+                if (b >= '0' && b <= '9') {
+                    *search_digits_ += static_cast<char>(b);
+                    continue;
+                }
+                finish_search();
+            }
+            if (flow_ != Flow::rtscts && b == o_.start) set_running(true);
+            else if (flow_ != Flow::rtscts && b == o_.stop_code) set_running(false);
+            else if (b == o_.search) search_digits_ = std::string();
+            else if (b == (o_.rewind & 0x7F)) {
+                set_running(false);
+                rewind_to(seek_rewind_stop(tape_, pos_, code_));
+            }
+        }
+        if (search_digits_ && got.count == 0) finish_search();
+        if (got.end) log("the controller hung up");
+        return !got.end;
+    }
+};
+
+}  // namespace
+
+EmulatorResult emulate_reader(Transport& line, std::span<const Frame> tape, const EmulatorOptions& options, Clock& clock) {
+    return Emulator(line, tape, options, clock).run();
+}
+
+std::optional<std::size_t> seek_main_block(std::span<const Frame> tape, std::size_t from, const FrameCode& code,
+                                           std::optional<long long> number) {
+    for (std::size_t i = from; i < tape.size(); ++i) {
+        if (!is_char(code, tape[i], ':')) continue;
+        if (!number) return i;
+        long long n = 0;
+        int digits = 0;
+        for (std::size_t k = i + 1; k < tape.size() && digits < 18; ++k) {
+            FrameKind kind = code.kind(tape[k]);
+            if (kind == FrameKind::blank || kind == FrameKind::rubout) continue;
+            if (kind != FrameKind::character || code.character(tape[k]) < '0' || code.character(tape[k]) > '9') break;
+            n = n * 10 + (code.character(tape[k]) - '0');
+            ++digits;
+        }
+        if (digits && n == *number) return i;
+    }
+    return std::nullopt;
+}
+
+std::size_t seek_rewind_stop(std::span<const Frame> tape, std::size_t from, const FrameCode& code) {
+    for (std::size_t i = std::min(from, tape.size()); i-- > 0;)
+        if (is_char(code, tape[i], '%')) return i;
+    return 0;
+}
+
+}  // namespace tape

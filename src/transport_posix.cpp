@@ -1,0 +1,55 @@
+#include "transport_posix.hpp"
+
+#include <poll.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "tape/error.hpp"
+
+namespace tape::posix {
+
+void fail(const std::string& name, const std::string& what) {
+    throw Error(Errc::io, name + ": " + what + ": " + std::strerror(errno));
+}
+
+ReadResult read_fd(int fd, std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout, const std::string& name) {
+    pollfd p{fd, POLLIN, 0};
+    int r;
+    do {
+        r = ::poll(&p, 1, static_cast<int>(timeout.count()));
+    } while (r < 0 && errno == EINTR);
+    if (r < 0) fail(name, "cannot wait for data");
+    if (r == 0) return {};
+    if (p.revents & (POLLIN | POLLHUP | POLLERR)) {
+        ssize_t n;
+        do {
+            n = ::read(fd, buffer.data(), buffer.size());
+        } while (n < 0 && errno == EINTR);
+        if (n > 0) return {static_cast<std::size_t>(n), false};
+        if (n == 0 || errno == EIO) return {0, true};  // EIO: a pseudo-terminal whose other side closed
+        if (errno == EAGAIN) return {};
+        fail(name, "cannot read");
+    }
+    return {0, (p.revents & POLLNVAL) != 0};
+}
+
+void write_fd(int fd, std::span<const std::uint8_t> bytes, const std::string& name) {
+    while (!bytes.empty()) {
+        ssize_t n = ::write(fd, bytes.data(), bytes.size());
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            if (errno == EAGAIN) {
+                pollfd p{fd, POLLOUT, 0};
+                ::poll(&p, 1, 100);
+                continue;
+            }
+            if (errno == EIO) throw Error(Errc::io, name + ": the other side hung up");
+            fail(name, "cannot write");
+        }
+        bytes = bytes.subspan(static_cast<std::size_t>(n));
+    }
+}
+
+}  // namespace tape::posix

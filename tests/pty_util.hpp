@@ -1,0 +1,65 @@
+// A real kernel pseudo-terminal for device tests: the test plays the controller on the master side,
+// the code under test opens the slave by its path as serial:PATH.
+#pragma once
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pty.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+struct Pty {
+    int master = -1;
+    std::string slave_path;
+    int slave_keep = -1;  // held open so the slave side exists until the code under test opens it
+
+    Pty() {
+        int slave = -1;
+        char name[128];
+        if (::openpty(&master, &slave, name, nullptr, nullptr) != 0) throw std::runtime_error("openpty failed");
+        termios t{};
+        ::tcgetattr(slave, &t);
+        ::cfmakeraw(&t);
+        ::tcsetattr(slave, TCSANOW, &t);
+        slave_path = name;
+        slave_keep = slave;
+    }
+    ~Pty() {
+        close_master();
+        if (slave_keep >= 0) ::close(slave_keep);
+    }
+    void release_slave() {
+        if (slave_keep >= 0) ::close(slave_keep);
+        slave_keep = -1;
+    }
+    void close_master() {
+        if (master >= 0) ::close(master);
+        master = -1;
+    }
+    std::string device(const std::string& settings = "baud=115200&flow=xonxoff") const { return "serial:" + slave_path + "?" + settings; }
+
+    void send(std::uint8_t b) const {
+        if (::write(master, &b, 1) != 1) throw std::runtime_error("pty write failed");
+    }
+    /// Appends what arrives within timeout (returns at the first data, or at the time-out).
+    std::size_t receive(std::vector<std::uint8_t>& into, std::chrono::milliseconds timeout) const {
+        pollfd p{master, POLLIN, 0};
+        if (::poll(&p, 1, static_cast<int>(timeout.count())) <= 0 || !(p.revents & POLLIN)) return 0;
+        std::uint8_t buf[4096];
+        ssize_t n = ::read(master, buf, sizeof buf);
+        if (n <= 0) return 0;
+        into.insert(into.end(), buf, buf + n);
+        return static_cast<std::size_t>(n);
+    }
+    /// Everything that arrives until the line has been quiet for `quiet`.
+    void receive_until_quiet(std::vector<std::uint8_t>& into, std::chrono::milliseconds quiet) const {
+        while (receive(into, quiet) > 0) {
+        }
+    }
+};

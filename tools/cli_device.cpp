@@ -1,0 +1,137 @@
+#include "cli_device.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "tape/file_io.hpp"
+#include "tape/utf8_text.hpp"
+
+namespace cli {
+
+std::atomic<bool>& interrupted() {
+    static std::atomic<bool> flag{false};
+    return flag;
+}
+
+namespace {
+extern "C" void on_interrupt(int) { interrupted().store(true); }
+}  // namespace
+
+void install_interrupt_handler() {
+    struct sigaction sa {};
+    sa.sa_handler = on_interrupt;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+    signal(SIGPIPE, SIG_IGN);
+}
+
+std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, tape::DeviceUse use, bool replace) {
+    try {
+        return tape::open_device(device, use, replace);
+    } catch (const tape::Error& e) {
+        fail(device, e);
+    }
+}
+
+ProgressLine::ProgressLine(std::string verb, bool force) : verb_(std::move(verb)), on_(force || ::isatty(STDERR_FILENO)) {}
+
+ProgressLine::~ProgressLine() {
+    if (drawn_) std::cerr << '\n';
+}
+
+void ProgressLine::operator()(const tape::LineProgress& p) {
+    if (!on_) return;
+    char line[160];
+    if (p.total)
+        std::snprintf(line, sizeof line, "\rtape: %s %llu/%llu frames, %.0f frames/s, %llu pause(s)%s   ", verb_.c_str(),
+                      static_cast<unsigned long long>(p.frames), static_cast<unsigned long long>(p.total), p.rate,
+                      static_cast<unsigned long long>(p.pauses), p.paused ? ", paused (XOFF)" : "");
+    else
+        std::snprintf(line, sizeof line, "\rtape: %s %llu frames, %.0f frames/s   ", verb_.c_str(),
+                      static_cast<unsigned long long>(p.frames), p.rate);
+    std::cerr << line << std::flush;
+    drawn_ = true;
+}
+
+void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
+    add_code_options(sub, p.choice, true);
+    sub->add_option("--leader", p.leader, "Blank frames (NUL) before the program")->capture_default_str()->each([&p](const std::string&) {
+        p.leader_given = true;
+    });
+    sub->add_option("--trailer", p.trailer, "Blank frames after the program")->capture_default_str()->each([&p](const std::string&) {
+        p.trailer_given = true;
+    });
+    sub->add_flag("--crlf", p.crlf, "End blocks with CR LF instead of LF (text programs, ISO)");
+    sub->add_flag("!--no-percent", p.percent_first, "Do not put a '%' block first when the program has none");
+    sub->add_option("--end", p.end, "After the program: percent (a '%', then the trailer) or none (the trailer only, for M30 tapes)")
+        ->check(CLI::IsMember({"percent", "none"}))
+        ->capture_default_str();
+    sub->add_option("--format,-f", p.format, "Image format of IN: raw or holes (IN is then a tape image)")->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_option("--input", p.kind, "What IN is: auto, text or image")->check(CLI::IsMember({"auto", "text", "image"}))->capture_default_str();
+}
+
+std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
+    std::string name = display_name(path);
+    std::vector<std::uint8_t> bytes;
+    try {
+        bytes = tape::read_file(path);
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+    bool image = p.kind == "image" || !p.format.empty();
+    if (p.kind == "auto" && !image) {
+        const tape::ImageFormat* by_ext = path == "-" ? nullptr : tape::image_format_for_path(path);
+        auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
+        image = (by_ext && by_ext->id == "raw") || tape::find_image_format("holes")->match(prefix) >= 60 || !tape::is_program_text(bytes);
+    }
+    if (image) {
+        TapeInput in = read_tape(path, p.format);
+        std::vector<tape::Frame> frames = std::move(in.frames);
+        if (p.leader_given || p.trailer_given) {
+            std::size_t first = 0, last = frames.size();
+            while (first < last && frames[first] == tape::blank_frame) ++first;
+            while (last > first && frames[last - 1] == tape::blank_frame) --last;
+            std::size_t lead = p.leader_given ? p.leader : first, trail = p.trailer_given ? p.trailer : frames.size() - last;
+            std::vector<tape::Frame> out(lead, tape::blank_frame);
+            out.insert(out.end(), frames.begin() + static_cast<std::ptrdiff_t>(first), frames.begin() + static_cast<std::ptrdiff_t>(last));
+            out.insert(out.end(), trail, tape::blank_frame);
+            frames = std::move(out);
+        }
+        return frames;
+    }
+    std::string text(bytes.begin(), bytes.end());
+    auto first = text.find_first_not_of(" \t\r\n");
+    if (p.percent_first && (first == std::string::npos || text[first] != '%')) text = "%\n" + text;
+    if (!text.empty() && text.back() != '\n') text += '\n';
+    if (p.end == "percent") text += "%";
+    tape::EncodeOptions o;
+    o.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
+    o.parity = *tape::parse_parity(p.choice.parity);
+    o.charset = *tape::parse_charset(p.choice.charset);
+    o.leader = p.leader;
+    o.trailer = p.trailer;
+    o.crlf = p.crlf;
+    o.eia_table = globals().table();
+    try {
+        return tape::encode(text, o);
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+}
+
+std::uint8_t parse_byte(const std::string& text, const std::string& option) {
+    try {
+        std::size_t used = 0;
+        unsigned long v = std::stoul(text, &used, 0);
+        if (used == text.size() && v < 256) return static_cast<std::uint8_t>(v);
+    } catch (const std::exception&) {
+    }
+    if (text.size() == 1) return static_cast<std::uint8_t>(text[0]);
+    fail("", tape::Errc::usage, option + " takes a character or a byte value such as 0x11, not '" + text + "'");
+}
+
+}  // namespace cli

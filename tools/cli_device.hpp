@@ -1,0 +1,59 @@
+// What the device subcommands share: opening devices, Ctrl-C, progress lines, the frames to send.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "tape/device.hpp"
+#include "tape/dnc.hpp"
+#include "tape/encode.hpp"
+
+namespace cli {
+
+/// Exit status of a run the user interrupted (128 + SIGINT).
+inline constexpr int interrupted_status = 130;
+
+/// Set by SIGINT/SIGTERM once install_interrupt_handler() ran; device runs stop cleanly on it.
+std::atomic<bool>& interrupted();
+void install_interrupt_handler();
+
+/// Opens a device string; errors end the program with the right status.
+std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, tape::DeviceUse use, bool replace = false);
+
+/// A progress line on stderr, when stderr is a terminal (or forced), at most a few times a second.
+class ProgressLine {
+public:
+    ProgressLine(std::string verb, bool force);
+    ~ProgressLine();
+    void operator()(const tape::LineProgress& p);
+
+private:
+    std::string verb_;
+    bool on_;
+    bool drawn_ = false;
+};
+
+/// How a text program becomes frames on the line (tape feed's profile options).
+struct FeedProfile {
+    CodeChoice choice;
+    std::size_t leader = tape::default_leader, trailer = tape::default_trailer;
+    bool leader_given = false, trailer_given = false;
+    bool crlf = false;          ///< CR LF at the end of each block
+    bool percent_first = true;  ///< a '%' block first when the program has none
+    std::string end = "percent";///< "percent": a '%' after the program; "none"
+    std::string format;         ///< image format of IN, when an image
+    std::string kind = "auto";
+};
+void add_feed_profile_options(CLI::App* sub, FeedProfile& p);
+
+/// The frames to send for IN: an image as it is (blank ends replaced when --leader/--trailer are given),
+/// or a text program encoded with the profile.
+std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p);
+
+/// "--xon 0x11" style byte options.
+std::uint8_t parse_byte(const std::string& text, const std::string& option);
+
+}  // namespace cli

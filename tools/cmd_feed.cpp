@@ -1,0 +1,67 @@
+// tape feed: send a program to a controller over a line, as a tape reader would (DNC, drip feed).
+#include "cli_device.hpp"
+#include "commands.hpp"
+
+namespace cli {
+namespace {
+
+struct FeedArgs {
+    std::string input, device;
+    FeedProfile profile;
+    double rate = 0, delay_ms = 0;
+    bool wait_xon = false, progress = false;
+    double xon_timeout = 0;
+    std::string flow, xon = "0x11", xoff = "0x13";
+};
+
+void run(const FeedArgs& a) {
+    std::vector<tape::Frame> frames = frames_to_send(a.input, a.profile);
+    install_interrupt_handler();
+    auto line = open_device_or_fail(a.device, tape::DeviceUse::both);
+    tape::SendOptions o;
+    o.rate = a.rate > 0 ? a.rate : (a.delay_ms > 0 ? 1000.0 / a.delay_ms : 0);
+    if (a.flow == "xonxoff") o.flow = tape::Flow::xonxoff;
+    else if (a.flow == "rtscts") o.flow = tape::Flow::rtscts;
+    else if (a.flow == "none") o.flow = tape::Flow::none;
+    o.wait_xon = a.wait_xon;
+    o.xon_timeout = std::chrono::milliseconds(static_cast<long long>(a.xon_timeout * 1000));
+    o.xon = parse_byte(a.xon, "--xon");
+    o.xoff = parse_byte(a.xoff, "--xoff");
+    o.stop = &interrupted();
+    ProgressLine progress("sent", a.progress);
+    o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
+    tape::SendResult r;
+    try {
+        r = tape::send_frames(*line, frames, o);
+    } catch (const tape::Error& e) {
+        fail(a.device, e);
+    }
+    if (r.stopped) {
+        say(a.device, "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
+        throw Exit{interrupted_status};
+    }
+    if (globals().verbosity > 0)
+        say(a.device, "sent " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
+}
+
+}  // namespace
+
+void add_feed(CLI::App& app) {
+    auto a = std::make_shared<FeedArgs>();
+    auto* sub = app.add_subcommand("feed", "Send a program to a controller over a line, as a tape reader would (DNC)");
+    sub->add_option("input", a->input, "Text program or tape image; - for stdin")->required();
+    sub->add_option("device", a->device, "Device string, e.g. serial:/dev/ttyUSB0?baud=9600&flow=xonxoff")->required();
+    add_feed_profile_options(sub, a->profile);
+    sub->add_option("--rate", a->rate, "Frames per second (default: the line's speed; files unpaced)");
+    sub->add_option("--delay", a->delay_ms, "Milliseconds between characters (instead of --rate)");
+    sub->add_option("--flow", a->flow, "Override the device's flow control: xonxoff, rtscts or none")
+        ->check(CLI::IsMember({"xonxoff", "rtscts", "none"}));
+    sub->add_flag("--wait-xon", a->wait_xon, "Send nothing before the controller's first DC1 (XON)");
+    sub->add_option("--xon-timeout", a->xon_timeout, "With --wait-xon: give up after SECONDS (default: wait until Ctrl-C)");
+    sub->add_option("--xon", a->xon, "The resume character (default DC1, 0x11)")->capture_default_str();
+    sub->add_option("--xoff", a->xoff, "The pause character (default DC3, 0x13)")->capture_default_str();
+    sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
+    sub->callback([a] { run(*a); });
+}
+
+}  // namespace cli

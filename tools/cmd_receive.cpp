@@ -1,0 +1,93 @@
+// tape receive: take a program a controller punches out over a line, frames kept as they arrive.
+#include "cli_device.hpp"
+#include "commands.hpp"
+#include "tape/file_io.hpp"
+
+namespace cli {
+namespace {
+
+struct ReceiveArgs {
+    std::string device, output, format, code = "iso";
+    double timeout = 10;
+    bool force = false, keep_flow_codes = false, progress = false, whole = false;
+};
+
+const char* end_text(tape::ReceiveResult::End e) {
+    switch (e) {
+    case tape::ReceiveResult::End::program_end: return "end of program";
+    case tape::ReceiveResult::End::idle: return "no frame for the time-out";
+    case tape::ReceiveResult::End::hangup: return "end of tape, or the other side hung up";
+    case tape::ReceiveResult::End::stopped: return "stopped";
+    }
+    return "";
+}
+
+}  // namespace
+
+// Shared with tape read: receive frames into an image file as they arrive.
+int receive_into_image(const std::string& device, const std::string& output, const std::string& format_id, bool force,
+                       tape::ReceiveOptions o, bool progress_forced, const char* verb) {
+    install_interrupt_handler();
+    auto line = open_device_or_fail(device, tape::DeviceUse::read);
+    const tape::ImageFormat* format = format_id.empty() ? tape::image_format_for_path(output) : tape::find_image_format(format_id);
+    if (!format) format = tape::find_image_format("raw");
+    tape::FrameCode annotate = tape::FrameCode::make(o.code, tape::Parity::even);
+    std::unique_ptr<tape::FrameFileWriter> out;
+    try {
+        out = std::make_unique<tape::FrameFileWriter>(output, *format, &annotate, force);
+    } catch (const tape::Error& e) {
+        fail(output, e);
+    }
+    o.stop = &interrupted();
+    o.sink = [&](std::span<const tape::Frame> frames) {
+        try {
+            out->append(frames);
+        } catch (const tape::Error& e) {
+            fail(output, e);
+        }
+    };
+    ProgressLine progress(verb, progress_forced);
+    o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
+    tape::ReceiveResult r;
+    try {
+        r = tape::receive_frames(*line, o);
+    } catch (const tape::Error& e) {
+        out->sync();
+        fail(device, e);
+    }
+    out->sync();
+    if (globals().verbosity >= 0)
+        say(device, std::to_string(r.frames) + " frames " + verb + " into " + output + " (" + end_text(r.end) + ")");
+    return r.end == tape::ReceiveResult::End::stopped ? interrupted_status : ok;
+}
+
+namespace {
+
+void run(const ReceiveArgs& a) {
+    tape::ReceiveOptions o;
+    o.idle_timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout * 1000));
+    o.until_program_end = !a.whole;
+    o.code = *tape::parse_code(a.code);
+    o.drop_flow_codes = !a.keep_flow_codes;
+    int status = receive_into_image(a.device, a.output, a.format, a.force, o, a.progress, "received");
+    if (status != ok) throw Exit{status};
+}
+
+}  // namespace
+
+void add_receive(CLI::App& app) {
+    auto a = std::make_shared<ReceiveArgs>();
+    auto* sub = app.add_subcommand("receive", "Take a program a controller punches out over a line into a tape image");
+    sub->add_option("device", a->device, "Device string, e.g. serial:/dev/ttyUSB0?baud=9600")->required();
+    sub->add_option("-o,--output", a->output, "Tape image to write (frames appended as they arrive)")->required();
+    sub->add_option("--timeout", a->timeout, "End after SECONDS without a frame (0: never)")->capture_default_str();
+    sub->add_option("--code,-c", a->code, "Code of the program, to see its end: iso or eia")->check(CLI::IsMember({"iso", "eia"}))->capture_default_str();
+    sub->add_flag("--whole", a->whole, "Do not end at the '%' after M02/M30: keep receiving until time-out or hang-up");
+    sub->add_flag("--keep-flow-codes", a->keep_flow_codes, "Keep DC1-DC4 in the image (they are line control, dropped by default)");
+    sub->add_option("--format,-f", a->format, "Image format: raw or holes (default: by extension, else raw)")->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_flag("--force", a->force, "Replace an existing OUT");
+    sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
+    sub->callback([a] { run(*a); });
+}
+
+}  // namespace cli
