@@ -29,6 +29,9 @@ struct Pty {
         ::tcsetattr(slave, TCSANOW, &t);
         slave_path = name;
         slave_keep = slave;
+        // Spawned processes must not inherit our ends: a hang-up is the last close of the master.
+        ::fcntl(master, F_SETFD, FD_CLOEXEC);
+        ::fcntl(slave, F_SETFD, FD_CLOEXEC);
     }
     ~Pty() {
         close_master();
