@@ -43,7 +43,11 @@ public:
                 break;
             }
             std::uint8_t byte = line_.seven_bit() ? frames[i] & 0x7F : frames[i];
-            line_.write({&byte, 1});
+            try {
+                line_.write({&byte, 1});
+            } catch (const Error& e) {
+                throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(i + 1) + " of " + std::to_string(frames.size()) + ")");
+            }
             r.sent = i + 1;
             if (o_.progress && clock_.now() - last_report > 250ms) {
                 last_report = clock_.now();
@@ -74,7 +78,7 @@ private:
         std::uint8_t buf[64];
         ReadResult got = line_.read(buf, wait);
         for (std::size_t k = 0; k < got.count; ++k) xonxoff_.receive(buf[k]);
-        if (got.end) throw Error(Errc::io, Position{.frame = frame + 1}, line_.name() + ": the other side hung up after " + std::to_string(frame) + " frame(s)");
+        if (got.end) throw Error(Errc::io, line_.name() + ": the other side hung up after " + std::to_string(frame) + " frame(s)");
     }
 
     void wait_for_xon() {

@@ -18,7 +18,7 @@ namespace {
 class FileTransport : public Transport {
 public:
     FileTransport(std::string path, DeviceUse use, bool replace) : path_(std::move(path)) {
-        if (use != DeviceUse::write) {
+        if (use == DeviceUse::read) {  // a file written to has no other side to read from
             auto bytes = read_file(path_);
             const ImageFormat* f = image_format_for_path(path_);
             if (!f) f = &detect_image_format(std::span(bytes).first(std::min<std::size_t>(bytes.size(), 4096)));
@@ -38,6 +38,7 @@ public:
     }
 
     ReadResult read(std::span<std::uint8_t> buffer, std::chrono::milliseconds) override {
+        if (fd_ >= 0) return {};
         std::size_t n = std::min(buffer.size(), frames_.size() - pos_);
         std::memcpy(buffer.data(), frames_.data() + pos_, n);
         pos_ += n;

@@ -94,7 +94,7 @@ TEST(CliFeed, SendsTheProgramThroughPausesExactlyOnce) {
                  dir);
     std::vector<std::uint8_t> got;
     int pauses = 0;
-    while (got.size() < expected.size() && pty.receive(got, 2000ms) > 0) {
+    while (got.size() < expected.size() && pty.receive(got, 5000ms) > 0) {
         if (got.size() > 40 * static_cast<std::size_t>(pauses + 1) && pauses < 4) {
             pty.send(dc3);
             pty.receive_until_quiet(got, 50ms);
@@ -126,7 +126,7 @@ TEST(CliFeed, ControllerHangingUpEndsWithADeviceError) {
     Pty pty;
     Process tape({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--rate", "1000"}, dir);
     std::vector<std::uint8_t> got;
-    while (got.size() < 50) ASSERT_GT(pty.receive(got, 2000ms), 0U);
+    while (got.size() < 50) ASSERT_GT(pty.receive(got, 5000ms), 0U);
     pty.release_slave();
     pty.close_master();
     EXPECT_EQ(tape.wait(), 3);
@@ -138,7 +138,7 @@ TEST(CliFeed, CtrlCStopsCleanly) {
     Pty pty;
     Process tape({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--rate", "1000"}, dir);
     std::vector<std::uint8_t> got;
-    while (got.size() < 20) ASSERT_GT(pty.receive(got, 2000ms), 0U);
+    while (got.size() < 20) ASSERT_GT(pty.receive(got, 5000ms), 0U);
     pty.send(dc3);
     std::this_thread::sleep_for(50ms);
     tape.interrupt();
@@ -192,8 +192,7 @@ TEST(CliPunch, SendsEveryFrameOfTheImage) {
     Process tape({"punch", sample_path("16k20f3s5-turning.eia.ptp"), pty.device("baud=115200&flow=none"), "--rate", "5000"}, dir);
     auto frames = image_frames(sample_path("16k20f3s5-turning.eia.ptp"));
     std::vector<std::uint8_t> got;
-    while (got.size() < frames.size() && pty.receive(got, 2000ms) > 0) {
-    }
+    pty.receive_until_size(got, frames.size(), 10s);
     EXPECT_EQ(tape.wait(), 0) << tape.err();
     EXPECT_EQ(got, frames);
 }
@@ -202,12 +201,12 @@ TEST(CliEmulate, ReadsTheProgramOnDc1AndRewindsAtItsEnd) {
     TempDir dir;
     Pty pty;
     Process tape({"emulate", sample_path("gost-20999-format-example.iso.ptp"), pty.device(), "--rate", "3000"}, dir);
-    std::this_thread::sleep_for(200ms);
     pty.send(dc1);
     std::vector<std::uint8_t> got;
-    pty.receive_until_quiet(got, 300ms);
     auto frames = image_frames(sample_path("gost-20999-format-example.iso.ptp"));
     std::vector<Frame> program(frames.begin() + 100, frames.end() - 100);  // no leader; stops after M02's LF
+    pty.receive_until_size(got, program.size(), 10s);
+    pty.receive_until_quiet(got, 200ms);
     EXPECT_EQ(got, program);
     tape.interrupt();
     EXPECT_EQ(tape.wait(), 0) << tape.err();

@@ -59,7 +59,9 @@ TEST(DevicePty, SenderObeysXonXoffAndLosesNothing) {
     EXPECT_EQ(got, frames);
     EXPECT_EQ(pauses, pause_at.size());
     EXPECT_EQ(result.pauses, pauses);
-    EXPECT_LE(worst_after_xoff, 2U) << "frames that arrived after DC3";
+    // Frames already on their way when DC3 was sent; the hard rule (nothing once the sender has seen
+    // DC3) is the quiet line above. The bound is loose so that a loaded machine does not fail it.
+    EXPECT_LE(worst_after_xoff, 8U) << "frames that arrived after DC3";
 }
 
 TEST(DevicePty, WaitXonSendsNothingBeforeDc1) {
@@ -201,9 +203,13 @@ TEST(DevicePty, EmulatorStartsStopsAndRewinds) {
     pty.send(dc3);
     std::size_t at_stop = got.size();
     pty.receive_until_quiet(got, 50ms);
-    EXPECT_LE(got.size() - at_stop, 2U) << "frames after DC3";
+    EXPECT_LE(got.size() - at_stop, 8U) << "frames after DC3";
+    std::vector<std::uint8_t> quiet;
+    pty.receive(quiet, 50ms);
+    EXPECT_TRUE(quiet.empty()) << "the reader went on after DC3";
     pty.send(dc1);
-    pty.receive_until_quiet(got, 200ms);
+    pty.receive_until_size(got, program.size(), 5s);
+    pty.receive_until_quiet(got, 100ms);  // and nothing after the end of the program
     EXPECT_EQ(got, program);
     // Rewound to '%': the next start reads the program again from its start.
     std::vector<std::uint8_t> again;
@@ -228,10 +234,11 @@ TEST(DevicePty, EmulatorSearchesAMainBlockOnRequest) {
     std::this_thread::sleep_for(100ms);
     pty.send(dc1);
     std::vector<std::uint8_t> got;
-    pty.receive_until_quiet(got, 200ms);
+    auto expected = encode(":3 X2\nN4 M02\n", EncodeOptions{.leader = 0, .trailer = 0});
+    pty.receive_until_size(got, expected.size(), 5s);
+    pty.receive_until_quiet(got, 100ms);
     stop = true;
     emulator.join();
-    auto expected = encode(":3 X2\nN4 M02\n", EncodeOptions{.leader = 0, .trailer = 0});
     EXPECT_EQ(got, expected);
 }
 
@@ -257,7 +264,7 @@ TEST(DevicePty, EightBitLineSendsFramesAsOnTape) {
     std::vector<Frame> frames = {0xA5, 0x0A, 0xB1};
     send_frames(*line, frames, SendOptions{.rate = 1000});
     std::vector<std::uint8_t> got;
-    pty.receive_until_quiet(got, 100ms);
+    pty.receive_until_size(got, frames.size(), 5s);
     EXPECT_EQ(got, frames);
 }
 

@@ -60,6 +60,11 @@ struct Pty {
         into.insert(into.end(), buf, buf + n);
         return static_cast<std::size_t>(n);
     }
+    /// Until `into` holds `size` bytes or `timeout` has passed (robust against slow starts under load).
+    void receive_until_size(std::vector<std::uint8_t>& into, std::size_t size, std::chrono::milliseconds timeout) const {
+        auto end = std::chrono::steady_clock::now() + timeout;
+        while (into.size() < size && std::chrono::steady_clock::now() < end) receive(into, std::chrono::milliseconds(50));
+    }
     /// Everything that arrives until the line has been quiet for `quiet`.
     void receive_until_quiet(std::vector<std::uint8_t>& into, std::chrono::milliseconds quiet) const {
         while (receive(into, quiet) > 0) {

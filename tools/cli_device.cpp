@@ -33,7 +33,7 @@ std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, 
     try {
         return tape::open_device(device, use, replace);
     } catch (const tape::Error& e) {
-        fail(device, e);
+        fail("", e);  // device errors name the device themselves
     }
 }
 

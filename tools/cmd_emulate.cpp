@@ -35,7 +35,7 @@ void run(const EmulateArgs& a) {
             say(name, std::to_string(r.frames_sent) + " frames sent, " + std::to_string(r.starts) + " start(s), " +
                           std::to_string(r.rewinds) + " rewind(s), " + std::to_string(r.searches) + " search(es)");
     } catch (const tape::Error& e) {
-        fail(a.device, e);
+        fail("", e);
     }
 }
 

@@ -34,7 +34,7 @@ void run(const FeedArgs& a) {
     try {
         r = tape::send_frames(*line, frames, o);
     } catch (const tape::Error& e) {
-        fail(a.device, e);
+        fail("", e);
     }
     if (r.stopped) {
         say(a.device, "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");

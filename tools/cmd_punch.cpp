@@ -24,7 +24,7 @@ void run(const PunchArgs& a) {
     try {
         r = tape::send_frames(*line, in.frames, o);
     } catch (const tape::Error& e) {
-        fail(a.device, e);
+        fail("", e);
     }
     if (r.stopped) {
         say(a.device, "stopped after " + std::to_string(r.sent) + " of " + std::to_string(in.frames.size()) + " frames");

@@ -53,7 +53,7 @@ int receive_into_image(const std::string& device, const std::string& output, con
         r = tape::receive_frames(*line, o);
     } catch (const tape::Error& e) {
         out->sync();
-        fail(device, e);
+        fail("", e);
     }
     out->sync();
     if (globals().verbosity >= 0)
