@@ -102,6 +102,13 @@ private:
 }  // namespace
 
 SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock) {
+    // A 7-bit line's UART makes even parity itself: it can carry only ISO frames whose track 8 is just that.
+    if (line.seven_bit())
+        for (std::size_t i = 0; i < frames.size(); ++i)
+            if (hole_count(frames[i]) % 2 != 0)
+                throw Error(Errc::usage, Position{.frame = i + 1},
+                            line.name() + ": a 7-bit line carries ISO frames with even parity only, and frame " +
+                                std::to_string(i + 1) + " is not one (an EIA or damaged tape): use bits=8");
     return Sender(line, options, clock).run(frames);
 }
 

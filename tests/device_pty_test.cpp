@@ -321,3 +321,40 @@ TEST(DeviceSend, RtsCtsHoldsTheLineWhileCtsIsDown) {
     sender.join();
     EXPECT_EQ(line.count.load(), 50U);
 }
+
+TEST(DeviceSend, SevenBitLineRefusesFramesItCannotCarry) {
+    struct SevenBitLine : Transport {
+        std::size_t written = 0;
+        ReadResult read(std::span<std::uint8_t>, std::chrono::milliseconds) override { return {}; }
+        void write(std::span<const std::uint8_t> b) override { written += b.size(); }
+        void drain() override {}
+        bool seven_bit() const override { return true; }
+        std::string name() const override { return "7E2 line"; }
+    } line;
+    auto eia = encode("%\nN1\n", EncodeOptions{.code = Code::eia, .leader = 0, .trailer = 0});
+    EXPECT_THROW(send_frames(line, eia, SendOptions{}), Error);
+    EXPECT_EQ(line.written, 0U);
+}
+
+// The clock is injected: pacing is checked without waiting, on the times the sender asks for.
+TEST(DeviceSend, PacingFollowsTheRateExactly) {
+    struct FakeClock : Clock {
+        time_point t{};
+        std::vector<time_point> sleeps;
+        time_point now() override { return t; }
+        void sleep_until(time_point until) override {
+            sleeps.push_back(until);
+            if (until > t) t = until;
+        }
+    } clock;
+    struct Line : Transport {
+        ReadResult read(std::span<std::uint8_t>, std::chrono::milliseconds) override { return {}; }
+        void write(std::span<const std::uint8_t>) override {}
+        void drain() override {}
+        std::string name() const override { return "line"; }
+    } line;
+    std::vector<Frame> frames(10, 0xA5);
+    send_frames(line, frames, SendOptions{.rate = 100}, clock);
+    ASSERT_EQ(clock.sleeps.size(), 10U);
+    for (std::size_t i = 1; i < clock.sleeps.size(); ++i) EXPECT_EQ(clock.sleeps[i] - clock.sleeps[i - 1], 10ms);
+}
