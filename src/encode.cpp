@@ -21,7 +21,7 @@ std::size_t iso_even_run(const char* in, std::size_t n, Frame* out) {
             high |= v[k] & 0x80;
         }
         if (swar::any16(high)) break;
-        for (int k = 0; k < 4; ++k) swar::store16(out + i + 16 * k, v[k] | (swar::odd_parity16(v[k]) << 7));
+        for (int k = 0; k < 4; ++k) swar::store16(out + i + 16 * k, v[k] | swar::parity_track16(v[k]));
     }
     for (; i < n; ++i) {
         auto c = static_cast<unsigned char>(in[i]);

@@ -19,12 +19,24 @@ inline bytes16 load16(const void* p) {
 
 inline void store16(void* p, bytes16 v) { std::memcpy(p, &v, sizeof v); }
 
-/// Per byte: 1 where the byte has an odd number of set bits, else 0.
-inline bytes16 odd_parity16(bytes16 x) {
+/// The same sixteen bytes as two 64-bit lanes: whole-lane shifts need no per-byte masking.
+typedef std::uint64_t words2 __attribute__((vector_size(16)));
+
+/// Per byte: 1 where the byte has an odd number of set bits, else 0. The folds shift whole 64-bit
+/// lanes; bits pulled in from the next byte land only above bit 3, 1 and 0 in turn, so bit 0 of each
+/// byte stays exact.
+inline bytes16 odd_parity16(bytes16 v) {
+    words2 x = reinterpret_cast<words2>(v);
     x ^= x >> 4;
     x ^= x >> 2;
     x ^= x >> 1;
-    return x & 1;
+    return reinterpret_cast<bytes16>(x & 0x0101010101010101ULL);
+}
+
+/// Per byte: 0x80 where the byte has an odd number of set bits, else 0 (the ISO track 8 of a 7-bit code).
+inline bytes16 parity_track16(bytes16 v) {
+    words2 p = reinterpret_cast<words2>(odd_parity16(v));
+    return reinterpret_cast<bytes16>(p << 7);
 }
 
 /// True when any byte of v is non-zero.
