@@ -61,25 +61,38 @@ void fail(const std::string& file, tape::Errc code, const std::string& message) 
     fail(file, tape::Error(code, message));
 }
 
-TapeInput read_tape(const std::string& path, const std::string& format_id) {
+std::vector<std::uint8_t> read_input(const std::string& path) {
+    try {
+        return tape::read_file(path.empty() ? "-" : path);
+    } catch (const tape::Error& e) {
+        fail(display_name(path), e);
+    }
+}
+
+TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id) {
     TapeInput in;
     in.name = path.empty() ? "-" : path;
-    std::string shown = display_name(in.name);
-    std::vector<std::uint8_t> bytes;
-    try {
-        bytes = tape::read_file(in.name);
-    } catch (const tape::Error& e) {
-        fail(shown, e);
-    }
     if (!format_id.empty()) in.format = tape::find_image_format(format_id);
     if (!in.format && in.name != "-") in.format = tape::image_format_for_path(in.name);
-    if (!in.format) in.format = &tape::detect_image_format(std::span(bytes).first(std::min<std::size_t>(bytes.size(), 4096)));
+    // ".txt" may be a holes picture or not: the content decides, as for names without an extension.
+    if (!in.format || in.format->id == "holes")
+        in.format = &tape::detect_image_format(std::span(bytes).first(std::min<std::size_t>(bytes.size(), 4096)));
     try {
         in.frames = in.format->read(bytes);
     } catch (const tape::Error& e) {
-        fail(shown, e);
+        fail(display_name(in.name), e);
     }
     return in;
+}
+
+TapeInput read_tape(const std::string& path, const std::string& format_id) { return tape_from_bytes(path, read_input(path), format_id); }
+
+bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id, const std::string& kind) {
+    if (kind != "auto") return kind == "image";
+    if (!format_id.empty()) return true;
+    const tape::ImageFormat* by_ext = path.empty() || path == "-" ? nullptr : tape::image_format_for_path(path);
+    auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
+    return (by_ext && by_ext->id == "raw") || tape::find_image_format("holes")->match(prefix) >= 60 || !tape::is_program_text(bytes);
 }
 
 void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
@@ -149,42 +162,17 @@ void add_program_source_options(CLI::App* sub, ProgramSource& source) {
 
 ProgramInput load_program(const std::string& path, const ProgramSource& source) {
     ProgramInput in;
-    std::string name = display_name(path);
-    in.name = name;
-    std::vector<std::uint8_t> bytes;
-    try {
-        bytes = tape::read_file(path.empty() ? "-" : path);
-    } catch (const tape::Error& e) {
-        fail(name, e);
-    }
-    bool image = source.kind == "image" || !source.format.empty();
-    if (source.kind == "auto" && !image) {
-        const tape::ImageFormat* by_ext = path == "-" ? nullptr : tape::image_format_for_path(path);
-        auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
-        image = (by_ext && by_ext->id == "raw") || tape::find_image_format("holes")->match(prefix) >= 60 ||
-                !tape::is_program_text(bytes);
-    }
-    if (!image) {
+    in.name = display_name(path);
+    std::vector<std::uint8_t> bytes = read_input(path);
+    if (!is_image_input(path, bytes, source.format, source.kind)) {
         in.tape = tape::load(std::string(bytes.begin(), bytes.end()));
         return in;
     }
-    TapeInput t;
-    t.name = path.empty() ? "-" : path;
-    t.format = source.format.empty() ? nullptr : tape::find_image_format(source.format);
-    if (!t.format && path != "-") t.format = tape::image_format_for_path(path);
-    if (!t.format || t.format->id == "holes") {
-        auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
-        t.format = &tape::detect_image_format(prefix);
-    }
-    try {
-        t.frames = t.format->read(bytes);
-    } catch (const tape::Error& e) {
-        fail(name, e);
-    }
+    TapeInput t = tape_from_bytes(path, bytes, source.format);
     tape::DecodeOptions o = resolve_code(source.choice, t);
     o.positions = true;
     tape::DecodeResult r = tape::decode(t.frames, o);
-    for (const auto& d : r.diagnostics) say(name, where_text(d.where, t.raw()) + ": " + d.message);
+    for (const auto& d : r.diagnostics) say(in.name, where_text(d.where, t.raw()) + ": " + d.message);
     if (!r.ok()) throw Exit{bad_data};
     in.from_tape = true;
     in.tape = tape::load(std::move(r.text), std::move(r.frame_of));

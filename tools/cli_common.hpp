@@ -53,6 +53,14 @@ struct TapeInput {
 };
 /// Reads IN ("-" = stdin) as an image: --format, else by extension, else by content.
 TapeInput read_tape(const std::string& path, const std::string& format_id);
+/// The same from bytes already read.
+TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id);
+/// The whole of IN ("-" or empty = stdin); failure ends the program.
+std::vector<std::uint8_t> read_input(const std::string& path);
+/// Whether IN is a tape image rather than a text program: --input, --format, a raw image's extension,
+/// a holes picture, or anything that is not clean UTF-8 text.
+bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id,
+                    const std::string& kind);
 std::string display_name(const std::string& path);
 
 /// The code chosen for a decoding run: --code auto detects and explains itself with -v.

@@ -7,7 +7,6 @@
 #include <iostream>
 
 #include "tape/file_io.hpp"
-#include "tape/utf8_text.hpp"
 
 namespace cli {
 
@@ -76,20 +75,10 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
 
 std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
     std::string name = display_name(path);
-    std::vector<std::uint8_t> bytes;
-    try {
-        bytes = tape::read_file(path);
-    } catch (const tape::Error& e) {
-        fail(name, e);
-    }
-    bool image = p.kind == "image" || !p.format.empty();
-    if (p.kind == "auto" && !image) {
-        const tape::ImageFormat* by_ext = path == "-" ? nullptr : tape::image_format_for_path(path);
-        auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
-        image = (by_ext && by_ext->id == "raw") || tape::find_image_format("holes")->match(prefix) >= 60 || !tape::is_program_text(bytes);
-    }
+    std::vector<std::uint8_t> bytes = read_input(path);
+    bool image = is_image_input(path, bytes, p.format, p.kind);
     if (image) {
-        TapeInput in = read_tape(path, p.format);
+        TapeInput in = tape_from_bytes(path, bytes, p.format);
         std::vector<tape::Frame> frames = std::move(in.frames);
         if (p.leader_given || p.trailer_given) {
             std::size_t first = 0, last = frames.size();
@@ -121,6 +110,25 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
     } catch (const tape::Error& e) {
         fail(name, e);
     }
+}
+
+void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o, const std::string& verb,
+                  bool progress_forced) {
+    o.stop = &interrupted();
+    ProgressLine progress(verb, progress_forced);
+    o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
+    tape::SendResult r;
+    try {
+        r = tape::send_frames(line, frames, o);
+    } catch (const tape::Error& e) {
+        fail("", e);
+    }
+    if (r.stopped) {
+        say(line.name(), "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
+        throw Exit{interrupted_status};
+    }
+    if (globals().verbosity > 0)
+        say(line.name(), verb + " " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
 }
 
 std::uint8_t parse_byte(const std::string& text, const std::string& option) {

@@ -53,6 +53,11 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p);
 /// or a text program encoded with the profile.
 std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p);
 
+/// Sends frames on line (feed, punch): Ctrl-C and a progress line wired here; a device failure ends
+/// the program with status 3, Ctrl-C with 130; -v reports the count.
+void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o, const std::string& verb,
+                  bool progress_forced);
+
 /// "--xon 0x11" style byte options.
 std::uint8_t parse_byte(const std::string& text, const std::string& option);
 

@@ -27,21 +27,7 @@ void run(const FeedArgs& a) {
     o.xon_timeout = std::chrono::milliseconds(static_cast<long long>(a.xon_timeout * 1000));
     o.xon = parse_byte(a.xon, "--xon");
     o.xoff = parse_byte(a.xoff, "--xoff");
-    o.stop = &interrupted();
-    ProgressLine progress("sent", a.progress);
-    o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
-    tape::SendResult r;
-    try {
-        r = tape::send_frames(*line, frames, o);
-    } catch (const tape::Error& e) {
-        fail("", e);
-    }
-    if (r.stopped) {
-        say(a.device, "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
-        throw Exit{interrupted_status};
-    }
-    if (globals().verbosity > 0)
-        say(a.device, "sent " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
+    send_or_fail(*line, frames, o, "sent", a.progress);
 }
 
 }  // namespace

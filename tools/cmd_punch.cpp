@@ -17,20 +17,7 @@ void run(const PunchArgs& a) {
     auto line = open_device_or_fail(a.device, tape::DeviceUse::write, a.force);
     tape::SendOptions o;
     o.rate = a.rate;
-    o.stop = &interrupted();
-    ProgressLine progress("punched", a.progress);
-    o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
-    tape::SendResult r;
-    try {
-        r = tape::send_frames(*line, in.frames, o);
-    } catch (const tape::Error& e) {
-        fail("", e);
-    }
-    if (r.stopped) {
-        say(a.device, "stopped after " + std::to_string(r.sent) + " of " + std::to_string(in.frames.size()) + " frames");
-        throw Exit{interrupted_status};
-    }
-    if (globals().verbosity > 0) say(a.device, "punched " + std::to_string(r.sent) + " frames");
+    send_or_fail(*line, in.frames, o, "punched", a.progress);
 }
 
 }  // namespace
