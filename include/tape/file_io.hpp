@@ -10,6 +10,9 @@
 
 namespace tape {
 
+struct ImageFormat;
+class FrameCode;
+
 /// The whole file, or standard input for "-". Throws Error(Errc::io) with the system's reason.
 std::vector<std::uint8_t> read_file(const std::string& path);
 
@@ -23,7 +26,7 @@ void write_file_atomic(const std::string& path, std::string_view data, bool over
 class FrameFileWriter {
 public:
     /// Creates path (refuses an existing one unless replace: Error(Errc::usage)); format raw or holes.
-    FrameFileWriter(const std::string& path, const struct ImageFormat& format, const class FrameCode* annotate, bool replace);
+    FrameFileWriter(const std::string& path, const ImageFormat& format, const FrameCode* annotate, bool replace);
     ~FrameFileWriter();
     FrameFileWriter(const FrameFileWriter&) = delete;
     FrameFileWriter& operator=(const FrameFileWriter&) = delete;
@@ -35,8 +38,8 @@ public:
 
 private:
     std::string path_;
-    const struct ImageFormat& format_;
-    const class FrameCode* annotate_;
+    const ImageFormat& format_;
+    const FrameCode* annotate_;
     int fd_ = -1;
     std::uint64_t frames_ = 0;
     std::chrono::steady_clock::time_point last_sync_;
