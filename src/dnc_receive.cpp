@@ -18,7 +18,7 @@ bool is_flow_code(Frame f, const FrameCode& code) {
 
 ReceiveResult receive_frames(Transport& line, const ReceiveOptions& o, Clock& clock) {
     ReceiveResult r;
-    FrameCode code = FrameCode::make(o.code, Parity::even);
+    FrameCode code = FrameCode::make(o.code, Parity::even, o.eia_table);
     ProgramEndWatch watch;
     auto last_frame = clock.now(), start = clock.now(), last_report = start;
     std::vector<Frame> kept;

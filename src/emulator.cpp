@@ -15,7 +15,7 @@ bool is_char(const FrameCode& code, Frame f, char c) { return code.kind(f) == Fr
 class Emulator {
 public:
     Emulator(Transport& line, std::span<const Frame> tape, const EmulatorOptions& o, Clock& clock)
-        : line_(line), tape_(tape), o_(o), clock_(clock), code_(FrameCode::make(o.code, Parity::even)),
+        : line_(line), tape_(tape), o_(o), clock_(clock), code_(FrameCode::make(o.code, Parity::even, o.eia_table)),
           flow_(o.flow.value_or(line.flow())) {}
 
     EmulatorResult run() {

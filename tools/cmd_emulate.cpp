@@ -19,6 +19,7 @@ void run(const EmulateArgs& a) {
     o.rate = a.rate;
     o.skip_leader = !a.send_leader;
     o.code = *tape::parse_code(a.code);
+    o.eia_table = globals().table();
     if (a.flow == "rtscts") o.flow = tape::Flow::rtscts;
     else if (a.flow == "xonxoff") o.flow = tape::Flow::xonxoff;
     o.search = parse_byte(a.search, "--search-char");

@@ -31,7 +31,7 @@ int receive_into_image(const std::string& device, const std::string& output, con
     auto line = open_device_or_fail(device, tape::DeviceUse::read);
     const tape::ImageFormat* format = format_id.empty() ? tape::image_format_for_path(output) : tape::find_image_format(format_id);
     if (!format) format = tape::find_image_format("raw");
-    tape::FrameCode annotate = tape::FrameCode::make(o.code, tape::Parity::even);
+    tape::FrameCode annotate = tape::FrameCode::make(o.code, tape::Parity::even, o.eia_table);
     std::unique_ptr<tape::FrameFileWriter> out;
     try {
         out = std::make_unique<tape::FrameFileWriter>(output, *format, &annotate, force);
@@ -68,6 +68,7 @@ void run(const ReceiveArgs& a) {
     o.idle_timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout * 1000));
     o.until_program_end = !a.whole;
     o.code = *tape::parse_code(a.code);
+    o.eia_table = globals().table();
     o.drop_flow_codes = !a.keep_flow_codes;
     int status = receive_into_image(a.device, a.output, a.format, a.force, o, a.progress, "received");
     if (status != ok) throw Exit{status};

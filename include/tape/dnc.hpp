@@ -53,6 +53,7 @@ struct ReceiveOptions {
     std::chrono::milliseconds idle_timeout{0};  ///< end after this long without a frame (0: never)
     bool until_program_end = false;             ///< end at the '%' after M02/M30
     Code code = Code::iso;                      ///< to recognise M02/M30 and '%'
+    const CodeTable* eia_table = nullptr;       ///< a corrected EIA table; nullptr = built-in
     bool drop_flow_codes = false;               ///< DC1-DC4 are line control, not tape: not kept
     const std::atomic<bool>* stop = nullptr;
     std::function<void(std::span<const Frame>)> sink{};  ///< every frame, as it arrives
@@ -77,6 +78,7 @@ struct EmulatorOptions {
     std::uint8_t search = ':';                ///< then optional digits: search forward to that main block
     std::uint8_t rewind = '%';                ///< rewind to the '%' stop before the current position
     Code code = Code::iso;
+    const CodeTable* eia_table = nullptr;     ///< a corrected EIA table; nullptr = built-in
     std::optional<Flow> flow{};               ///< rtscts: CTS starts and stops the reader instead of DC1/DC3
     const std::atomic<bool>* stop = nullptr;  ///< ends the emulation
     std::function<void(std::uint64_t frame, const std::string& what)> log{};  ///< tape position events
