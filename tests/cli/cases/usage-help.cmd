@@ -1,1 +1,1 @@
-$TAPE --help | head -3; $TAPE decode --help | grep -c -- --keep-going
+$TAPE --help | sed -n 1,3p; $TAPE decode --help | grep -c -- --keep-going
