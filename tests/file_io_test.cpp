@@ -1,11 +1,7 @@
 // Outputs are written whole or not at all, and never replace a file without permission.
 #include <gtest/gtest.h>
 
-#include <dirent.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cstdlib>
+#include <filesystem>
 
 #include "tape/error.hpp"
 #include "tape/file_io.hpp"
@@ -14,21 +10,11 @@
 using namespace tape;
 
 namespace {
-struct TempDir {
-    std::string path;
-    TempDir() {
-        char tmpl[] = "/tmp/tape-test-XXXXXX";
-        path = ::mkdtemp(tmpl);
-    }
-    ~TempDir() { std::system(("rm -rf '" + path + "'").c_str()); }
-    int entries() const {
-        int n = 0;
-        DIR* d = ::opendir(path.c_str());
-        while (auto* e = ::readdir(d)) n += e->d_name[0] != '.';
-        ::closedir(d);
-        return n;
-    }
-};
+int entries(const TempDir& dir) {
+    int n = 0;
+    for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path)) ++n;
+    return n;
+}
 }  // namespace
 
 TEST(FileIo, WritesAndReadsBack) {
@@ -36,7 +22,7 @@ TEST(FileIo, WritesAndReadsBack) {
     std::string p = dir.path + "/out.ptp";
     write_file_atomic(p, std::string("\xA5\x0A", 2), false);
     EXPECT_EQ(read_file(p), (std::vector<std::uint8_t>{0xA5, 0x0A}));
-    EXPECT_EQ(dir.entries(), 1);  // no temporary left behind
+    EXPECT_EQ(entries(dir), 1);  // no temporary left behind
 }
 
 TEST(FileIo, RefusesToReplaceWithoutOverwrite) {
@@ -52,7 +38,7 @@ TEST(FileIo, RefusesToReplaceWithoutOverwrite) {
     EXPECT_EQ(read_text(p), "old");
     write_file_atomic(p, "new", true);
     EXPECT_EQ(read_text(p), "new");
-    EXPECT_EQ(dir.entries(), 1);
+    EXPECT_EQ(entries(dir), 1);
 }
 
 TEST(FileIo, FailuresAreIoErrorsAndLeaveNothing) {
@@ -70,5 +56,5 @@ TEST(FileIo, FailuresAreIoErrorsAndLeaveNothing) {
         EXPECT_EQ(e.code(), Errc::io);
         EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos);
     }
-    EXPECT_EQ(dir.entries(), 0);
+    EXPECT_EQ(entries(dir), 0);
 }
