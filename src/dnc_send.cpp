@@ -1,5 +1,4 @@
 // Sending frames over a line: pacing, XON/XOFF or RTS/CTS, exactly once each, in order.
-#include <cmath>
 
 #include "tape/dnc.hpp"
 #include "tape/error.hpp"

@@ -1,6 +1,5 @@
 // A tape reader a controller pulls from: start/stop on DC1/DC3 (or CTS), paced at the reader's speed,
 // rewinding to '%' at the end of a program, searching ':' main blocks on request.
-#include <cmath>
 
 #include "tape/dnc.hpp"
 #include "tape/error.hpp"
