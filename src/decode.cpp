@@ -56,26 +56,6 @@ std::size_t table_run(const FrameCode& code, const Frame* in, std::size_t n, cha
 // Stage two, only when needed: КОИ-7 shifts to UTF-8 and bad-frame sentinels to the marker.
 constexpr char bad_sentinel = '\x80';
 
-void finish_text(DecodeResult& r, Charset charset) {
-    std::string out;
-    std::vector<std::uint64_t> pos;
-    out.reserve(r.text.size() + r.text.size() / 8);
-    bool positions = !r.frame_of.empty();
-    bool cyrillic = false;
-    for (std::size_t i = 0; i < r.text.size(); ++i) {
-        auto c = static_cast<unsigned char>(r.text[i]);
-        std::string_view piece(&r.text[i], 1);
-        if (c == static_cast<unsigned char>(bad_sentinel)) piece = bad_frame_marker;
-        else if (charset == Charset::koi7 && c == 0x0E) { cyrillic = true; continue; }
-        else if (charset == Charset::koi7 && c == 0x0F) { cyrillic = false; continue; }
-        else if (cyrillic && !koi7_cyrillic(c).empty()) piece = koi7_cyrillic(c);
-        out += piece;
-        if (positions) pos.insert(pos.end(), piece.size(), r.frame_of[i]);
-    }
-    r.text = std::move(out);
-    if (positions) r.frame_of = std::move(pos);
-}
-
 }  // namespace
 
 Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t index) {
@@ -91,40 +71,105 @@ std::size_t decode_run(const FrameCode& code, std::span<const Frame> frames, cha
     return table_run(code, frames.data(), frames.size(), out, written);
 }
 
-DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options) {
-    FrameCode code = FrameCode::make(options.code, options.parity, options.eia_table);
-    DecodeResult r;
-    r.text.resize(frames.size());
-    std::size_t w = 0;
-    if (options.positions) {
-        r.frame_of.resize(frames.size());
+Decoder::Decoder(const DecodeOptions& options)
+    : options_(options), code_(FrameCode::make(options.code, options.parity, options.eia_table)) {}
+
+std::map<Errc, std::uint64_t> Decoder::unlisted() const {
+    std::map<Errc, std::uint64_t> m;
+    std::uint64_t limit = options_.max_diagnostics;
+    if (limit == 0) return m;
+    if (parity_seen_ > limit) m[Errc::parity] = parity_seen_ - limit;
+    if (other_seen_ > limit) m[Errc::not_in_code] = other_seen_ - limit;
+    return m;
+}
+
+// A tape of noise has a bad frame in every other frame: past the limit they are only counted, so that
+// messages cannot fill memory.
+void Decoder::note_bad(Frame f, std::uint64_t index, DecodeResult& out) {
+    std::uint64_t& seen = code_.kind(f) == FrameKind::parity_error ? parity_seen_ : other_seen_;
+    ++seen;
+    if (options_.max_diagnostics == 0 || seen <= options_.max_diagnostics)
+        out.diagnostics.push_back(bad_frame_diagnostic(code_, f, index));
+}
+
+void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from) {
+    std::string_view added(out.text.data() + from, out.text.size() - from);
+    bool positions = options_.positions;
+    bool needed = options_.charset == Charset::koi7 || added.find(bad_sentinel) != std::string_view::npos;
+    if (!needed) return;
+    std::string text;
+    std::vector<std::uint64_t> pos;
+    text.reserve(added.size() + added.size() / 8);
+    for (std::size_t i = 0; i < added.size(); ++i) {
+        auto c = static_cast<unsigned char>(added[i]);
+        std::string_view piece(&added[i], 1);
+        if (c == static_cast<unsigned char>(bad_sentinel)) piece = bad_frame_marker;
+        else if (options_.charset == Charset::koi7 && c == 0x0E) { cyrillic_ = true; continue; }
+        else if (options_.charset == Charset::koi7 && c == 0x0F) { cyrillic_ = false; continue; }
+        else if (cyrillic_ && !koi7_cyrillic(c).empty()) piece = koi7_cyrillic(c);
+        text += piece;
+        if (positions) pos.insert(pos.end(), piece.size(), out.frame_of[positions_from + i]);
+    }
+    out.text.resize(from);
+    out.text += text;
+    if (positions) {
+        out.frame_of.resize(positions_from);
+        out.frame_of.insert(out.frame_of.end(), pos.begin(), pos.end());
+    }
+}
+
+bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
+    if (stopped_) return false;
+    std::size_t from = out.text.size(), positions_from = out.frame_of.size();
+    std::size_t w = from;
+    out.text.resize(from + frames.size());
+    std::uint64_t base = next_index_;
+    if (options_.positions) {
+        out.frame_of.resize(positions_from + frames.size());
+        std::size_t p = positions_from;
         for (std::size_t i = 0; i < frames.size(); ++i) {
             Frame f = frames[i];
-            FrameKind k = code.kind(f);
+            FrameKind k = code_.kind(f);
             if (k == FrameKind::blank || k == FrameKind::rubout) continue;
             if (k != FrameKind::character) {
-                r.diagnostics.push_back(bad_frame_diagnostic(code, f, i));
-                if (!options.keep_going) { r.complete = false; break; }
+                note_bad(f, base + i, out);
+                if (!options_.keep_going) {
+                    stopped_ = true;
+                    break;
+                }
             }
-            r.text[w] = k == FrameKind::character ? code.character(f) : bad_sentinel;
-            r.frame_of[w++] = i;
+            out.text[w++] = k == FrameKind::character ? code_.character(f) : bad_sentinel;
+            out.frame_of[p++] = base + i;
         }
-        r.frame_of.resize(w);
+        out.frame_of.resize(p);
     } else {
         std::size_t i = 0;
         while (i < frames.size()) {
             std::size_t got = 0;
-            std::size_t stop = i + decode_run(code, frames.subspan(i), r.text.data() + w, &got);
+            std::size_t stop = i + decode_run(code_, frames.subspan(i), out.text.data() + w, &got);
             w += got;
             if (stop == frames.size()) break;
-            r.diagnostics.push_back(bad_frame_diagnostic(code, frames[stop], stop));
-            if (!options.keep_going) { r.complete = false; break; }
-            r.text[w++] = bad_sentinel;
+            note_bad(frames[stop], base + stop, out);
+            if (!options_.keep_going) {
+                stopped_ = true;
+                break;
+            }
+            out.text[w++] = bad_sentinel;
             i = stop + 1;
         }
     }
-    r.text.resize(w);
-    if (options.charset == Charset::koi7 || !r.diagnostics.empty()) finish_text(r, options.charset);
+    out.text.resize(w);
+    next_index_ += frames.size();
+    if (stopped_) out.complete = false;
+    finish_text(out, from, positions_from);
+    return !stopped_;
+}
+
+DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options) {
+    Decoder decoder(options);
+    DecodeResult r;
+    decoder.feed(frames, r);
+    r.unlisted = decoder.unlisted();
     return r;
 }
 

@@ -6,7 +6,7 @@ namespace tape {
 namespace {
 
 const DeviceBackend backends[] = {
-    {"file", "a tape image file: reads its frames, or writes raw frames to a new file", "file:PATH", open_file_device},
+    {"file", "a tape image file: reads its frames, or writes a new image", "file:PATH", open_file_device},
     {"serial", "a serial port or pseudo-terminal, raw mode",
      "serial:PATH?baud=9600&bits=8&parity=none&stop=1&flow=xonxoff|rtscts|none", open_serial_device},
 };

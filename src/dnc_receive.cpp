@@ -8,75 +8,145 @@ namespace {
 
 using namespace std::chrono_literals;
 
+// DC1-DC4 come from the other side's line control, with whatever it does to bit 8: an ISO control
+// on 8N1 may send DC3 as 0x13 (no parity bit) or 0x93 (even parity). No other ISO frame has those
+// seven bits, so both are dropped. On EIA tape 0x11-0x14 are characters ('3' is 0x13): there only
+// frames the table reads as DC1-DC4 are dropped.
 bool is_flow_code(Frame f, const FrameCode& code) {
+    if (code.code() == Code::iso) return (f & 0x7F) >= dc1 && (f & 0x7F) <= dc4;
     if (code.kind(f) != FrameKind::character) return false;
     char c = code.character(f);
-    return c >= 0x11 && c <= 0x14;
+    return c >= dc1 && c <= dc4;
 }
+
+// A 7-bit line's UART checked and removed the parity bit: the frame is punched back as the encoder
+// punches that character under the tape's rule (mark: track 8 always; space, none: never; even, odd:
+// by the count of holes), blank tape staying blank under every rule. Only ISO comes over such a line.
+Frame with_track_8(std::uint8_t b, const FrameCode& iso) { return iso.frame_for(b & 0x7F).value_or(b & 0x7F); }
+
+// RTS says "we accept data" on a line with modem lines: up while receiving, down however the run ends.
+class RtsWhileReceiving {
+public:
+    explicit RtsWhileReceiving(Transport& line) : modem_(line.modem()) {
+        if (modem_) modem_->set_rts(true);
+    }
+    ~RtsWhileReceiving() { drop(); }
+    RtsWhileReceiving(const RtsWhileReceiving&) = delete;
+    RtsWhileReceiving& operator=(const RtsWhileReceiving&) = delete;
+
+    void drop() noexcept {
+        if (!modem_) return;
+        try {
+            modem_->set_rts(false);
+        } catch (const Error&) {  // a line already gone has no RTS to drop
+        }
+        modem_ = nullptr;
+    }
+
+private:
+    ModemLines* modem_;
+};
+
+class Receiver {
+public:
+    Receiver(Transport& line, const ReceiveOptions& o, Clock& clock)
+        : line_(line),
+          o_(o),
+          clock_(clock),
+          code_(FrameCode::make(o.code, o.parity, o.eia_table)),
+          seven_bit_(line.seven_bit()),
+          rts_(line) {}
+
+    ReceiveResult run() {
+        auto last_frame = clock_.now(), start = clock_.now(), last_report = start;
+        for (;;) {
+            if (o_.stop && o_.stop->load()) {
+                finish_after_stop();
+                r_.end = ReceiveResult::End::stopped;
+                return r_;
+            }
+            ReadResult got = line_.read(buf_, 100ms);
+            if (got.count) {
+                last_frame = clock_.now();
+                bool done = take(got.count);
+                if (o_.progress && clock_.now() - last_report > 250ms) {
+                    last_report = clock_.now();
+                    double s = std::chrono::duration<double>(clock_.now() - start).count();
+                    o_.progress(LineProgress{r_.frames, 0, 0, false, s > 0 ? static_cast<double>(r_.frames) / s : 0});
+                }
+                if (done) {
+                    r_.end = ReceiveResult::End::program_end;
+                    return r_;
+                }
+            }
+            if (got.end) {
+                r_.end = ReceiveResult::End::hangup;
+                return r_;
+            }
+            // Compared in milliseconds: any idle_timeout fits, where nanoseconds could overflow.
+            if (o_.idle_timeout.count() > 0 &&
+                std::chrono::duration_cast<std::chrono::milliseconds>(clock_.now() - last_frame) >= o_.idle_timeout) {
+                r_.end = ReceiveResult::End::idle;
+                return r_;
+            }
+        }
+    }
+
+private:
+    Transport& line_;
+    const ReceiveOptions& o_;
+    Clock& clock_;
+    FrameCode code_;
+    bool seven_bit_;
+    RtsWhileReceiving rts_;
+    ProgramEndWatch watch_;
+    ReceiveResult r_;
+    std::vector<Frame> kept_;
+    std::uint8_t buf_[512];
+
+    // Keeps the frames of one read, by the same rules before and after a stop. True at the program's end.
+    bool take(std::size_t count) {
+        kept_.clear();
+        bool done = false;
+        for (std::size_t i = 0; i < count && !done; ++i) {
+            Frame f = seven_bit_ ? with_track_8(buf_[i], code_) : buf_[i];
+            if (o_.drop_flow_codes && is_flow_code(f, code_)) continue;
+            kept_.push_back(f);
+            if (o_.until_program_end && code_.kind(f) == FrameKind::character &&
+                watch_.feed(code_.character(f)) == ProgramEndWatch::Event::next_percent)
+                done = true;
+        }
+        if (o_.sink && !kept_.empty()) o_.sink(kept_);
+        r_.frames += kept_.size();
+        return done;
+    }
+
+    // Asks the other side to stop, in band and by RTS, and still takes what it sends on in the next moments.
+    void finish_after_stop() {
+        rts_.drop();
+        std::uint8_t xoff = dc3;
+        try {
+            line_.write({&xoff, 1});
+        } catch (const Error&) {  // a file, or a line already gone: nothing to ask
+        }
+        auto grace_end = clock_.now() + 300ms;
+        while (clock_.now() < grace_end) {
+            ReadResult got = line_.read(buf_, 50ms);
+            if (got.count && take(got.count)) break;
+            if (got.end) break;
+        }
+    }
+};
 
 }  // namespace
 
 ReceiveResult receive_frames(Transport& line, const ReceiveOptions& o, Clock& clock) {
-    ReceiveResult r;
-    FrameCode code = FrameCode::make(o.code, Parity::even, o.eia_table);
-    ProgramEndWatch watch;
-    auto last_frame = clock.now(), start = clock.now(), last_report = start;
-    std::vector<Frame> kept;
-    std::uint8_t buf[512];
-    for (;;) {
-        if (o.stop && o.stop->load()) {
-            // Ask the other side to stop, and still take what it sends on in the next moments.
-            std::uint8_t xoff = dc3;
-            try {
-                line.write({&xoff, 1});
-            } catch (const Error&) {
-            }
-            auto grace_end = clock.now() + 300ms;
-            while (clock.now() < grace_end) {
-                ReadResult got = line.read(buf, 50ms);
-                if (got.count) {
-                    if (o.sink) o.sink(std::span<const Frame>(buf, got.count));
-                    r.frames += got.count;
-                }
-                if (got.end) break;
-            }
-            r.end = ReceiveResult::End::stopped;
-            return r;
-        }
-        ReadResult got = line.read(buf, 100ms);
-        if (got.count) {
-            last_frame = clock.now();
-            kept.clear();
-            bool done = false;
-            for (std::size_t i = 0; i < got.count && !done; ++i) {
-                Frame f = buf[i];
-                if (o.drop_flow_codes && is_flow_code(f, code)) continue;
-                kept.push_back(f);
-                if (o.until_program_end && code.kind(f) == FrameKind::character &&
-                    watch.feed(code.character(f)) == ProgramEndWatch::Event::next_percent)
-                    done = true;
-            }
-            if (o.sink && !kept.empty()) o.sink(kept);
-            r.frames += kept.size();
-            if (o.progress && clock.now() - last_report > 250ms) {
-                last_report = clock.now();
-                double s = std::chrono::duration<double>(clock.now() - start).count();
-                o.progress(LineProgress{r.frames, 0, 0, false, s > 0 ? static_cast<double>(r.frames) / s : 0});
-            }
-            if (done) {
-                r.end = ReceiveResult::End::program_end;
-                return r;
-            }
-        }
-        if (got.end) {
-            r.end = ReceiveResult::End::hangup;
-            return r;
-        }
-        if (o.idle_timeout.count() > 0 && clock.now() - last_frame >= o.idle_timeout) {
-            r.end = ReceiveResult::End::idle;
-            return r;
-        }
-    }
+    if (line.seven_bit() && o.code != Code::iso)
+        throw Error(
+            Errc::usage,
+            line.name() +
+                ": a 7-bit line carries ISO tapes only (the UART's parity stands for track 8): use bits=8 for EIA");
+    return Receiver(line, o, clock).run();
 }
 
 }  // namespace tape

@@ -1,5 +1,8 @@
 // Sending frames over a line: pacing, XON/XOFF or RTS/CTS, exactly once each, in order.
 
+#include <cmath>
+#include <cstdio>
+
 #include "tape/dnc.hpp"
 #include "tape/error.hpp"
 
@@ -16,8 +19,7 @@ public:
     SendResult run(std::span<const Frame> frames) {
         SendResult r;
         double rate = o_.rate > 0 ? o_.rate : line_.line_rate();
-        auto period = rate > 0 ? std::chrono::duration_cast<Clock::time_point::duration>(std::chrono::duration<double>(1.0 / rate))
-                               : Clock::time_point::duration::zero();
+        auto period = rate > 0 ? frame_period(rate) : Clock::time_point::duration::zero();
         if (o_.wait_xon) wait_for_xon();
         auto start = clock_.now(), next = start, last_report = start;
         for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -81,10 +83,12 @@ private:
     }
 
     void wait_for_xon() {
-        auto deadline = clock_.now() + o_.xon_timeout;
+        auto start = clock_.now();
         while (!xonxoff_.seen_xon() && !stopped()) {
             take_input(100ms, 0);
-            if (o_.xon_timeout.count() > 0 && clock_.now() >= deadline && !xonxoff_.seen_xon())
+            // Compared in milliseconds: any xon_timeout fits, where a deadline in nanoseconds could overflow.
+            auto waited = std::chrono::duration_cast<std::chrono::milliseconds>(clock_.now() - start);
+            if (o_.xon_timeout.count() > 0 && waited >= o_.xon_timeout && !xonxoff_.seen_xon())
                 throw Error(Errc::io, line_.name() + ": no DC1 (XON) from the other side within " +
                                           std::to_string(o_.xon_timeout.count() / 1000.0).substr(0, 4) + " s");
         }
@@ -100,7 +104,23 @@ private:
 
 }  // namespace
 
+std::chrono::steady_clock::duration frame_period(double rate) {
+    if (!std::isfinite(rate) || !(rate >= min_frame_rate)) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%g", rate);
+        throw Error(Errc::usage,
+                    "the rate must be a number of frames per second from one a day up, not " + std::string(text));
+    }
+    return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(1.0 / rate));
+}
+
 SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock) {
+    if (options.rate != 0) frame_period(options.rate);  // refused here, before anything is sent
+    Flow flow = options.flow.value_or(line.flow());
+    if (flow == Flow::rtscts && !line.modem())
+        throw Error(Errc::usage, line.name() + ": flow=rtscts, but this device has no modem lines");
+    if ((flow == Flow::xonxoff || options.wait_xon) && (options.xon & 0x7F) == (options.xoff & 0x7F))
+        throw Error(Errc::usage, "XON and XOFF are the same character");
     // A 7-bit line's UART makes even parity itself: it can carry only ISO frames whose track 8 is just that.
     if (line.seven_bit())
         for (std::size_t i = 0; i < frames.size(); ++i)

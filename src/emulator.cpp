@@ -1,6 +1,8 @@
 // A tape reader a controller pulls from: start/stop on DC1/DC3 (or CTS), paced at the reader's speed,
 // rewinding to '%' at the end of a program, searching ':' main blocks on request.
 
+#include <algorithm>
+
 #include "tape/dnc.hpp"
 #include "tape/error.hpp"
 
@@ -14,33 +16,54 @@ bool is_char(const FrameCode& code, Frame f, char c) { return code.kind(f) == Fr
 class Emulator {
 public:
     Emulator(Transport& line, std::span<const Frame> tape, const EmulatorOptions& o, Clock& clock)
-        : line_(line), tape_(tape), o_(o), clock_(clock), code_(FrameCode::make(o.code, Parity::even, o.eia_table)),
+        : line_(line),
+          tape_(tape),
+          o_(o),
+          clock_(clock),
+          code_(FrameCode::make(o.code, o.parity, o.eia_table)),
           flow_(o.flow.value_or(line.flow())) {}
 
     EmulatorResult run() {
+        auto period = frame_period(o_.rate);
+        if (flow_ == Flow::rtscts && !line_.modem())
+            throw Error(Errc::usage, line_.name() + ": flow=rtscts, but this device has no modem lines");
         if (o_.skip_leader)
             while (pos_ < tape_.size() && tape_[pos_] == blank_frame) ++pos_;
         log("loaded, waiting for " + std::string(flow_ == Flow::rtscts ? "CTS" : "DC1"));
-        auto period = std::chrono::duration_cast<Clock::time_point::duration>(std::chrono::duration<double>(1.0 / o_.rate));
-        Clock::time_point next = clock_.now();
         while (!(o_.stop && o_.stop->load())) {
-            if (!take_input(running_ ? 0ms : 20ms)) break;  // hung up
-            if (flow_ == Flow::rtscts && line_.modem()) set_running(line_.modem()->cts());
-            if (!running_) {
-                next = clock_.now();
-                continue;
+            // Listen while the next frame's time comes (up to 20 ms at a time, so that a stop is seen);
+            // its last fraction of a millisecond is slept, then the line looked at once more.
+            std::chrono::milliseconds wait = 20ms;
+            if (running_ && pos_ < tape_.size()) {
+                auto left = next_ - clock_.now();
+                if (left < 1ms) {
+                    clock_.sleep_until(next_);
+                    wait = 0ms;
+                } else {
+                    wait =
+                        std::min<std::chrono::milliseconds>(std::chrono::floor<std::chrono::milliseconds>(left), 20ms);
+                }
             }
+            take_input(wait);
+            if (flow_ == Flow::rtscts) set_running(line_.modem()->cts());
+            if (!running_) continue;
             if (pos_ >= tape_.size()) {
                 set_running(false);
                 log("end of tape");
                 continue;
             }
-            clock_.sleep_until(next);
-            next += period;
-            if (clock_.now() > next + 10 * period) next = clock_.now();  // late: no burst to catch up
+            if (clock_.now() < next_) continue;
+            // The line was looked at just now, after the wait: once DC3 (or CTS dropped) has come, no
+            // frame starts.
             std::uint8_t byte = line_.seven_bit() ? tape_[pos_] & 0x7F : tape_[pos_];
-            line_.write({&byte, 1});
+            try {
+                line_.write({&byte, 1});
+            } catch (const Error& e) {
+                throw Error(e.code(), std::string(e.what()) + "; " + std::to_string(r_.frames_sent) + " frame(s) sent");
+            }
             ++r_.frames_sent;
+            next_ += period;
+            if (clock_.now() > next_ + 10 * period) next_ = clock_.now();  // late: no burst to catch up
             Frame sent = tape_[pos_++];
             if (code_.kind(sent) == FrameKind::character && watch_.feed(code_.character(sent)) == ProgramEndWatch::Event::program_end) {
                 std::size_t stop = seek_rewind_stop(tape_, pos_, code_);
@@ -61,6 +84,7 @@ private:
     Flow flow_;
     std::size_t pos_ = 0;
     bool running_ = false;
+    Clock::time_point next_{};  // when the next frame is due while running
     ProgramEndWatch watch_;
     EmulatorResult r_;
     std::optional<std::string> search_digits_;  // after the search character, until a non-digit
@@ -72,6 +96,7 @@ private:
     void set_running(bool on) {
         if (on == running_) return;
         running_ = on;
+        if (on) next_ = clock_.now();  // a started reader sends its first frame at once
         ++(on ? r_.starts : r_.stops);
         log(on ? "start" : "stop");
     }
@@ -98,8 +123,8 @@ private:
         log("search: at main block" + (number ? " :" + std::to_string(*number) : std::string()));
     }
 
-    // Commands from the controller. Returns false when the line hung up.
-    bool take_input(std::chrono::milliseconds wait) {
+    // Commands from the controller. Throws Error(Errc::io) when the line hung up.
+    void take_input(std::chrono::milliseconds wait) {
         std::uint8_t buf[64];
         ReadResult got = line_.read(buf, wait);
         for (std::size_t i = 0; i < got.count; ++i) {
@@ -111,17 +136,23 @@ private:
                 }
                 finish_search();
             }
-            if (flow_ != Flow::rtscts && b == o_.start) set_running(true);
-            else if (flow_ != Flow::rtscts && b == o_.stop_code) set_running(false);
-            else if (b == o_.search) search_digits_ = std::string();
+            if (flow_ != Flow::rtscts && b == (o_.start & 0x7F))
+                set_running(true);
+            else if (flow_ != Flow::rtscts && b == (o_.stop_code & 0x7F))
+                set_running(false);
+            else if (b == (o_.search & 0x7F))
+                search_digits_ = std::string();
             else if (b == (o_.rewind & 0x7F)) {
                 set_running(false);
                 rewind_to(seek_rewind_stop(tape_, pos_, code_));
             }
         }
         if (search_digits_ && got.count == 0) finish_search();
-        if (got.end) log("the controller hung up");
-        return !got.end;
+        if (got.end) {
+            log("the controller hung up");
+            throw Error(Errc::io, line_.name() + ": the other side hung up; " + std::to_string(r_.frames_sent) +
+                                      " frame(s) sent");
+        }
     }
 };
 

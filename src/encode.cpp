@@ -1,10 +1,12 @@
 // Encoder: text program -> 8-track frames in ISO (parity on track 8) or EIA (by table).
+#include <algorithm>
 #include <cstring>
 #include <string>
 
 #include "swar.hpp"
 #include "tape/encode.hpp"
 #include "tape/error.hpp"
+#include "tape/utf8_text.hpp"
 #include "utf8.hpp"
 
 namespace tape {
@@ -31,9 +33,10 @@ std::size_t iso_even_run(const char* in, std::size_t n, Frame* out) {
     return n;
 }
 
-// Line and column (in characters) of byte offset in text, both from 1.
-Position text_position(std::string_view text, std::size_t offset) {
-    Position p{.line = 1, .column = 1};
+// Line and column (in characters) of byte offset in text, both from 1, counted on from base (the
+// position of text's first byte).
+Position text_position(std::string_view text, std::size_t offset, Position base = {.line = 1, .column = 1}) {
+    Position p = base;
     for (std::size_t i = 0; i < offset; ++i) {
         if (text[i] == '\n') {
             ++*p.line;
@@ -45,12 +48,30 @@ Position text_position(std::string_view text, std::size_t offset) {
     return p;
 }
 
-[[noreturn]] void cannot_carry(std::string_view text, std::size_t offset, Code code, Charset charset) {
-    Position where = text_position(text, offset);
+// The position after text, from the position of its first byte (newlines counted beforehand): the
+// column is counted only over the last line, so that the hot path stays fast.
+Position advance(Position p, std::string_view text, std::size_t newlines) {
+    if (newlines == 0) {
+        for (char c : text)
+            if (!utf8::is_continuation(c)) ++*p.column;
+        return p;
+    }
+    *p.line += newlines;
+    p.column = 1;
+    for (char c : text.substr(text.rfind('\n') + 1))
+        if (!utf8::is_continuation(c)) ++*p.column;
+    return p;
+}
+
+[[noreturn]] void cannot_carry(std::string_view text, std::size_t offset, Position base, Code code, Charset charset) {
+    Position where = text_position(text, offset, base);
     std::string ch = std::string(utf8::char_at(text, offset));
-    std::string shown = static_cast<unsigned char>(ch[0]) < 0x20 ? char_label(ch[0]) : "'" + ch + "'";
+    auto first = static_cast<unsigned char>(ch[0]);
+    std::string shown = first < 0x20 ? char_label(ch[0]) : "'" + visible(ch) + "'";
     std::string why = shown + " cannot be punched in " + (code == Code::iso ? "ISO" : "EIA") + " code";
-    if (static_cast<unsigned char>(ch[0]) >= 0x80) {
+    if (first == 0x00) why = "a NUL byte in the text: on tape it would be blank tape, so it cannot be punched";
+    if (first == 0x7F) why = "a DEL in the text: on tape it is a rubout that readers skip, so it cannot be punched";
+    if (first >= 0x80) {
         auto cp = utf8::decode(ch);
         if (charset == Charset::ascii && cp && koi7_position(*cp)) why += " (Cyrillic needs --charset koi7)";
         else if (cp && (*cp == U'Ё' || *cp == U'ё')) why += " (КОИ-7 has no Ё: write Е)";
@@ -59,36 +80,17 @@ Position text_position(std::string_view text, std::size_t offset) {
     throw Error(Errc::bad_text, where, why);
 }
 
-// Text -> the 7-bit character stream: CR LF becomes LF, КОИ-7 letters get SO/SI shifts.
-// Also returns, per character, the byte offset in text it came from (for error positions).
-std::string to_seven_bit(std::string_view text, Charset charset, Code code, std::vector<std::size_t>* origin) {
-    std::string out;
-    out.reserve(text.size());
-    bool cyrillic = false;
-    auto put = [&](char c, std::size_t from) {
-        out += c;
-        origin->push_back(from);
-    };
-    for (std::size_t i = 0; i < text.size();) {
-        auto c = static_cast<unsigned char>(text[i]);
-        if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') { ++i; continue; }
-        if (c < 0x80) {
-            bool letter_column = c >= 0x40 && c <= 0x7E;
-            if (cyrillic && (letter_column || c == '\n')) { put('\x0F', i); cyrillic = false; }
-            put(static_cast<char>(c), i);
-            ++i;
-            continue;
-        }
-        std::size_t len = utf8::length(text, i);
-        auto cp = utf8::decode(text.substr(i, len));
-        auto pos = (charset == Charset::koi7 && cp) ? koi7_position(*cp) : std::nullopt;
-        if (!pos) cannot_carry(text, i, code, charset);
-        if (!cyrillic) { put('\x0E', i); cyrillic = true; }
-        put(static_cast<char>(*pos), i);
-        i += len;
-    }
-    if (cyrillic) put('\x0F', text.size());
-    return out;
+// How many bytes at the end of text to hold back for the next chunk: a CR that may be half of CR LF,
+// or the start of a UTF-8 character whose rest has not come yet.
+std::size_t unfinished_tail(std::string_view text) {
+    if (text.empty()) return 0;
+    if (text.back() == '\r') return 1;
+    std::size_t n = 0;
+    while (n < text.size() && n < 4 && utf8::is_continuation(text[text.size() - 1 - n])) ++n;
+    if (n == text.size()) return 0;
+    auto lead = static_cast<unsigned char>(text[text.size() - 1 - n]);
+    std::size_t want = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
+    return want > n + 1 ? n + 1 : 0;
 }
 
 }  // namespace
@@ -103,33 +105,111 @@ std::size_t encode_run(const FrameCode& code, std::string_view chars, Frame* out
     return chars.size();
 }
 
-std::vector<Frame> encode(std::string_view text, const EncodeOptions& options) {
-    FrameCode code = FrameCode::make(options.code, options.parity, options.eia_table);
-    std::string converted;
-    std::vector<std::size_t> origin;
-    std::string_view chars = text;
-    bool plain = options.charset == Charset::ascii && text.find('\r') == std::string_view::npos && !options.crlf;
-    if (!plain) {
-        converted = to_seven_bit(text, options.charset, options.code, &origin);
-        if (options.crlf) {
-            std::string with_cr;
-            std::vector<std::size_t> with_cr_origin;
-            for (std::size_t i = 0; i < converted.size(); ++i) {
-                if (converted[i] == '\n') {
-                    with_cr += '\r';
-                    with_cr_origin.push_back(origin[i]);
-                }
-                with_cr += converted[i];
-                with_cr_origin.push_back(origin[i]);
-            }
-            converted = std::move(with_cr);
-            origin = std::move(with_cr_origin);
+Encoder::Encoder(const EncodeOptions& options)
+    : options_(options), code_(FrameCode::make(options.code, options.parity, options.eia_table)) {
+    if (options.leader > max_blank_frames || options.trailer > max_blank_frames)
+        throw Error(Errc::usage, "a leader or trailer is at most " + std::to_string(max_blank_frames) + " blank frames");
+}
+
+// Text -> the 7-bit character stream: CR LF becomes LF (CR LF again with crlf), КОИ-7 letters get
+// SO/SI shifts. Also records, per character, the byte offset in text it came from (for errors).
+void Encoder::to_seven_bit(std::string_view text) {
+    converted_.clear();
+    origin_.clear();
+    auto put = [&](char c, std::size_t from) {
+        if (c == '\n' && options_.crlf) {
+            converted_ += '\r';
+            origin_.push_back(from);
         }
-        chars = converted;
+        converted_ += c;
+        origin_.push_back(from);
+    };
+    for (std::size_t i = 0; i < text.size();) {
+        auto c = static_cast<unsigned char>(text[i]);
+        if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') {
+            ++i;
+            continue;
+        }
+        if (c < 0x80) {
+            bool letter_column = c >= 0x40 && c <= 0x7E;
+            if (cyrillic_ && (letter_column || c == '\n')) {
+                put('\x0F', i);
+                cyrillic_ = false;
+            }
+            put(static_cast<char>(c), i);
+            ++i;
+            continue;
+        }
+        std::size_t len = utf8::length(text, i);
+        auto cp = utf8::decode(text.substr(i, len));
+        auto pos = (options_.charset == Charset::koi7 && cp) ? koi7_position(*cp) : std::nullopt;
+        if (!pos) cannot_carry(text, i, position_, options_.code, options_.charset);
+        if (!cyrillic_) {
+            put('\x0E', i);
+            cyrillic_ = true;
+        }
+        put(static_cast<char>(*pos), i);
+        i += len;
     }
-    std::vector<Frame> frames(options.leader + chars.size() + options.trailer, blank_frame);
-    std::size_t stop = encode_run(code, chars, frames.data() + options.leader);
-    if (stop != chars.size()) cannot_carry(text, plain ? stop : origin[stop], options.code, options.charset);
+}
+
+void Encoder::encode_piece(std::string_view text, std::vector<Frame>& out) {
+    if (!leader_done_) {
+        out.insert(out.end(), options_.leader, blank_frame);
+        leader_done_ = true;
+    }
+    swar::TextScan scan = swar::scan_text(text.data(), text.size());
+    // NUL and DEL would encode, but read back as blank tape and a rubout: the program would lose them.
+    if (scan.special)
+        if (auto bad = std::min(text.find('\0'), text.find('\x7F')); bad != std::string_view::npos)
+            cannot_carry(text, bad, position_, options_.code, options_.charset);
+    std::string_view chars = text;
+    bool plain = options_.charset == Charset::ascii && !options_.crlf &&
+                 (!scan.special || text.find('\r') == std::string_view::npos);
+    if (!plain) {
+        to_seven_bit(text);
+        chars = converted_;
+    }
+    std::size_t at = out.size();
+    out.resize(at + chars.size());
+    std::size_t stop = encode_run(code_, chars, out.data() + at);
+    if (stop != chars.size()) cannot_carry(text, plain ? stop : origin_[stop], position_, options_.code, options_.charset);
+    position_ = advance(position_, text, scan.newlines);
+}
+
+void Encoder::feed(std::string_view text, std::vector<Frame>& out) {
+    std::string joined;
+    if (!held_.empty()) {
+        // Rare: only where a chunk ended inside a character or after a CR.
+        joined = held_ + std::string(text);
+        held_.clear();
+        text = joined;
+    }
+    std::size_t keep = unfinished_tail(text);
+    encode_piece(text.substr(0, text.size() - keep), out);
+    held_ = std::string(text.substr(text.size() - keep));
+}
+
+void Encoder::finish(std::vector<Frame>& out) {
+    std::string rest = std::move(held_);
+    held_.clear();
+    encode_piece(rest, out);  // a lone CR at the very end is the CR character; a cut UTF-8 character an error
+    if (cyrillic_) {
+        converted_ = "\x0F";
+        std::size_t at = out.size();
+        out.resize(at + 1);
+        encode_run(code_, converted_, out.data() + at);
+        cyrillic_ = false;
+    }
+    out.insert(out.end(), options_.trailer, blank_frame);
+}
+
+std::vector<Frame> encode(std::string_view text, const EncodeOptions& options) {
+    Encoder encoder(options);
+    std::vector<Frame> frames;
+    frames.reserve(options.leader + text.size() + options.trailer);
+    encoder.feed(text, frames);
+    encoder.finish(frames);
     return frames;
 }
 

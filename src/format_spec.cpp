@@ -87,6 +87,7 @@ FormatSpec parse_format_spec(std::string_view text) {
     std::string s;
     for (char c : text)
         if (!std::isspace(static_cast<unsigned char>(c))) s += c;
+    if (s.empty()) throw Error(Errc::usage, "empty format specification");
     std::size_t i = 0;
     while (i < s.size()) {
         char c = s[i];
@@ -177,6 +178,9 @@ std::vector<std::pair<std::string_view, std::string>> check_word(const Word& w, 
 std::string format_word(const Word& w, const FormatSpec& spec, const FormatSpec* from, bool strip_zeros) {
     const WordFormat* f = spec.find(w.address);
     if (!f) throw Error(Errc::bad_text, "the controller format has no address " + std::string(1, w.address == ':' ? 'N' : w.address));
+    // A main block number is written with N's digits, but only a format with ':' has main blocks.
+    if (w.address == ':' && !spec.main_block)
+        throw Error(Errc::bad_text, w.text + ": the controller format has no ':' main blocks");
     DecimalValue v = word_value(w, from ? from->find(w.address) : nullptr);
     if (v.negative && !f->sign) throw Error(Errc::bad_text, w.text + ": negative, but the format writes " + f->text + " without a sign");
     std::string out(1, w.address);
@@ -194,7 +198,12 @@ std::string format_word(const Word& w, const FormatSpec& spec, const FormatSpec*
         throw Error(Errc::bad_text, w.text + ": " + f->text + " has room for " + std::to_string(f->before) + " digit(s) before the point");
     if (static_cast<int>(v.fraction.size()) > f->after)
         throw Error(Errc::bad_text, w.text + ": " + f->text + " has room for " + std::to_string(f->after) + " digit(s) after the point");
-    if (spec.explicit_point) return out + (v.whole.empty() ? "0" : v.whole) + "." + v.fraction;
+    if (spec.explicit_point) {
+        // A format without digits before the point (X+05) has no room for the usual "0.": the point
+        // comes first, and zero is ".0" so that the word keeps a digit.
+        if (v.whole.empty() && f->before == 0) return out + "." + (v.fraction.empty() ? "0" : v.fraction);
+        return out + (v.whole.empty() ? "0" : v.whole) + "." + v.fraction;
+    }
     std::string d = std::string(static_cast<std::size_t>(f->before) - v.whole.size(), '0') + v.whole + v.fraction +
                     std::string(static_cast<std::size_t>(f->after) - v.fraction.size(), '0');
     if (strip_zeros && f->omit_leading) d = strip_leading_zeros(d);

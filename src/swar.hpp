@@ -56,4 +56,32 @@ inline bool any_high_byte(const char* p, std::size_t n) {
     return false;
 }
 
+/// One pass over text for the encoder: how many LF it holds, and whether any byte is NUL, CR or DEL
+/// (which need a closer look).
+struct TextScan {
+    std::size_t newlines = 0;
+    bool special = false;
+};
+
+inline TextScan scan_text(const char* p, std::size_t n) {
+    TextScan s;
+    bytes16 special{};
+    std::size_t i = 0;
+    for (; i + 16 <= n; i += 16) {
+        bytes16 v = load16(p + i);
+        auto ones = reinterpret_cast<words2>(reinterpret_cast<bytes16>(v == '\n') & 1);
+        // The bytes of each lane are 0 or 1: the multiplication adds them up in the top byte.
+        s.newlines += static_cast<std::size_t>((ones[0] * 0x0101010101010101ULL) >> 56) +
+                      static_cast<std::size_t>((ones[1] * 0x0101010101010101ULL) >> 56);
+        special |= reinterpret_cast<bytes16>((v == 0) | (v == '\r') | (v == 0x7F));
+    }
+    s.special = any16(special);
+    for (; i < n; ++i) {
+        char c = p[i];
+        s.newlines += c == '\n';
+        s.special |= c == '\0' || c == '\r' || c == '\x7F';
+    }
+    return s;
+}
+
 }  // namespace tape::swar

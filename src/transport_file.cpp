@@ -1,5 +1,6 @@
 // file:PATH — a tape image file as a device. Reading serves the image's frames (raw or holes, as
-// `tape decode` reads them) and ends at its end; writing appends raw frames to a new file.
+// `tape decode` reads them) and ends at its end; writing appends raw frames to a new file. It takes no
+// settings: "file:PATH?key=value" is refused like an unknown serial setting.
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -7,6 +8,7 @@
 #include <cstring>
 
 #include "device_backends.hpp"
+#include "device_query.hpp"
 #include "tape/error.hpp"
 #include "tape/file_io.hpp"
 #include "tape/image.hpp"
@@ -19,10 +21,16 @@ class FileTransport : public Transport {
 public:
     FileTransport(std::string path, DeviceUse use, bool replace) : path_(std::move(path)) {
         if (use == DeviceUse::read) {  // a file written to has no other side to read from
-            auto bytes = read_file(path_);
-            const ImageFormat* f = image_format_for_path(path_);
-            if (!f) f = &detect_image_format(std::span(bytes).first(std::min<std::size_t>(bytes.size(), 4096)));
-            frames_ = f->read(bytes);
+            try {
+                auto bytes = read_file(path_);
+                const ImageFormat* f = image_format_for_path(path_);
+                if (!f) f = &detect_image_format(std::span(bytes).first(std::min<std::size_t>(bytes.size(), 4096)));
+                frames_ = f->read(bytes);
+            } catch (const Error& e) {
+                // The file layer names no file; a device error names its device, where in it included.
+                std::string where = e.where().describe();
+                throw Error(e.code(), name() + ": " + (where.empty() ? "" : where + ": ") + e.what());
+            }
         }
         if (use != DeviceUse::read) {
             int flags = O_WRONLY | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : O_EXCL);
@@ -62,9 +70,14 @@ private:
 
 }  // namespace
 
+std::string file_device_path(std::string_view rest) {
+    DeviceQuery q("file", rest, {});
+    if (q.path().empty()) q.fail("no path, e.g. file:part.ptp");
+    return q.path();
+}
+
 std::unique_ptr<Transport> open_file_device(std::string_view rest, DeviceUse use, bool replace) {
-    if (rest.empty()) throw Error(Errc::usage, "file device: no path, e.g. file:part.ptp");
-    return std::make_unique<FileTransport>(std::string(rest), use, replace);
+    return std::make_unique<FileTransport>(file_device_path(rest), use, replace);
 }
 
 }  // namespace tape

@@ -3,7 +3,9 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 
 #include "tape/error.hpp"
@@ -16,9 +18,11 @@ void fail(const std::string& name, const std::string& what) {
 
 ReadResult read_fd(int fd, std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout, const std::string& name) {
     pollfd p{fd, POLLIN, 0};
+    // poll takes an int: a longer wait is cut to about 24 days (the caller loops anyway), never wrapped.
+    int wait = static_cast<int>(std::clamp<std::chrono::milliseconds::rep>(timeout.count(), 0, INT_MAX));
     int r;
     do {
-        r = ::poll(&p, 1, static_cast<int>(timeout.count()));
+        r = ::poll(&p, 1, wait);
     } while (r < 0 && errno == EINTR);
     if (r < 0) fail(name, "cannot wait for data");
     if (r == 0) return {};

@@ -6,8 +6,8 @@
 #include <unistd.h>
 
 #include "device_backends.hpp"
+#include "serial_termios.hpp"
 #include "tape/error.hpp"
-#include "tape/serial_settings.hpp"
 #include "transport_posix.hpp"
 
 namespace tape {

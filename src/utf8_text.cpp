@@ -1,25 +1,108 @@
 #include "tape/utf8_text.hpp"
 
-#include <string_view>
+#include <algorithm>
+#include <cstdio>
 
 #include "utf8.hpp"
 
 namespace tape {
+namespace {
 
-bool is_program_text(std::span<const std::uint8_t> bytes) {
+bool allowed_control(unsigned char c) { return c == '\t' || c == '\n' || c == '\r' || c == 0x0E || c == 0x0F; }
+
+// Characters that show as nothing or as a space: a reader of a message could not tell they are there.
+bool invisible(char32_t cp) {
+    return cp == 0xA0 || cp == 0xAD || cp == 0xFEFF || (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x2028 && cp <= 0x202E) ||
+           (cp >= 0x2060 && cp <= 0x2064) || (cp >= 0x80 && cp < 0xA0);
+}
+
+std::string hex_byte(unsigned char c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "\\x%02X", c);
+    return buf;
+}
+
+std::string code_point_name(char32_t cp) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "U+%04X", static_cast<unsigned>(cp));
+    return buf;
+}
+
+}  // namespace
+
+std::optional<TextFault> find_text_fault(std::span<const std::uint8_t> bytes) {
     std::string_view s(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    std::uint64_t line = 1, column = 1;
+    for (std::size_t i = 0; i < s.size();) {
+        auto c = static_cast<unsigned char>(s[i]);
+        std::string what;
+        std::size_t n = 1;
+        if (c < 0x80) {
+            if (c == 0) what = "a NUL byte";
+            else if ((c < 0x20 && !allowed_control(c)) || c == 0x7F) what = "the control character " + hex_byte(c);
+        } else {
+            n = utf8::length(s, i);
+            if (n == 1 || !utf8::decode(s.substr(i, n))) what = "byte 0x" + hex_byte(c).substr(2) + ", which is not UTF-8";
+        }
+        if (!what.empty()) return TextFault{Position{.line = line, .column = column}, i, what};
+        if (c == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+        i += n;
+    }
+    return std::nullopt;
+}
+
+bool is_program_text(std::span<const std::uint8_t> bytes) { return !find_text_fault(bytes); }
+
+bool looks_like_damaged_text(std::span<const std::uint8_t> bytes) {
+    auto sample = bytes.first(std::min<std::size_t>(bytes.size(), 65536));
+    if (sample.empty() || sample[0] == 0) return false;  // a tape starts with blank leader
+    std::string_view s(reinterpret_cast<const char*>(sample.data()), sample.size());
+    std::size_t wrong = 0, lines = 0;
+    for (std::size_t i = 0; i < s.size();) {
+        auto c = static_cast<unsigned char>(s[i]);
+        std::size_t n = c < 0x80 ? 1 : utf8::length(s, i);
+        if (c < 0x80) {
+            lines += c == '\n';
+            wrong += (c < 0x20 && !allowed_control(c)) || c == 0x7F;
+        } else if (n == 1 || !utf8::decode(s.substr(i, n))) {
+            n = 1;
+            ++wrong;
+        }
+        i += n;
+    }
+    // A raw ISO tape has track 8 punched in about half its frames, none of it UTF-8; a text file
+    // damaged in transfer has a stray byte or two.
+    return lines > 0 && wrong <= std::max<std::size_t>(2, s.size() / 50) && wrong * 10 <= s.size();
+}
+
+std::string visible(std::string_view s) {
+    std::string out;
+    out.reserve(s.size());
     for (std::size_t i = 0; i < s.size();) {
         auto c = static_cast<unsigned char>(s[i]);
         if (c < 0x80) {
-            if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != 0x0E && c != 0x0F) || c == 0x7F) return false;
+            if (c < 0x20 || c == 0x7F) out += hex_byte(c);
+            else out += static_cast<char>(c);
             ++i;
             continue;
         }
         std::size_t n = utf8::length(s, i);
-        if (n == 1 || !utf8::decode(s.substr(i, n))) return false;
+        auto cp = n > 1 ? utf8::decode(s.substr(i, n)) : std::nullopt;
+        if (!cp) {
+            out += hex_byte(c);
+            ++i;
+            continue;
+        }
+        if (invisible(*cp)) out += code_point_name(*cp);
+        else out.append(s.substr(i, n));
         i += n;
     }
-    return true;
+    return out;
 }
 
 }  // namespace tape

@@ -135,3 +135,85 @@ TEST(Decode, MarkParityTapeReadsWithTheRightRule) {
     EXPECT_TRUE(r.ok());
     EXPECT_EQ(r.text, "HELLO\n");
 }
+
+// A tape of noise must not fill memory with messages: past the limit bad frames are only counted.
+TEST(Decode, DiagnosticsBeyondTheLimitAreCounted) {
+    std::vector<Frame> noise;
+    for (int i = 0; i < 1000; ++i) noise.push_back(0x01);  // SOH without its parity hole
+    for (int i = 0; i < 10; ++i) noise.push_back(0x80);    // track 8 alone: parity error too
+    DecodeOptions o;
+    o.keep_going = true;
+    o.max_diagnostics = 5;
+    DecodeResult r = decode(noise, o);
+    ASSERT_EQ(r.diagnostics.size(), 5u);
+    EXPECT_EQ(r.diagnostics[4].where.frame, 5u);
+    EXPECT_EQ(r.unlisted.at(Errc::parity), 1005u);
+    EXPECT_FALSE(r.ok());
+    o.positions = true;
+    DecodeResult with_positions = decode(noise, o);
+    EXPECT_EQ(with_positions.diagnostics.size(), 5u);
+    EXPECT_EQ(with_positions.unlisted.at(Errc::parity), 1005u);
+    o.max_diagnostics = 0;
+    EXPECT_EQ(decode(noise, o).diagnostics.size(), 1010u);
+}
+
+// However the tape is cut, the text, the positions and the messages are the same.
+TEST(Decode, EverySplitPointGivesTheSameResult) {
+    struct Case {
+        std::string image;
+        DecodeOptions options;
+    };
+    DecodeOptions iso_positions;
+    iso_positions.positions = true;
+    DecodeOptions koi7;
+    koi7.charset = Charset::koi7;
+    koi7.positions = true;
+    DecodeOptions eia;
+    eia.code = Code::eia;
+    eia.positions = true;
+    std::vector<Case> cases = {
+        {"16k20f3s5-turning.iso.ptp", {}},
+        {"16k20f3s5-turning.iso.ptp", iso_positions},
+        {"koi7-comment.iso.ptp", koi7},
+        {"16k20f3s5-turning.eia.ptp", eia},
+    };
+    // A damaged copy: every 37th frame with a hole punched or lost.
+    std::vector<Frame> damaged = read_frames(sample_path("gost-20999-format-example.iso.ptp"));
+    for (std::size_t i = 120; i < damaged.size(); i += 37) damaged[i] ^= 0x04;
+    for (bool keep_going : {false, true})
+        for (bool positions : {false, true}) {
+            DecodeOptions o;
+            o.keep_going = keep_going;
+            o.positions = positions;
+            o.max_diagnostics = 3;
+            DecodeResult whole = decode(damaged, o);
+            for (std::size_t k = 0; k <= damaged.size(); ++k) {
+                Decoder d(o);
+                DecodeResult r;
+                d.feed(std::span(damaged).first(k), r);
+                d.feed(std::span(damaged).subspan(k), r);
+                ASSERT_EQ(r.text, whole.text) << "cut at frame " << k;
+                ASSERT_EQ(r.frame_of, whole.frame_of) << "cut at frame " << k;
+                ASSERT_EQ(r.diagnostics.size(), whole.diagnostics.size()) << "cut at frame " << k;
+                for (std::size_t i = 0; i < r.diagnostics.size(); ++i) {
+                    ASSERT_EQ(r.diagnostics[i].where.frame, whole.diagnostics[i].where.frame);
+                    ASSERT_EQ(r.diagnostics[i].message, whole.diagnostics[i].message);
+                }
+                ASSERT_EQ(d.unlisted(), whole.unlisted);
+                ASSERT_EQ(r.complete, whole.complete);
+            }
+        }
+    for (const auto& c : cases) {
+        std::vector<Frame> frames = read_frames(sample_path(c.image));
+        DecodeResult whole = decode(frames, c.options);
+        ASSERT_TRUE(whole.ok()) << c.image;
+        for (std::size_t k = 0; k <= frames.size(); ++k) {
+            Decoder d(c.options);
+            DecodeResult r;
+            d.feed(std::span(frames).first(k), r);
+            d.feed(std::span(frames).subspan(k), r);
+            ASSERT_EQ(r.text, whole.text) << c.image << " cut at frame " << k;
+            ASSERT_EQ(r.frame_of, whole.frame_of) << c.image << " cut at frame " << k;
+        }
+    }
+}

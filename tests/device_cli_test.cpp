@@ -1,18 +1,20 @@
 // The real `tape` binary driving real pseudo-terminals: feed, receive, read, punch, emulate.
 #include <gtest/gtest.h>
-
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
 #include "pty_util.hpp"
 #include "tape/encode.hpp"
-#include "tape/line_state.hpp"
 #include "tape/image.hpp"
+#include "tape/line_state.hpp"
+#include "process_util.hpp"
 #include "test_util.hpp"
 
 extern char** environ;
@@ -21,50 +23,6 @@ using namespace tape;
 using namespace std::chrono_literals;
 
 namespace {
-
-// One run of the tape binary, stdout and stderr to files.
-class Process {
-public:
-    Process(const std::vector<std::string>& args, const TempDir& dir) : dir_(dir) {
-        std::vector<std::string> argv_s = {TAPE_BINARY};
-        argv_s.insert(argv_s.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (auto& a : argv_s) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        posix_spawn_file_actions_t fa;
-        posix_spawn_file_actions_init(&fa);
-        posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-        posix_spawn_file_actions_addopen(&fa, 1, dir.file("stdout").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_addopen(&fa, 2, dir.file("stderr").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (posix_spawn(&pid_, argv[0], &fa, nullptr, argv.data(), environ) != 0) throw std::runtime_error("spawn failed");
-        posix_spawn_file_actions_destroy(&fa);
-    }
-    ~Process() {
-        if (pid_ > 0) {
-            ::kill(pid_, SIGKILL);
-            ::waitpid(pid_, nullptr, 0);
-        }
-    }
-    void interrupt() const { ::kill(pid_, SIGINT); }
-    /// Exit status, or -1 when it had to be killed after timeout.
-    int wait(std::chrono::milliseconds timeout = 10s) {
-        auto end = std::chrono::steady_clock::now() + timeout;
-        int status = 0;
-        while (std::chrono::steady_clock::now() < end) {
-            if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-                pid_ = -1;
-                return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-            }
-            std::this_thread::sleep_for(5ms);
-        }
-        return -1;
-    }
-    std::string err() const { return read_text(dir_.file("stderr")); }
-
-private:
-    const TempDir& dir_;
-    pid_t pid_ = -1;
-};
 
 std::vector<Frame> image_frames(const std::string& path) {
     std::string bytes = read_text(path);
@@ -76,7 +34,7 @@ std::vector<Frame> image_frames(const std::string& path) {
 
 TEST(CliFeed, SendsTheProgramThroughPausesExactlyOnce) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     std::string text = read_text(sample_path("gost-20999-format-example.txt"));
     auto expected = encode(text + "%", EncodeOptions{.leader = 5, .trailer = 5});
     Process tape({"feed", sample_path("gost-20999-format-example.txt"), pty.device("baud=38400&flow=xonxoff"), "--leader", "5",
@@ -102,7 +60,7 @@ TEST(CliFeed, SendsTheProgramThroughPausesExactlyOnce) {
 
 TEST(CliFeed, WaitXonGivesUpOnASilentController) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     Process tape({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--wait-xon", "--xon-timeout", "0.5"}, dir);
     EXPECT_EQ(tape.wait(), 3);
     EXPECT_NE(tape.err().find("no DC1 (XON)"), std::string::npos) << tape.err();
@@ -113,7 +71,7 @@ TEST(CliFeed, WaitXonGivesUpOnASilentController) {
 
 TEST(CliFeed, ControllerHangingUpEndsWithADeviceError) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     Process tape({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--rate", "1000"}, dir);
     std::vector<std::uint8_t> got;
     while (got.size() < 50) ASSERT_GT(pty.receive(got, 5000ms), 0U);
@@ -125,7 +83,7 @@ TEST(CliFeed, ControllerHangingUpEndsWithADeviceError) {
 
 TEST(CliFeed, CtrlCStopsCleanly) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     Process tape({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--rate", "1000"}, dir);
     std::vector<std::uint8_t> got;
     while (got.size() < 20) ASSERT_GT(pty.receive(got, 5000ms), 0U);
@@ -138,7 +96,7 @@ TEST(CliFeed, CtrlCStopsCleanly) {
 
 TEST(CliReceive, KeepsTheProgramUpToThePercentAfterM02) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     Process tape({"receive", pty.device(), "-o", dir.file("in.ptp"), "--timeout", "5"}, dir);
     std::this_thread::sleep_for(200ms);  // let it open the line
     auto program = encode("%\nN1 G01 X1\nN2 M30\n%", EncodeOptions{.leader = 4, .trailer = 0});
@@ -153,7 +111,7 @@ TEST(CliReceive, KeepsTheProgramUpToThePercentAfterM02) {
 
 TEST(CliRead, KeepsEveryFrameWhenTheOtherSideCloses) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     Process tape({"read", pty.device("baud=9600&flow=none"), "-o", dir.file("in.holes"), "--timeout", "5"}, dir);
     std::this_thread::sleep_for(200ms);
     auto frames = image_frames(sample_path("16k20f3s5-turning.iso.ptp"));
@@ -169,7 +127,7 @@ TEST(CliRead, KeepsEveryFrameWhenTheOtherSideCloses) {
 
 TEST(CliRead, RefusesAnExistingOutputWithoutForce) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     std::ofstream(dir.file("in.ptp")) << "keep";
     Process tape({"read", pty.device(), "-o", dir.file("in.ptp"), "--timeout", "1"}, dir);
     EXPECT_EQ(tape.wait(), 2);
@@ -178,7 +136,7 @@ TEST(CliRead, RefusesAnExistingOutputWithoutForce) {
 
 TEST(CliPunch, SendsEveryFrameOfTheImage) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     Process tape({"punch", sample_path("16k20f3s5-turning.eia.ptp"), pty.device("baud=115200&flow=none"), "--rate", "5000"}, dir);
     auto frames = image_frames(sample_path("16k20f3s5-turning.eia.ptp"));
     std::vector<std::uint8_t> got;
@@ -189,7 +147,7 @@ TEST(CliPunch, SendsEveryFrameOfTheImage) {
 
 TEST(CliEmulate, ReadsTheProgramOnDc1AndRewindsAtItsEnd) {
     TempDir dir;
-    Pty pty;
+    PTY_OR_SKIP(pty);
     Process tape({"emulate", sample_path("gost-20999-format-example.iso.ptp"), pty.device(), "--rate", "3000"}, dir);
     pty.send(dc1);
     std::vector<std::uint8_t> got;
@@ -204,4 +162,167 @@ TEST(CliEmulate, ReadsTheProgramOnDc1AndRewindsAtItsEnd) {
     EXPECT_NE(log.find("frame 101: start"), std::string::npos) << log;
     EXPECT_NE(log.find("end of program"), std::string::npos) << log;
     EXPECT_NE(log.find("frame 101: rewound to the '%' stop"), std::string::npos) << log;
+}
+
+TEST(CliFeed, RtsCtsOnALineWithoutModemLinesIsRefused) {
+    TempDir dir;
+    PTY_OR_SKIP(pty);
+    // A pty has no modem lines: --flow rtscts is refused as flow=rtscts in the device string is.
+    Process by_option({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device("flow=none"), "--flow", "rtscts"},
+                      dir);
+    EXPECT_EQ(by_option.wait(), 2) << by_option.err();
+    std::string message = by_option.err();
+    EXPECT_NE(message.find("flow=rtscts, but this device has no modem lines"), std::string::npos) << message;
+    std::vector<std::uint8_t> got;
+    pty.receive(got, 100ms);
+    EXPECT_TRUE(got.empty()) << got.size() << " frame(s) sent without flow control";
+    Process by_string({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device("flow=rtscts")}, dir);
+    EXPECT_EQ(by_string.wait(), 2) << by_string.err();
+    EXPECT_EQ(by_string.err(), message);
+}
+
+TEST(CliEmulate, RtsCtsOnALineWithoutModemLinesIsRefused) {
+    TempDir dir;
+    PTY_OR_SKIP(pty);
+    Process tape(
+        {"emulate", sample_path("gost-20999-format-example.iso.ptp"), pty.device("flow=none"), "--flow", "rtscts"},
+        dir);
+    EXPECT_EQ(tape.wait(5s), 2) << tape.err();
+    EXPECT_NE(tape.err().find("flow=rtscts, but this device has no modem lines"), std::string::npos) << tape.err();
+}
+
+// The generic reader's normal end is the user stopping it: Ctrl-C or SIGTERM, exit 0, every frame kept.
+TEST(CliRead, InterruptedKeepsEveryFrameAndExitsZero) {
+    for (int sig : {SIGINT, SIGTERM}) {
+        TempDir dir;
+        PTY_OR_SKIP(pty);
+        Process tape({"read", pty.device("baud=9600&flow=none"), "-o", dir.file("in.ptp"), "--timeout", "0"}, dir);
+        std::this_thread::sleep_for(200ms);
+        auto frames = image_frames(sample_path("16k20f3s5-turning.iso.ptp"));
+        ASSERT_EQ(::write(pty.master, frames.data(), frames.size()), static_cast<ssize_t>(frames.size()));
+        std::this_thread::sleep_for(300ms);
+        tape.signal(sig);
+        std::vector<std::uint8_t> answer;
+        pty.receive(answer, 2000ms);  // DC3: "stop reader"
+        EXPECT_EQ(tape.wait(), 0) << "signal " << sig << ": " << tape.err();
+        EXPECT_EQ(image_frames(dir.file("in.ptp")), frames) << "signal " << sig;
+    }
+}
+
+TEST(CliEmulate, HangUpWhileWaitingIsADeviceError) {
+    TempDir dir;
+    PTY_OR_SKIP(pty);
+    Process tape({"emulate", sample_path("gost-20999-format-example.iso.ptp"), pty.device()}, dir);
+    std::this_thread::sleep_for(300ms);  // loaded, waiting for DC1
+    pty.release_slave();
+    pty.close_master();
+    EXPECT_EQ(tape.wait(), 3) << tape.err();
+    EXPECT_NE(tape.err().find("hung up; 0 frame(s) sent"), std::string::npos) << tape.err();
+}
+
+TEST(CliEmulate, HangUpWhileSendingIsADeviceError) {
+    TempDir dir;
+    PTY_OR_SKIP(pty);
+    Process tape({"emulate", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--rate", "200"}, dir);
+    pty.send(dc1);
+    std::vector<std::uint8_t> got;
+    pty.receive_until_size(got, 10, 5s);
+    ASSERT_GE(got.size(), 10U);
+    pty.release_slave();
+    pty.close_master();
+    EXPECT_EQ(tape.wait(), 3) << tape.err();
+    EXPECT_NE(tape.err().find("hung up; "), std::string::npos) << tape.err();
+    EXPECT_NE(tape.err().find(" frame(s) sent"), std::string::npos) << tape.err();
+}
+
+// A file: device gets the whole image at once, atomically: Ctrl-C at any moment leaves the whole file
+// or none, never a part of it under its name, and no temporary beside it.
+TEST(CliPunch, InterruptedFileOutputIsWholeOrAbsent) {
+    TempDir dir;
+    std::vector<Frame> frames = image_frames(sample_path("16k20f3s5-turning.iso.ptp"));
+    {
+        std::ofstream big(dir.file("big.ptp"), std::ios::binary);
+        for (std::size_t n = 0; n < (16U << 20); n += frames.size())
+            big.write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+    }
+    std::string big = read_text(dir.file("big.ptp"));
+    // Interrupted at moments from the start to after the end of a run (about 60 ms when idle).
+    for (auto delay = 0ms; delay <= 150ms; delay += 15ms) {
+        std::filesystem::remove(dir.file("copy.ptp"));
+        int status;
+        {
+            Process tape({"punch", dir.file("big.ptp"), "file:" + dir.file("copy.ptp")}, dir);
+            std::this_thread::sleep_for(delay);
+            tape.interrupt();
+            status = tape.wait(60s);
+        }
+        std::vector<std::string> names;
+        for (const auto& e : std::filesystem::directory_iterator(dir.path))
+            names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        if (status != 0) EXPECT_EQ(status, 130) << delay.count() << " ms";
+        // A Ctrl-C just after the copy was put in place still ends the run with 130: the copy is whole then.
+        bool copied = std::find(names.begin(), names.end(), "copy.ptp") != names.end();
+        if (status == 0) EXPECT_TRUE(copied) << delay.count() << " ms";
+        std::vector<std::string> expected = {"big.ptp", "stderr", "stdout"};
+        if (copied) expected.insert(expected.begin() + 1, "copy.ptp");
+        EXPECT_EQ(names, expected) << delay.count() << " ms: a temporary file left behind?";
+        if (copied)
+            EXPECT_TRUE(read_text(dir.file("copy.ptp")) == big) << "copy.ptp differs from the image, " << delay.count() << " ms";
+    }
+}
+
+// receive and emulate take the tape's parity rule as decode does, and refuse it for EIA with decode's
+// words, before the device is opened or the image created.
+TEST(CliReceive, ParityIsForIsoTapesOnly) {
+    TempDir dir;
+    const std::string message = "--parity is for ISO tapes; EIA parity is always odd on track 5";
+    Process decode({"decode", "--code", "eia", "--parity", "odd", sample_path("16k20f3s5-turning.eia.ptp")}, dir);
+    EXPECT_EQ(decode.wait(), 2);
+    EXPECT_NE(decode.err().find(message), std::string::npos) << decode.err();
+    Process receive({"receive", "file:" + sample_path("16k20f3s5-turning.eia.ptp"), "-o", dir.file("in.ptp"), "--code",
+                     "eia", "--parity", "odd"},
+                    dir);
+    EXPECT_EQ(receive.wait(), 2);
+    EXPECT_EQ(receive.err(), "tape: " + message + "\n");
+    EXPECT_FALSE(std::filesystem::exists(dir.file("in.ptp")));
+    Process emulate({"emulate", sample_path("16k20f3s5-turning.eia.ptp"), "file:" + dir.file("out.ptp"), "--code",
+                     "eia", "--parity", "mark"},
+                    dir);
+    EXPECT_EQ(emulate.wait(), 2);
+    EXPECT_EQ(emulate.err(), "tape: " + message + "\n");
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.ptp")));
+}
+
+TEST(CliReceive, MarkParityProgramEndsAtItsPercent) {
+    TempDir dir;
+    PTY_OR_SKIP(pty);
+    Process tape({"receive", pty.device(), "-o", dir.file("in.ptp"), "--timeout", "5", "--parity", "mark"}, dir);
+    std::this_thread::sleep_for(200ms);  // let it open the line
+    auto program = encode("%\nN1 G01 X1\nN2 M30\n%", EncodeOptions{.parity = Parity::mark, .leader = 4, .trailer = 0});
+    std::vector<std::uint8_t> wire = program;
+    auto after = encode("N3 X9\n", EncodeOptions{.parity = Parity::mark, .leader = 0, .trailer = 0});  // not taken
+    wire.insert(wire.end(), after.begin(), after.end());
+    ASSERT_EQ(::write(pty.master, wire.data(), wire.size()), static_cast<ssize_t>(wire.size()));
+    EXPECT_EQ(tape.wait(), 0) << tape.err();
+    EXPECT_EQ(image_frames(dir.file("in.ptp")), program);
+    EXPECT_NE(tape.err().find("end of program"), std::string::npos) << tape.err();
+}
+
+TEST(CliEmulate, MarkParityTapeRewindsAtItsProgramEnd) {
+    TempDir dir;
+    PTY_OR_SKIP(pty);
+    auto tape = encode("%\nN1 G01 X1\nN2 M02\n", EncodeOptions{.parity = Parity::mark, .leader = 10, .trailer = 10});
+    std::ofstream(dir.file("mark.ptp"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(tape.data()), static_cast<std::streamsize>(tape.size()));
+    Process emulate({"emulate", dir.file("mark.ptp"), pty.device(), "--rate", "3000", "--parity", "mark"}, dir);
+    pty.send(dc1);
+    std::vector<Frame> program(tape.begin() + 10, tape.end() - 10);  // no leader; stops after M02's LF
+    std::vector<std::uint8_t> got;
+    pty.receive_until_size(got, program.size(), 10s);
+    pty.receive_until_quiet(got, 200ms);
+    EXPECT_EQ(got, program);
+    emulate.interrupt();
+    EXPECT_EQ(emulate.wait(), 0) << emulate.err();
+    EXPECT_NE(emulate.err().find("frame 11: rewound to the '%' stop"), std::string::npos) << emulate.err();
 }

@@ -108,3 +108,88 @@ TEST(RoundTrip, CommittedImagesMatchTheirSources) {
         EXPECT_EQ(decode(frames, DecodeOptions{.code = p.code}).text, read_text(sample_path(p.source))) << p.image;
     }
 }
+
+// NUL and DEL would encode, but read back as blank tape and a rubout: refused with their position.
+TEST(Encode, NulAndDelAreRefusedWithTheirPosition) {
+    for (char bad : {'\0', '\x7F'}) {
+        std::string text = std::string("%\nN1 G01 X") + bad + "2\n";
+        try {
+            encode(text, {});
+            FAIL() << "encoded a " << int(bad);
+        } catch (const Error& e) {
+            EXPECT_EQ(e.code(), Errc::bad_text);
+            EXPECT_EQ(e.where().describe(), "line 2, column 9");
+        }
+    }
+}
+
+TEST(Encode, LeaderBeyondTheLimitIsAUsageError) {
+    EncodeOptions o;
+    o.leader = max_blank_frames + 1;
+    try {
+        encode("%\n", o);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), Errc::usage);
+    }
+    o.leader = 0;
+    o.trailer = static_cast<std::size_t>(-1);  // what "--trailer -1" became before the CLI checked it
+    EXPECT_THROW(encode("%\n", o), Error);
+}
+
+namespace {
+// Encodes text cut at cut (and, when second is given, again at second) through the incremental Encoder.
+std::vector<Frame> encode_in_pieces(std::string_view text, const EncodeOptions& o, std::vector<std::size_t> cuts) {
+    Encoder e(o);
+    std::vector<Frame> out;
+    std::size_t at = 0;
+    for (std::size_t cut : cuts) {
+        e.feed(text.substr(at, cut - at), out);
+        at = cut;
+    }
+    e.feed(text.substr(at), out);
+    e.finish(out);
+    return out;
+}
+}  // namespace
+
+// However the text is cut, the frames are the same: КОИ-7 shifts, CR LF and UTF-8 cut in two included.
+TEST(Encode, EverySplitPointGivesTheSameFrames) {
+    struct Case {
+        std::string text;
+        EncodeOptions options;
+    };
+    EncodeOptions koi7;
+    koi7.charset = Charset::koi7;
+    EncodeOptions crlf;
+    crlf.crlf = true;
+    EncodeOptions eia;
+    eia.code = Code::eia;
+    std::vector<Case> cases = {
+        {read_text(sample_path("16k20f3s5-turning.txt")), {}},
+        {read_text(sample_path("koi7-comment.txt")), koi7},
+        {read_text(sample_path("gost-20999-format-example.txt")), crlf},
+        {read_text(sample_path("gost-20999-format-example.eia.txt")), eia},
+        {"%\r\nN1 (ДЕТАЛЬ)\r\nN2 G01\r\r\nM02\r", koi7},
+    };
+    for (const auto& c : cases) {
+        std::vector<Frame> whole = encode(c.text, c.options);
+        for (std::size_t k = 0; k <= c.text.size(); ++k)
+            ASSERT_EQ(encode_in_pieces(c.text, c.options, {k}), whole) << "cut at byte " << k;
+        for (std::size_t k = 0; k + 2 <= c.text.size(); k += 7)
+            ASSERT_EQ(encode_in_pieces(c.text, c.options, {k, k + 1, k + 2}), whole) << "cut at " << k;
+    }
+}
+
+// An error is reported at the same line and column whichever chunk it falls in.
+TEST(Encode, ErrorPositionsAreTheSameInPieces) {
+    std::string text = "%\nN1 G01\nN2 (ДЕТАЛЬ)\nM02\n";
+    for (std::size_t k = 0; k <= text.size(); ++k) {
+        try {
+            encode_in_pieces(text, {}, {k});
+            FAIL() << "Cyrillic encoded without koi7";
+        } catch (const Error& e) {
+            ASSERT_EQ(e.where().describe(), "line 3, column 5") << "cut at byte " << k;
+        }
+    }
+}

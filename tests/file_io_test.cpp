@@ -1,10 +1,20 @@
 // Outputs are written whole or not at all, and never replace a file without permission.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/inotify.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <filesystem>
+#include <fstream>
 
 #include "tape/error.hpp"
 #include "tape/file_io.hpp"
+#include "process_util.hpp"
 #include "test_util.hpp"
 
 using namespace tape;
@@ -57,4 +67,58 @@ TEST(FileIo, FailuresAreIoErrorsAndLeaveNothing) {
         EXPECT_NE(std::string(e.what()).find("No such file"), std::string::npos);
     }
     EXPECT_EQ(entries(dir), 0);
+}
+
+TEST(FileIo, ForceKeepsModeAndWritesDevicesInPlace) {
+    TempDir dir;
+    std::string p = dir.file("out.ptp");
+    write_file_atomic(p, "old", false);
+    ASSERT_EQ(::chmod(p.c_str(), 0600), 0);
+    write_file_atomic(p, "new", true);
+    struct stat st {};
+    ASSERT_EQ(::stat(p.c_str(), &st), 0);
+    EXPECT_EQ(st.st_mode & 07777, 0600u);
+    // A character device stays one: written into, not renamed over. A private null device node, so that
+    // a regression cannot replace the system's /dev/null.
+    std::string node = dir.file("null");
+    if (::mknod(node.c_str(), S_IFCHR | 0666, ::makedev(1, 3)) != 0) GTEST_SKIP() << "cannot make a device node (not root)";
+    write_file_atomic(node, "frames", true);
+    ASSERT_EQ(::stat(node.c_str(), &st), 0);
+    EXPECT_TRUE(S_ISCHR(st.st_mode));
+    EXPECT_EQ(entries(dir), 2);
+}
+
+// A run interrupted while it writes its output leaves neither a half output nor OUT.tmpXXXXXX.
+TEST(FileIo, SignalDuringWriteRemovesTheTemporaryFile) {
+    TempDir dir;
+    std::string big = dir.file("big.txt");
+    {
+        std::string block = "N0001 G01 X+012500 Y-003000 F1000 S0800 T0101 M03\n";
+        std::ofstream out(big, std::ios::binary);
+        out << "%\n";
+        for (int i = 0; i < 1'500'000; ++i) out << block;  // about 80 MB: writing it takes a while
+        out << "M02\n";
+    }
+    for (int sig : {SIGINT, SIGTERM}) {
+        int watch = ::inotify_init1(IN_CLOEXEC | IN_NONBLOCK);
+        ASSERT_GE(watch, 0);
+        ASSERT_GE(::inotify_add_watch(watch, dir.path.c_str(), IN_CREATE), 0);
+        TempDir logs;  // stdout and stderr elsewhere, so that the watch sees only the output
+        Process run({"encode", big, "-o", dir.file("out.ptp")}, logs);
+        // The temporary file appears once the first chunk is encoded; signal the run as soon as it does.
+        pollfd pfd{watch, POLLIN, 0};
+        ASSERT_EQ(::poll(&pfd, 1, 30'000), 1) << "no temporary file within 30 s";
+        run.signal(sig);
+        int status = run.wait(std::chrono::seconds(30));
+        ::close(watch);
+        ASSERT_NE(status, -1) << "the run did not end within 30 s of the signal";
+        if (status == 0) {
+            // It finished before the signal landed: the output is whole, and nothing else is there.
+            EXPECT_EQ(entries(dir), 2);
+            std::filesystem::remove(dir.file("out.ptp"));
+            continue;
+        }
+        EXPECT_EQ(status, 128 + sig) << run.err();
+        EXPECT_EQ(entries(dir), 1) << "a temporary or half output was left behind";
+    }
 }

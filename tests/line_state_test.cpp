@@ -5,6 +5,7 @@
 
 #include "tape/error.hpp"
 #include "tape/line_state.hpp"
+#include "serial_termios.hpp"
 #include "tape/serial_settings.hpp"
 
 using namespace tape;
@@ -30,6 +31,20 @@ TEST(XonXoff, ConfigurableCharacters) {
     EXPECT_TRUE(x.paused());
     x.receive('Q');
     EXPECT_FALSE(x.paused());
+}
+
+// 0x93 is DC3 with the parity bit an even-parity control sets on an 8N1 line; 0x91 DC1 with odd parity.
+TEST(XonXoff, TakesFlowCharactersInEitherParity) {
+    XonXoff x;
+    EXPECT_TRUE(x.receive(0x93));
+    EXPECT_TRUE(x.paused());
+    EXPECT_TRUE(x.receive(0x91));
+    EXPECT_FALSE(x.paused());
+    EXPECT_TRUE(x.seen_xon());
+    EXPECT_FALSE(x.receive(0x94));
+    XonXoff configured(0x91, 0x93);  // given with the parity bit: the same characters
+    EXPECT_TRUE(configured.receive(dc3));
+    EXPECT_TRUE(configured.paused());
 }
 
 namespace {

@@ -1,5 +1,6 @@
 #include "cli_common.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -7,6 +8,7 @@
 
 #include "tape/detect.hpp"
 #include "tape/file_io.hpp"
+#include "tape/image_input.hpp"
 #include "tape/utf8_text.hpp"
 
 namespace cli {
@@ -37,8 +39,24 @@ const tape::CodeTable* Globals::table() {
 
 std::string display_name(const std::string& path) { return path.empty() || path == "-" ? "stdin" : path; }
 
+namespace {
+extern "C" void discard_output_and_die(int sig) {
+    tape::discard_pending_output();
+    ::signal(sig, SIG_DFL);
+    ::raise(sig);
+}
+}  // namespace
+
+void install_output_cleanup() {
+    struct sigaction sa {};
+    sa.sa_handler = discard_output_and_die;
+    sigemptyset(&sa.sa_mask);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) ::sigaction(sig, &sa, nullptr);
+}
+
 void say(const std::string& file, const std::string& message) {
-    std::cerr << "tape: " << (file.empty() ? "" : file + ": ") << message << '\n';
+    // Bytes from the input reach messages: a terminal must not act on them or hide them.
+    std::cerr << "tape: " << tape::visible(file.empty() ? "" : file + ": ") << tape::visible(message) << '\n';
 }
 
 std::string where_text(const tape::Position& where, bool raw_frames) {
@@ -61,6 +79,20 @@ void fail(const std::string& file, tape::Errc code, const std::string& message) 
     fail(file, tape::Error(code, message));
 }
 
+void say_unlisted(const std::string& name, std::uint64_t count, const std::string& what) {
+    say(name, std::to_string(count) + " more " + what + " not shown (--max-errors " + std::to_string(globals().max_errors) + ")");
+}
+
+std::uint64_t report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames) {
+    for (const auto& d : r.diagnostics) say(name, where_text(d.where, raw_frames) + ": " + d.message);
+    std::uint64_t total = r.diagnostics.size();
+    for (const auto& [code, count] : r.unlisted) {
+        say_unlisted(name, count, code == tape::Errc::parity ? "parity error(s)" : "frame(s) that are no character");
+        total += count;
+    }
+    return total;
+}
+
 std::vector<std::uint8_t> read_input(const std::string& path) {
     try {
         return tape::read_file(path.empty() ? "-" : path);
@@ -72,13 +104,13 @@ std::vector<std::uint8_t> read_input(const std::string& path) {
 TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id) {
     TapeInput in;
     in.name = path.empty() ? "-" : path;
-    if (!format_id.empty()) in.format = tape::find_image_format(format_id);
-    if (!in.format && in.name != "-") in.format = tape::image_format_for_path(in.name);
-    // ".txt" may be a holes picture or not: the content decides, as for names without an extension.
-    if (!in.format || in.format->id == "holes")
-        in.format = &tape::detect_image_format(std::span(bytes).first(std::min<std::size_t>(bytes.size(), 4096)));
     try {
-        in.frames = in.format->read(bytes);
+        // The same format decision as every streamed input: --format, else the extension, else content.
+        tape::ImageInput image(std::make_unique<tape::MemorySource>(bytes), in.name,
+                               format_id.empty() ? nullptr : tape::find_image_format(format_id));
+        in.format = &image.format();
+        for (auto frames = image.next(); !frames.empty(); frames = image.next())
+            in.frames.insert(in.frames.end(), frames.begin(), frames.end());
     } catch (const tape::Error& e) {
         fail(display_name(in.name), e);
     }
@@ -92,7 +124,21 @@ bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& by
     if (!format_id.empty()) return true;
     const tape::ImageFormat* by_ext = path.empty() || path == "-" ? nullptr : tape::image_format_for_path(path);
     auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
-    return (by_ext && by_ext->id == "raw") || tape::find_image_format("holes")->match(prefix) >= 60 || !tape::is_program_text(bytes);
+    // An image extension decides, but ".txt", which a text program has as often as a holes picture.
+    bool txt = path.ends_with(".txt") || path.ends_with(".TXT");
+    if ((by_ext && !txt) || tape::find_image_format("holes")->match(prefix) >= 60) return true;
+    if (tape::is_program_text(bytes)) return false;
+    // A text program with a stray byte is reported where the byte is, not read as a strange tape.
+    if (tape::looks_like_damaged_text(bytes)) require_program_text(path, bytes);
+    return true;
+}
+
+void require_program_text(const std::string& path, std::span<const std::uint8_t> bytes) {
+    auto fault = tape::find_text_fault(bytes);
+    if (!fault) return;
+    say(display_name(path), fault->where.describe() + ": " + fault->what +
+                                ": a text program cannot hold it (if this is a tape image, give --input image)");
+    throw Exit{bad_data};
 }
 
 void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
@@ -113,30 +159,58 @@ void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
         ->capture_default_str();
 }
 
-tape::DecodeOptions resolve_code(const CodeChoice& choice, const TapeInput& input) {
+tape::DecodeOptions resolve_code(const CodeChoice& choice, const std::string& name,
+                                 const std::function<tape::CodeDetection()>& detect) {
     tape::DecodeOptions o;
     o.parity = *tape::parse_parity(choice.parity);
     o.charset = *tape::parse_charset(choice.charset);
     o.eia_table = globals().table();
+    o.max_diagnostics = globals().max_errors;
     if (choice.code != "auto") {
         o.code = *tape::parse_code(choice.code);
     } else if (o.parity != tape::Parity::even) {
         o.code = tape::Code::iso;  // only ISO/ASCII tapes have a choice of parity
     } else {
-        auto d = tape::detect_code(input.frames);
-        if (!d.code) fail(display_name(input.name), tape::Errc::unknown_code, d.reason);
-        if (globals().verbosity > 0) say(display_name(input.name), "code " + d.reason);
+        auto d = detect();
+        if (!d.code) fail(name, tape::Errc::unknown_code, d.reason);
+        if (globals().verbosity > 0) say(name, "code " + d.reason);
         o.code = *d.code;
     }
     if (o.code == tape::Code::eia && o.parity != tape::Parity::even)
-        fail(display_name(input.name), tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
+        fail(name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
     return o;
+}
+
+tape::DecodeOptions resolve_code(const CodeChoice& choice, const TapeInput& input) {
+    return resolve_code(choice, display_name(input.name), [&] { return tape::detect_code(input.frames); });
+}
+
+namespace {
+std::vector<std::string> format_ids(bool for_writing) {
+    std::vector<std::string> ids;
+    for (const auto& f : tape::image_formats())
+        if (for_writing ? f.write != nullptr : f.read != nullptr) ids.emplace_back(f.id);
+    return ids;
+}
+}  // namespace
+
+std::string format_choices(bool for_writing) {
+    auto ids = format_ids(for_writing);
+    std::string text;
+    for (std::size_t i = 0; i < ids.size(); ++i) text += (i == 0 ? "" : i + 1 == ids.size() ? " or " : ", ") + ids[i];
+    return text;
+}
+
+CLI::Validator format_check(bool for_writing) { return CLI::IsMember(format_ids(for_writing)); }
+
+void refuse_binary_terminal(const std::string& path, bool binary, bool force) {
+    if ((path.empty() || path == "-") && binary && ::isatty(STDOUT_FILENO) && !force)
+        fail("", tape::Errc::usage, "refusing to write a binary tape image to a terminal (use -o FILE, --format holes, or --force)");
 }
 
 void write_output(const std::string& path, const std::string& data, bool binary, bool force) {
     if (path.empty() || path == "-") {
-        if (binary && ::isatty(STDOUT_FILENO) && !force)
-            fail("", tape::Errc::usage, "refusing to write a binary tape image to a terminal (use -o FILE, --format holes, or --force)");
+        refuse_binary_terminal(path, binary, force);
         std::cout.write(data.data(), static_cast<std::streamsize>(data.size()));
         std::cout.flush();
         if (!std::cout) fail("stdout", tape::Errc::io, "cannot write");
@@ -153,8 +227,8 @@ void write_output(const std::string& path, const std::string& data, bool binary,
 
 void add_program_source_options(CLI::App* sub, ProgramSource& source) {
     add_code_options(sub, source.choice, true);
-    sub->add_option("--format,-f", source.format, "Image format of IN: raw or holes (IN is then a tape image)")
-        ->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_option("--format,-f", source.format, "Image format of IN: " + format_choices(false) + " (IN is then a tape image)")
+        ->check(format_check(false));
     sub->add_option("--input", source.kind, "What IN is: auto (image or text by extension and content), text, image")
         ->check(CLI::IsMember({"auto", "text", "image"}))
         ->capture_default_str();
@@ -165,6 +239,7 @@ ProgramInput load_program(const std::string& path, const ProgramSource& source) 
     in.name = display_name(path);
     std::vector<std::uint8_t> bytes = read_input(path);
     if (!is_image_input(path, bytes, source.format, source.kind)) {
+        require_program_text(path, bytes);
         in.tape = tape::load(std::string(bytes.begin(), bytes.end()));
         return in;
     }
@@ -172,7 +247,7 @@ ProgramInput load_program(const std::string& path, const ProgramSource& source) 
     tape::DecodeOptions o = resolve_code(source.choice, t);
     o.positions = true;
     tape::DecodeResult r = tape::decode(t.frames, o);
-    for (const auto& d : r.diagnostics) say(in.name, where_text(d.where, t.raw()) + ": " + d.message);
+    report_bad_frames(in.name, r, t.raw());
     if (!r.ok()) throw Exit{bad_data};
     in.from_tape = true;
     in.tape = tape::load(std::move(r.text), std::move(r.frame_of));

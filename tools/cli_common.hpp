@@ -3,12 +3,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tape/code.hpp"
 #include "tape/decode.hpp"
+#include "tape/detect.hpp"
 #include "tape/error.hpp"
 #include "tape/image.hpp"
 #include "tape/program.hpp"
@@ -28,12 +30,17 @@ int status_for(tape::Errc code);
 struct Globals {
     int verbosity = 0;      ///< -v steps up, -q down
     std::string eia_table;  ///< --eia-table FILE: a corrected EIA table
+    std::uint64_t max_errors = 100;  ///< --max-errors: messages of one kind before the rest are only counted
     std::optional<tape::CodeTable> loaded_table;
 
     /// The EIA table to use (loaded on first use), or nullptr for the built-in one.
     const tape::CodeTable* table();
 };
 Globals& globals();
+
+/// SIGINT, SIGTERM, SIGHUP and SIGQUIT remove an output's temporary file, then end the run as the
+/// signal would. Device runs replace this with their own stop flag.
+void install_output_cleanup();
 
 /// "tape: FILE: WHERE: message" on stderr.
 void say(const std::string& file, const std::string& message);
@@ -51,6 +58,12 @@ struct TapeInput {
     std::vector<tape::Frame> frames;
     bool raw() const { return format && format->id == "raw"; }
 };
+/// Prints the bad frames a decoding kept, then how many more of each kind were only counted.
+/// Returns the number of bad frames in all.
+std::uint64_t report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames);
+/// "12345 more parity error(s) not shown (--max-errors 100)".
+void say_unlisted(const std::string& name, std::uint64_t count, const std::string& what);
+
 /// Reads IN ("-" = stdin) as an image: --format, else by extension, else by content.
 TapeInput read_tape(const std::string& path, const std::string& format_id);
 /// The same from bytes already read.
@@ -62,6 +75,8 @@ std::vector<std::uint8_t> read_input(const std::string& path);
 bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id,
                     const std::string& kind);
 std::string display_name(const std::string& path);
+/// Fails (exit 1) naming the line and column of the first byte a text program cannot hold.
+void require_program_text(const std::string& path, std::span<const std::uint8_t> bytes);
 
 /// The code chosen for a decoding run: --code auto detects and explains itself with -v.
 struct CodeChoice {
@@ -73,6 +88,17 @@ void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto);
 /// Options for the library from the choice, detecting the code when asked; fails with exit 1 when
 /// the tape fits neither code.
 tape::DecodeOptions resolve_code(const CodeChoice& choice, const TapeInput& input);
+/// The same for a tape being streamed: detect is called only when the code is to be detected.
+tape::DecodeOptions resolve_code(const CodeChoice& choice, const std::string& name,
+                                 const std::function<tape::CodeDetection()>& detect);
+
+/// The image formats of the table that can be read (or written): "raw or holes", and a CLI11 check
+/// that accepts exactly their ids. The CLI's --format choices come from here, never from a list of its own.
+std::string format_choices(bool for_writing);
+CLI::Validator format_check(bool for_writing);
+
+/// Fails (usage) when a binary image would go to standard output on a terminal without --force.
+void refuse_binary_terminal(const std::string& path, bool binary, bool force);
 
 /// Writes data to OUT ("-" or empty = stdout) atomically; refuses to replace a file without force,
 /// and a binary image on a terminal without force.

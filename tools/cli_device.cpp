@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli_numbers.hpp"
+#include "tape/detect.hpp"
 #include "tape/file_io.hpp"
 
 namespace cli {
@@ -58,18 +60,22 @@ void ProgressLine::operator()(const tape::LineProgress& p) {
 
 void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
     add_code_options(sub, p.choice, true);
-    sub->add_option("--leader", p.leader, "Blank frames (NUL) before the program")->capture_default_str()->each([&p](const std::string&) {
-        p.leader_given = true;
-    });
-    sub->add_option("--trailer", p.trailer, "Blank frames after the program")->capture_default_str()->each([&p](const std::string&) {
-        p.trailer_given = true;
-    });
+    sub->add_option("--leader", p.leader, "Blank frames (NUL) before the program")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str()
+        ->each([&p](const std::string&) { p.leader_given = true; });
+    sub->add_option("--trailer", p.trailer, "Blank frames after the program")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str()
+        ->each([&p](const std::string&) { p.trailer_given = true; });
     sub->add_flag("--crlf", p.crlf, "End blocks with CR LF instead of LF (text programs, ISO)");
     sub->add_flag("!--no-percent", p.percent_first, "Do not put a '%' block first when the program has none");
     sub->add_option("--end", p.end, "After the program: percent (a '%', then the trailer) or none (the trailer only, for M30 tapes)")
         ->check(CLI::IsMember({"percent", "none"}))
         ->capture_default_str();
-    sub->add_option("--format,-f", p.format, "Image format of IN: raw or holes (IN is then a tape image)")->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_option("--format,-f", p.format,
+                    "Image format of IN (IN is then a tape image), and of a file: device: " + format_choices(false))
+        ->check(format_check(false));
     sub->add_option("--input", p.kind, "What IN is: auto, text or image")->check(CLI::IsMember({"auto", "text", "image"}))->capture_default_str();
 }
 
@@ -112,6 +118,8 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
     }
 }
 
+namespace {
+
 void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o, const std::string& verb,
                   bool progress_forced) {
     o.stop = &interrupted();
@@ -129,6 +137,51 @@ void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, ta
     }
     if (globals().verbosity > 0)
         say(line.name(), verb + " " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
+}
+
+// Holes pictures are annotated with the characters of the code the frames are in, when one fits.
+std::string image_text(const tape::ImageFormat& format, std::span<const tape::Frame> frames) {
+    std::optional<tape::FrameCode> code;
+    if (auto detected = tape::detect_code(frames).code)
+        code = tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
+    return format.write(frames, tape::ImageWriteOptions{code ? &*code : nullptr});
+}
+
+}  // namespace
+
+std::optional<std::string> file_device_path(const std::string& device) {
+    if (!device.starts_with("file:")) return std::nullopt;
+    try {
+        return tape::file_device_path(std::string_view(device).substr(5));
+    } catch (const tape::Error& e) {
+        fail("", e);  // the message names the device
+    }
+}
+
+void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, tape::SendOptions o,
+                     const std::string& verb) {
+    if (auto path = file_device_path(to.device)) {
+        // The messages match the file backend's own, as a device string would get them.
+        if (o.flow == tape::Flow::rtscts)
+            fail(to.device, tape::Errc::usage, "flow=rtscts, but this device has no modem lines");
+        if (o.wait_xon) fail(to.device, tape::Errc::usage, "a file sends no DC1 (XON): --wait-xon needs a line");
+        const tape::ImageFormat* format =
+            to.format.empty() ? tape::image_format_for_path(*path) : tape::find_image_format(to.format);
+        if (!format) format = tape::find_image_format("raw");
+        // The default Ctrl-C handling stays: it removes the temporary, so the file is whole or absent.
+        try {
+            tape::write_file_atomic(*path, image_text(*format, frames), to.force);
+        } catch (const tape::Error& e) {
+            fail(to.device, e);
+        }
+        if (globals().verbosity > 0)
+            say(to.device,
+                verb + " " + std::to_string(frames.size()) + " frames as a " + std::string(format->id) + " image");
+        return;
+    }
+    install_interrupt_handler();
+    auto line = open_device_or_fail(to.device, to.use, to.force);
+    send_or_fail(*line, frames, o, verb, to.progress);
 }
 
 std::uint8_t parse_byte(const std::string& text, const std::string& option) {

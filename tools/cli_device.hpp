@@ -3,6 +3,8 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -53,12 +55,38 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p);
 /// or a text program encoded with the profile.
 std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p);
 
-/// Sends frames on line (feed, punch): Ctrl-C and a progress line wired here; a device failure ends
-/// the program with status 3, Ctrl-C with 130; -v reports the count.
-void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o, const std::string& verb,
-                  bool progress_forced);
+/// Where feed and punch send their frames.
+struct Delivery {
+    std::string device;
+    tape::DeviceUse use = tape::DeviceUse::write;
+    std::string format;  ///< a file: device's image format, raw or holes (default: by extension, else raw)
+    bool force = false;  ///< a file: device may replace an existing file
+    bool progress = false;
+};
 
-/// "--xon 0x11" style byte options.
+/// Sends frames (feed, punch). A file: device gets the whole image at once through the image writer,
+/// atomically (Ctrl-C leaves the old state, no part); it answers nothing, so RTS/CTS and --wait-xon
+/// are refused for it and there is no pacing. Any other device is opened and sent to frame by frame,
+/// with Ctrl-C and a progress line wired here. A device failure ends the program with status 3,
+/// Ctrl-C with 130; -v reports the count.
+void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, tape::SendOptions o,
+                     const std::string& verb);
+
+/// Receives frames from device into the image output as they arrive (receive, read): Ctrl-C and a
+/// progress line wired here; a device failure ends the program with status 3. Returns how it ended.
+tape::ReceiveResult::End receive_into_image(const std::string& device, const std::string& output,
+                                            const std::string& format_id, bool force, tape::ReceiveOptions o,
+                                            bool progress_forced, const char* verb);
+
+/// The PATH of a "file:PATH" device string, or nullopt for another device.
+std::optional<std::string> file_device_path(const std::string& device);
+
+/// "--xon 0x11" style byte options; a bad one ends the program with status 2.
 std::uint8_t parse_byte(const std::string& text, const std::string& option);
+
+/// The ranges of the numeric device options, in --help and in their checks.
+inline constexpr double min_rate = 0.1, max_rate = 100000;  ///< frames per second
+inline constexpr double max_delay_ms = 60000;               ///< --delay: a minute between characters
+inline constexpr double max_timeout_s = 86400;              ///< time-outs: a day
 
 }  // namespace cli

@@ -1,8 +1,11 @@
 // tape encode: a text program -> a tape image.
 #include "cli_common.hpp"
+#include "cli_numbers.hpp"
 #include "commands.hpp"
 #include "tape/encode.hpp"
 #include "tape/file_io.hpp"
+
+#include <memory>
 
 namespace cli {
 namespace {
@@ -16,12 +19,6 @@ struct EncodeArgs {
 
 void run(const EncodeArgs& a) {
     std::string in_name = display_name(a.input);
-    std::vector<std::uint8_t> bytes;
-    try {
-        bytes = tape::read_file(a.input);
-    } catch (const tape::Error& e) {
-        fail(in_name, e);
-    }
     tape::EncodeOptions o;
     o.code = *tape::parse_code(a.choice.code);
     o.parity = *tape::parse_parity(a.choice.parity);
@@ -31,19 +28,60 @@ void run(const EncodeArgs& a) {
     o.eia_table = globals().table();
     if (o.code == tape::Code::eia && o.parity != tape::Parity::even)
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
-    std::vector<tape::Frame> frames;
-    try {
-        frames = tape::encode(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), o);
-    } catch (const tape::Error& e) {
-        fail(in_name, e);
-    }
     const tape::ImageFormat* format = a.format.empty() ? nullptr : tape::find_image_format(a.format);
     if (!format && a.output != "-") format = tape::image_format_for_path(a.output);
     if (!format) format = tape::find_image_format("raw");
+    refuse_binary_terminal(a.output, format->binary, a.force);
     tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
     tape::ImageWriteOptions wo{&code};
-    write_output(a.output, format->write(frames, wo), format->binary, a.force);
-    if (globals().verbosity > 0) say(in_name, std::to_string(frames.size()) + " frames written as " + std::string(format->id));
+    std::unique_ptr<tape::FileSource> source;
+    try {
+        source = std::make_unique<tape::FileSource>(a.input);
+    } catch (const tape::Error& e) {
+        fail(in_name, e);
+    }
+    // The text is read, encoded and written a chunk at a time; the output is created once the first
+    // chunk has encoded, so that a text the code cannot carry leaves nothing behind.
+    std::unique_ptr<tape::OutputFile> out;
+    std::uint64_t written = 0;
+    auto emit = [&](const std::vector<tape::Frame>& frames) {
+        if (!out) {
+            try {
+                out = std::make_unique<tape::OutputFile>(a.output, a.force);
+            } catch (const tape::Error& e) {
+                fail(a.output == "-" ? "stdout" : a.output, e);
+            }
+        }
+        wo.first_number = written + 1;
+        wo.header = written == 0;
+        try {
+            out->write(format->write(frames, wo));
+        } catch (const tape::Error& e) {
+            fail(a.output == "-" ? "stdout" : a.output, e);
+        }
+        written += frames.size();
+    };
+    std::vector<tape::Frame> frames;
+    try {
+        tape::Encoder encoder(o);
+        std::vector<std::uint8_t> buffer(128 << 10);
+        for (std::size_t n; (n = source->read(buffer)) > 0;) {
+            encoder.feed(std::string_view(reinterpret_cast<const char*>(buffer.data()), n), frames);
+            if (!frames.empty()) emit(frames);
+            frames.clear();
+        }
+        encoder.finish(frames);
+    } catch (const tape::Error& e) {
+        if (out) out->discard();
+        fail(in_name, e);
+    }
+    emit(frames);
+    try {
+        out->commit();
+    } catch (const tape::Error& e) {
+        fail(a.output == "-" ? "stdout" : a.output, e);
+    }
+    if (globals().verbosity > 0) say(in_name, std::to_string(written) + " frames written as " + std::string(format->id));
 }
 
 }  // namespace
@@ -54,10 +92,14 @@ void add_encode(CLI::App& app) {
     sub->add_option("input", a->input, "Text program; - or nothing for stdin");
     sub->add_option("-o,--output", a->output, "Tape image to write; - for stdout (raw refuses a terminal)");
     add_code_options(sub, a->choice, false);
-    sub->add_option("--leader", a->leader, "Blank frames before the program (10 frames = 25.4 mm)")->capture_default_str();
-    sub->add_option("--trailer", a->trailer, "Blank frames after the program")->capture_default_str();
-    sub->add_option("--format,-f", a->format, "Image format: raw or holes (default: by extension of OUT, else raw)")
-        ->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_option("--leader", a->leader, "Blank frames before the program (10 frames = 25.4 mm)")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str();
+    sub->add_option("--trailer", a->trailer, "Blank frames after the program")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str();
+    sub->add_option("--format,-f", a->format, "Image format: " + format_choices(true) + " (default: by extension of OUT, else raw)")
+        ->check(format_check(true));
     sub->add_flag("--force", a->force, "Replace an existing OUT; write raw to a terminal");
     sub->callback([a] { run(*a); });
 }

@@ -12,10 +12,10 @@ struct FormatArgs {
     ProgramSource source;
     std::string out_code = "iso";
     bool strip_zeros = false, spaces = false, force = false;
+    const CLI::Option* from_option = nullptr;  // given or not: "--from ''" is an error, not "no --from"
 };
 
-std::optional<tape::FormatSpec> parse_spec(const std::string& text) {
-    if (text.empty()) return std::nullopt;
+tape::FormatSpec parse_spec(const std::string& text) {
     try {
         return tape::parse_format_spec(text);
     } catch (const tape::Error& e) {
@@ -24,8 +24,9 @@ std::optional<tape::FormatSpec> parse_spec(const std::string& text) {
 }
 
 void run(const FormatArgs& a) {
-    tape::FormatSpec spec = *parse_spec(a.spec);
-    std::optional<tape::FormatSpec> from = parse_spec(a.from);
+    tape::FormatSpec spec = parse_spec(a.spec);
+    std::optional<tape::FormatSpec> from;
+    if (a.from_option->count() > 0) from = parse_spec(a.from);
     ProgramInput in = load_program(a.input, a.source);
     const std::string sep = a.spaces ? " " : "";
     std::string text = in.tape.label;
@@ -36,6 +37,12 @@ void run(const FormatArgs& a) {
                                                                  "taken as whole numbers (give --from SPEC for implied points)");
         text += (in.tape.physical_start && &p == &in.tape.programs.front() ? "%%" : "%") + p.number.value_or("") + "\n";
         for (const auto& b : p.blocks) {
+            if (b.skip && !spec.block_skip) {
+                // Dropping the '/' would make an optional block mandatory: refuse instead.
+                say(in.name, position_text(b.where, in.from_tape) + ": block " + std::to_string(b.ordinal) +
+                                 ": the controller format has no '/' block skip");
+                failed = true;
+            }
             std::string line = b.skip ? "/" : "";
             auto put = [&](const tape::Word& w) {
                 try {
@@ -83,7 +90,8 @@ void add_format(CLI::App& app) {
     auto* sub = app.add_subcommand("format", "Rewrite a program for a controller's format (ГОСТ 20999-83 §9)");
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
     sub->add_option("--spec,-s", a->spec, "The controller's format, e.g. \"N03 G02 X+053 Y+053 F031 M02\"")->required();
-    sub->add_option("--from", a->from, "The format the program is written in, for words with an implied point");
+    a->from_option =
+        sub->add_option("--from", a->from, "The format the program is written in, for words with an implied point");
     sub->add_option("-o,--output", a->output, "Where to write: text, or a tape image when OUT has an image extension");
     sub->add_option("--to", a->out_format, "Output: text, raw or holes (default: by the extension of OUT, else text)")
         ->check(CLI::IsMember({"text", "raw", "holes"}));

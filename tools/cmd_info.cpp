@@ -81,7 +81,7 @@ void add_info(CLI::App& app) {
     sub->add_option("--code,-c", a->code, "auto, iso or eia")->check(CLI::IsMember({"auto", "iso", "eia"}))->capture_default_str();
     sub->add_option("--parity,-p", a->parity, "Count parity errors against this rule (default: even, or what the tape uses)")
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}));
-    sub->add_option("--format,-f", a->format, "Image format of IN: raw or holes")->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))->check(format_check(false));
     sub->add_flag("--json", a->json, "One JSON object for other programs");
     sub->callback([a] { run(*a); });
 }

@@ -1,7 +1,10 @@
 // tape lint: check programs against ГОСТ 20999-83 and, with --spec, a controller's format.
+#include <map>
+
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "tape/lint.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 namespace {
@@ -24,14 +27,22 @@ void run(const LintArgs& a) {
     auto findings = tape::lint(in.tape, tape::LintOptions{spec ? &*spec : nullptr});
     std::string out;
     std::size_t errors = 0, warnings = 0;
+    std::map<std::string, std::uint64_t> shown, unlisted;  // by rule, for --max-errors
     for (const auto& f : findings) {
         errors += f.severity == tape::Severity::error;
         warnings += f.severity == tape::Severity::warning;
+        std::string rule(f.rule);
+        if (globals().max_errors != 0 && shown[rule] >= globals().max_errors) {
+            ++unlisted[rule];
+            continue;
+        }
+        ++shown[rule];
         out += in.name + ":" + position_text(f.where, in.from_tape) + (f.block ? ":block " + std::to_string(f.block) : "") + ": " +
                std::string(f.rule) + ": " + (f.severity == tape::Severity::error ? "" : std::string(tape::severity_name(f.severity)) + ": ") +
-               f.message + "\n";
+               tape::visible(f.message) + "\n";
     }
     write_output("-", out, false, false);
+    for (const auto& [rule, count] : unlisted) say_unlisted(in.name, count, rule + " finding(s)");
     if (globals().verbosity >= 0 && !findings.empty())
         say(in.name, std::to_string(errors) + " error(s), " + std::to_string(warnings) + " warning(s)");
     if (errors) throw Exit{bad_data};

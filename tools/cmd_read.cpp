@@ -1,11 +1,9 @@
 // tape read: the generic reader: frames from any device into a tape image, nothing lost.
 #include "cli_device.hpp"
+#include "cli_numbers.hpp"
 #include "commands.hpp"
 
 namespace cli {
-
-int receive_into_image(const std::string& device, const std::string& output, const std::string& format_id, bool force,
-                       tape::ReceiveOptions o, bool progress_forced, const char* verb);
 
 namespace {
 
@@ -22,15 +20,17 @@ void add_read(CLI::App& app) {
     auto* sub = app.add_subcommand("read", "Read a tape from a device into an image; ends at the end of the tape, a quiet line, a hang-up or Ctrl-C");
     sub->add_option("device", a->device, "Device string: file:PATH, serial:PATH?...")->required();
     sub->add_option("-o,--output", a->output, "Tape image to write (frames appended as they arrive, flushed every second)")->required();
-    sub->add_option("--timeout", a->timeout, "End after SECONDS without a frame (0: never)")->capture_default_str();
-    sub->add_option("--format,-f", a->format, "Image format: raw or holes (default: by extension, else raw)")->check(CLI::IsMember({"raw", "holes"}));
+    sub->add_option("--timeout", a->timeout, "End after SECONDS without a frame (0: never)")
+        ->check(real_number(0, max_timeout_s))
+        ->capture_default_str();
+    sub->add_option("--format,-f", a->format, "Image format: " + format_choices(true) + " (default: by extension, else raw)")->check(format_check(true));
     sub->add_flag("--force", a->force, "Replace an existing OUT");
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
     sub->callback([a] {
         tape::ReceiveOptions o;
-        o.idle_timeout = std::chrono::milliseconds(static_cast<long long>(a->timeout * 1000));
-        int status = receive_into_image(a->device, a->output, a->format, a->force, o, a->progress, "read");
-        if (status != ok) throw Exit{status};
+        o.idle_timeout = std::chrono::milliseconds(static_cast<long long>(a->timeout * 1000));  // at most a day
+        // The user stopping a reader (Ctrl-C, SIGTERM) is its normal end: exit 0, every frame kept.
+        receive_into_image(a->device, a->output, a->format, a->force, o, a->progress, "read");
     });
 }
 

@@ -1,7 +1,9 @@
 // tape search: what a tape reader searches for — main blocks, the rewind stop, programs, blocks.
 #include <charconv>
+#include <limits>
 
 #include "cli_common.hpp"
+#include "cli_numbers.hpp"
 #include "commands.hpp"
 #include "tape/search.hpp"
 
@@ -22,6 +24,9 @@ std::string hit(const ProgramInput& in, const tape::Location& where, const std::
     return position_text(where, in.from_tape) + (in.from_tape ? " (line " + std::to_string(where.line) + ")" : "") + ": " + what + "\n";
 }
 
+// Block numbers have at most 9 digits on any controller; more is a typing mistake, not a block.
+constexpr std::uint64_t max_block_number = 999999999;
+
 std::optional<long long> as_number(const std::string& s) {
     long long n = 0;
     auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
@@ -29,12 +34,21 @@ std::optional<long long> as_number(const std::string& s) {
     return n;
 }
 
+bool looks_numeric(const std::string& s) { return !s.empty() && s.find_first_not_of("+-0123456789") == std::string::npos; }
+
 void run(SearchArgs a, const CLI::App& sub) {
     std::optional<long long> main_number;
     if (a.main_value && !a.main_value->empty()) {
-        main_number = as_number(*a.main_value);
-        if (!main_number && a.input == "-") a.input = *a.main_value;  // "--main IN": the option took the file
-        else if (!main_number) fail("", tape::Errc::usage, "--main takes a block number, not '" + *a.main_value + "'");
+        if (looks_numeric(*a.main_value)) {
+            main_number = as_number(*a.main_value);
+            if (!main_number || *main_number < 0 || static_cast<std::uint64_t>(*main_number) > max_block_number)
+                fail("", tape::Errc::usage,
+                     "--main: must be a whole number from 0 to " + std::to_string(max_block_number) + ", not '" + *a.main_value + "'");
+        } else if (a.input == "-") {
+            a.input = *a.main_value;  // "--main IN": the option took the file
+        } else {
+            fail("", tape::Errc::usage, "--main takes a block number, not '" + *a.main_value + "'");
+        }
     }
     ProgramInput in = load_program(a.input, a.source);
     std::uint64_t from = tape::frame_offset(in.tape, a.from);
@@ -70,11 +84,13 @@ void add_search(CLI::App& app) {
                      ->expected(0, 1);
     auto* rewind = sub->add_flag("--rewind", a->rewind, "The '%' a rewinding reader stops at, before --from");
     auto* program = sub->add_option("--program", a->program, "The program numbered N (after '%')");
-    auto* block = sub->add_option("--block", a->block, "Blocks numbered N (N or ':' word)");
+    auto* block = sub->add_option("--block", a->block, "Blocks numbered N (N or ':' word)")->check(whole_number(0, max_block_number));
     main->excludes(rewind)->excludes(program)->excludes(block);
     rewind->excludes(program)->excludes(block);
     program->excludes(block);
-    sub->add_option("--from", a->from, "Frame (line, for text) to search from; default the start")->capture_default_str();
+    sub->add_option("--from", a->from, "Frame (line, for text) to search from; default the start")
+        ->check(whole_number(1, std::numeric_limits<std::int64_t>::max()))
+        ->capture_default_str();
     add_program_source_options(sub, a->source);
     sub->callback([a, sub] {
         if (!sub->count("--main") && !a->rewind && a->program.empty() && !a->block)

@@ -1,7 +1,9 @@
 // tape: punched paper tape for NC machine tools — encode, decode, show, inspect.
 #include <iostream>
+#include <limits>
 
 #include "cli_common.hpp"
+#include "cli_numbers.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
@@ -16,10 +18,15 @@ int main(int argc, char** argv) {
                           "Say more on stderr (the detected code, counts)");
     app.add_flag_function("-q,--quiet", [&g](std::int64_t n) { g.verbosity -= static_cast<int>(n); },
                           "Say less on stderr");
+    app.add_option("--max-errors", g.max_errors,
+                   "Messages of one kind (parity errors, a lint rule) before the rest are only counted; 0: all")
+        ->check(cli::whole_number(0, std::numeric_limits<std::uint32_t>::max()))
+        ->capture_default_str();
     app.add_option("--eia-table", g.eia_table, "A corrected EIA code table (format of data/eia-rs244.tab)")
         ->envname("TAPE_EIA_TABLE");
     app.footer("Exit status: 0 ok, 1 bad data in the input, 2 usage error, 3 I/O or device failure,\n"
-               "130 a device run stopped with Ctrl-C. See tape(1), tape-image(5), tape-devices(7).");
+               "130 feed, receive or punch stopped with Ctrl-C (read and emulate end 0 on Ctrl-C).\n"
+               "See tape(1), tape-image(5), tape-devices(7).");
     cli::add_encode(app);
     cli::add_decode(app);
     cli::add_show(app);
@@ -34,6 +41,7 @@ int main(int argc, char** argv) {
     cli::add_read(app);
     cli::add_punch(app);
     cli::add_devices(app);
+    cli::install_output_cleanup();
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <string_view>
@@ -24,13 +25,15 @@ struct DecodeOptions {
     Charset charset = Charset::ascii;
     bool keep_going = false;             ///< report every bad frame instead of stopping at the first
     bool positions = false;              ///< fill DecodeResult::frame_of
+    std::size_t max_diagnostics = 0;     ///< keep at most this many of each kind, count the rest (0: all)
     const CodeTable* eia_table = nullptr;///< a corrected EIA table; nullptr = built-in
 };
 
 struct DecodeResult {
     std::string text;                    ///< the characters, UTF-8; LF ends a block
     std::vector<std::uint64_t> frame_of; ///< with positions: 0-based frame index of each byte of text
-    std::vector<Diagnostic> diagnostics; ///< one per bad frame, in tape order
+    std::vector<Diagnostic> diagnostics; ///< one per bad frame, in tape order, up to max_diagnostics a kind
+    std::map<Errc, std::uint64_t> unlisted; ///< bad frames beyond max_diagnostics, by kind
     bool complete = true;                ///< false when decoding stopped at the first bad frame
 
     bool ok() const { return diagnostics.empty(); }
@@ -40,6 +43,35 @@ struct DecodeResult {
 /// or is no character of the code gives a Diagnostic (Errc::parity / Errc::not_in_code) and stops
 /// the decoding unless keep_going, in which case the frame is marked in the text.
 DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options);
+
+/// The same, a chunk at a time, in bounded memory: frame numbers, the КОИ-7 shift and the message
+/// limit carry over between chunks, so the result is the same however the tape is cut.
+class Decoder {
+public:
+    explicit Decoder(const DecodeOptions& options);
+
+    /// Decodes the next frames, appending to out.text (and out.frame_of with positions, counted from
+    /// the start of the tape) and out.diagnostics. The caller may empty out between calls. Returns
+    /// false once decoding has stopped at a bad frame (without keep_going); later calls take nothing.
+    bool feed(std::span<const Frame> frames, DecodeResult& out);
+
+    std::uint64_t frames_seen() const { return next_index_; }
+    /// Bad frames in all, listed or not.
+    std::uint64_t bad_frames() const { return parity_seen_ + other_seen_; }
+    /// Bad frames beyond max_diagnostics, by kind.
+    std::map<Errc, std::uint64_t> unlisted() const;
+
+private:
+    void note_bad(Frame f, std::uint64_t index, DecodeResult& out);
+    void finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from);
+
+    DecodeOptions options_;
+    FrameCode code_;
+    std::uint64_t next_index_ = 0;
+    std::uint64_t parity_seen_ = 0, other_seen_ = 0;
+    bool cyrillic_ = false;
+    bool stopped_ = false;
+};
 
 /// The hot loop, for callers that bring their own buffer. Decodes frames into out (room for
 /// frames.size() bytes, 7-bit characters, no positions) until the first frame that is neither a

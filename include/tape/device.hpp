@@ -69,6 +69,10 @@ struct DeviceBackend {
     std::unique_ptr<Transport> (*open)(std::string_view rest, DeviceUse use, bool replace);
 };
 
+/// The file a "file:" device string's rest names, checked as the file backend checks it (no settings
+/// after '?'): for callers that write a whole image to it at once. Throws Error(Errc::usage).
+std::string file_device_path(std::string_view rest);
+
 /// All backends, in the order `tape devices` lists them.
 std::span<const DeviceBackend> device_backends();
 

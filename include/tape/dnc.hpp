@@ -28,12 +28,20 @@ struct LineProgress {
     double rate = 0;           ///< frames per second so far
 };
 
+/// The slowest pacing a rate may ask for: one frame a day. A slower rate is a mistake, and its period
+/// would not fit the clock's durations.
+inline constexpr double min_frame_rate = 1.0 / 86400;
+
+/// The time between frames at rate frames per second (zero when that is below the clock's resolution).
+/// Throws Error(Errc::usage) unless rate is a finite number from min_frame_rate up.
+std::chrono::steady_clock::duration frame_period(double rate);
+
 struct SendOptions {
     double rate = 0;                          ///< frames per second; 0: the line's rate, or unpaced for files
     std::optional<Flow> flow{};               ///< default: what the device string says
     bool wait_xon = false;                    ///< send nothing before the first DC1 from the other side
     std::chrono::milliseconds xon_timeout{0}; ///< with wait_xon: give up after this long (0: wait for ever)
-    std::uint8_t xon = dc1, xoff = dc3;       ///< the flow characters (Fanuc-style DC1/DC3 by default)
+    std::uint8_t xon = dc1, xoff = dc3;       ///< the flow characters (Fanuc-style DC1/DC3 by default), bit 8 ignored
     const std::atomic<bool>* stop = nullptr;  ///< set (e.g. by SIGINT) to stop after the current frame
     std::function<void(const LineProgress&)> progress{};  ///< called a few times a second
 };
@@ -46,13 +54,16 @@ struct SendResult {
 
 /// Sends frames in order, each exactly once: paced, paused by DC3 (or CTS dropped) before the next
 /// frame and resumed by DC1, with track 8 dropped on a 7-bit line (the UART adds the parity).
-/// Throws Error(Errc::io) naming the frame when the other side hangs up or no DC1 comes in time.
+/// Throws Error(Errc::io) naming the frame when the other side hangs up or no DC1 comes in time;
+/// Error(Errc::usage), before sending anything, for a rate frame_period refuses, RTS/CTS on a line
+/// without modem lines, the same character for XON and XOFF, or frames a 7-bit line cannot carry.
 SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock = system_clock());
 
 struct ReceiveOptions {
     std::chrono::milliseconds idle_timeout{0};  ///< end after this long without a frame (0: never)
     bool until_program_end = false;             ///< end at the '%' after M02/M30
     Code code = Code::iso;                      ///< to recognise M02/M30 and '%'
+    Parity parity = Parity::even;               ///< ISO only: the track 8 rule, also to restore track 8 on a 7-bit line
     const CodeTable* eia_table = nullptr;       ///< a corrected EIA table; nullptr = built-in
     bool drop_flow_codes = false;               ///< DC1-DC4 are line control, not tape: not kept
     const std::atomic<bool>* stop = nullptr;
@@ -67,8 +78,13 @@ struct ReceiveResult {
 };
 
 /// Receives frames until the end the options ask for. Frames go to sink as they arrive, so nothing
-/// already received is lost whatever ends the run. On stop it sends DC3 and still takes what the
-/// other side sends in the next moments (controllers may send up to 10 characters after DC3).
+/// already received is lost whatever ends the run. On a line with modem lines RTS is asserted while
+/// receiving and dropped at the end. On stop it sends DC3 (and drops RTS) and still takes what the
+/// other side sends in the next moments (controllers may send up to 10 characters after DC3), by the
+/// same rules. With drop_flow_codes an ISO DC1-DC4 is dropped in either parity (0x13 and 0x93 are
+/// both DC3). On a 7-bit line (Transport::seven_bit) track 8 is restored by the parity rule, as the
+/// encoder punches it (mark: always; space, none: never; even, odd: by the count of holes; blank tape
+/// stays blank); such a line cannot carry EIA (Error(Errc::usage) for Code::eia).
 ReceiveResult receive_frames(Transport& line, const ReceiveOptions& options, Clock& clock = system_clock());
 
 struct EmulatorOptions {
@@ -78,6 +94,7 @@ struct EmulatorOptions {
     std::uint8_t search = ':';                ///< then optional digits: search forward to that main block
     std::uint8_t rewind = '%';                ///< rewind to the '%' stop before the current position
     Code code = Code::iso;
+    Parity parity = Parity::even;             ///< ISO only: the track 8 rule the tape was punched with
     const CodeTable* eia_table = nullptr;     ///< a corrected EIA table; nullptr = built-in
     std::optional<Flow> flow{};               ///< rtscts: CTS starts and stops the reader instead of DC1/DC3
     const std::atomic<bool>* stop = nullptr;  ///< ends the emulation
@@ -85,13 +102,16 @@ struct EmulatorOptions {
 };
 
 struct EmulatorResult {
-    std::uint64_t frames_sent = 0;
+    std::uint64_t frames_sent = 0;  ///< counting each frame again after a rewind
     std::uint64_t starts = 0, stops = 0, rewinds = 0, searches = 0;
 };
 
 /// Acts as a tape reader holding tape: on DC1 (or CTS) sends frames at the rate, on DC3 stops before
-/// the next frame, at the end of a program (the block with M02/M30) rewinds to its '%' and waits, and
-/// on request searches forward to a main block or rewinds. Runs until stop is set or the line hangs up.
+/// the next frame (the line is looked at right before each one), at the end of a program (the block
+/// with M02/M30) rewinds to its '%' and waits, and on request searches forward to a main block or
+/// rewinds. Runs until stop is set. A hang-up, while sending or not, throws Error(Errc::io) ending
+/// "; N frame(s) sent"; a rate frame_period refuses or RTS/CTS on a line without modem lines throws
+/// Error(Errc::usage) before anything is sent.
 EmulatorResult emulate_reader(Transport& line, std::span<const Frame> tape, const EmulatorOptions& options,
                               Clock& clock = system_clock());
 

@@ -3,17 +3,22 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "tape/charset.hpp"
 #include "tape/code.hpp"
+#include "tape/error.hpp"
 #include "tape/frame.hpp"
 
 namespace tape {
 
 inline constexpr std::size_t default_leader = 100;  ///< blank frames, 254 mm of tape
 inline constexpr std::size_t default_trailer = 100;
+/// The longest blank leader or trailer: 100 000 frames, 254 m of tape. A larger count is a mistake
+/// (a negative number wrapped round, say), not a tape.
+inline constexpr std::size_t max_blank_frames = 100000;
 
 struct EncodeOptions {
     Code code = Code::iso;
@@ -26,8 +31,35 @@ struct EncodeOptions {
 };
 
 /// Each text line is a block: LF or CR LF in the text, LF (EIA: EOB) on tape.
-/// Throws Error(Errc::bad_text) naming line and column of the first character the code cannot carry.
+/// Throws Error(Errc::bad_text) naming line and column of the first character the code cannot carry,
+/// Error(Errc::usage) for a leader or trailer over max_blank_frames.
 std::vector<Frame> encode(std::string_view text, const EncodeOptions& options);
+
+/// The same, a chunk at a time, in bounded memory: the text may be cut anywhere (inside a UTF-8
+/// character or between CR and LF); the КОИ-7 shift and line/column for messages carry over, so the
+/// frames are the same however the text is cut. The leader comes with the first frames, the trailer
+/// from finish(). Throws as encode() does.
+class Encoder {
+public:
+    explicit Encoder(const EncodeOptions& options);
+    /// Appends the frames for the next piece of text to out.
+    void feed(std::string_view text, std::vector<Frame>& out);
+    /// Appends what was held back, the closing SI of КОИ-7 text, and the trailer.
+    void finish(std::vector<Frame>& out);
+
+private:
+    void encode_piece(std::string_view text, std::vector<Frame>& out);
+    void to_seven_bit(std::string_view text);
+
+    EncodeOptions options_;
+    FrameCode code_;
+    bool leader_done_ = false;
+    bool cyrillic_ = false;
+    std::string held_;                 ///< an unfinished character or CR from the end of the last chunk
+    Position position_{.line = 1, .column = 1};  ///< of the next byte, for messages
+    std::string converted_;
+    std::vector<std::size_t> origin_;
+};
 
 /// The hot loop: 7-bit characters -> frames into out (room for chars.size() frames).
 /// Returns the index of the first character the code cannot carry, or chars.size().

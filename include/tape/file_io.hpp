@@ -19,7 +19,72 @@ std::vector<std::uint8_t> read_file(const std::string& path);
 /// Writes data to path atomically: a temporary file in the same folder, flushed to disk, then
 /// renamed over path, so a failure leaves no half file. Unless overwrite, an existing path is left
 /// alone and Error(Errc::usage) is thrown. Throws Error(Errc::io) when the system refuses.
+/// With overwrite, a replaced file's permissions are kept; a symbolic link is followed and the file it
+/// names replaced; other hard links keep the old contents. A character device, FIFO, socket or
+/// /dev/stdout-style descriptor is written into directly, never replaced; a block device is refused.
 void write_file_atomic(const std::string& path, std::string_view data, bool overwrite);
+
+/// An output written as it comes, in bounded memory, and made final by commit(): a file is written to a
+/// temporary file beside it and renamed over path at commit (with the rules of write_file_atomic), so
+/// an output that is not committed (an error, an exception) leaves nothing under path. Standard output
+/// ("-" or empty), character devices, FIFOs and /dev/stdout-style descriptors are written directly.
+class OutputFile {
+public:
+    /// Throws Error(Errc::usage) for an existing path without overwrite, Error(Errc::io) when the
+    /// system refuses.
+    OutputFile(const std::string& path, bool overwrite);
+    ~OutputFile();
+    OutputFile(const OutputFile&) = delete;
+    OutputFile& operator=(const OutputFile&) = delete;
+
+    void write(std::string_view data);
+    /// Flushes to disk and puts the file in place.
+    void commit();
+    /// Removes the temporary file; nothing appears under path.
+    void discard() noexcept;
+
+private:
+    std::string path_, final_path_, temporary_;
+    int fd_ = -1;
+    bool direct_ = false, close_fd_ = false, overwrite_ = false, committed_ = false;
+};
+
+/// Where bytes come from, a chunk at a time: a file, standard input, a pipe.
+class ByteSource {
+public:
+    virtual ~ByteSource() = default;
+    /// Up to buffer.size() bytes; 0 only at the end. May wait (a pipe, a terminal).
+    virtual std::size_t read(std::span<std::uint8_t> buffer) = 0;
+};
+
+/// Bytes already in memory, as a source.
+class MemorySource : public ByteSource {
+public:
+    explicit MemorySource(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
+    std::size_t read(std::span<std::uint8_t> buffer) override;
+
+private:
+    std::span<const std::uint8_t> bytes_;
+};
+
+/// A file, or standard input for "-". Throws Error(Errc::io) with the system's reason.
+class FileSource : public ByteSource {
+public:
+    explicit FileSource(const std::string& path);
+    ~FileSource() override;
+    FileSource(const FileSource&) = delete;
+    FileSource& operator=(const FileSource&) = delete;
+    std::size_t read(std::span<std::uint8_t> buffer) override;
+
+private:
+    void close() noexcept;
+    std::string path_;
+    int fd_ = -1;
+};
+
+/// Removes the temporary file of a write_file_atomic under way, if any. Async-signal-safe: for a
+/// SIGINT/SIGTERM handler, so that an interrupted run leaves no OUT.tmpXXXXXX behind.
+void discard_pending_output() noexcept;
 
 /// An image written as frames arrive from a device: appended, flushed to disk at least once a second,
 /// so that a run cut short keeps every frame already received.

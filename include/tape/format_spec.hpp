@@ -37,7 +37,8 @@ struct FormatSpec {
     const WordFormat* find(char address) const;
 };
 
-/// Parses the notation. Throws Error(Errc::usage) saying which part is not understood.
+/// Parses the notation. Throws Error(Errc::usage) saying which part is not understood, or
+/// "empty format specification" when the text holds nothing but blanks.
 FormatSpec parse_format_spec(std::string_view text);
 
 /// An exact decimal value: sign, whole digits (no leading zeros), fraction digits (no trailing zeros).
@@ -57,8 +58,10 @@ std::vector<std::pair<std::string_view, std::string>> check_word(const Word& w, 
                                                                   bool program_has_points);
 
 /// The word rewritten for the format: all digits the format has (leading zeros left out where the
-/// format allows and strip_zeros), the sign when the format has one, an explicit point only with DS.
-/// Throws Error(Errc::bad_text) when the value does not fit.
+/// format allows and strip_zeros), the sign when the format has one, an explicit point only with DS
+/// (".5" when the format has no digits before the point). What it returns passes check_word for spec
+/// and has the same value. Throws Error(Errc::bad_text) when the value does not fit, or for a main
+/// block number (':') when the format has no ':'.
 std::string format_word(const Word& w, const FormatSpec& spec, const FormatSpec* from, bool strip_zeros);
 
 }  // namespace tape

@@ -10,12 +10,14 @@ inline constexpr std::uint8_t dc2 = 0x12;  ///< punch on
 inline constexpr std::uint8_t dc3 = 0x13;  ///< XOFF, stop reader
 inline constexpr std::uint8_t dc4 = 0x14;  ///< punch off
 
-/// XON/XOFF as a sender sees it: DC3 pauses, DC1 resumes. The characters are configurable.
+/// XON/XOFF as a sender sees it: DC3 pauses, DC1 resumes. The characters are configurable. Bit 8 is
+/// not compared: a control that makes even parity on an 8N1 line sends DC3 as 0x93.
 class XonXoff {
 public:
-    explicit XonXoff(std::uint8_t xon = dc1, std::uint8_t xoff = dc3) : xon_(xon), xoff_(xoff) {}
-    /// Takes one byte from the other side; true when it was XON or XOFF.
+    explicit XonXoff(std::uint8_t xon = dc1, std::uint8_t xoff = dc3) : xon_(xon & 0x7F), xoff_(xoff & 0x7F) {}
+    /// Takes one byte from the other side; true when it was XON or XOFF (in either parity).
     bool receive(std::uint8_t b) {
+        b &= 0x7F;
         if (b == xoff_) {
             if (!paused_) ++pauses_;
             paused_ = true;

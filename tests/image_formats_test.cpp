@@ -1,0 +1,97 @@
+// Contract test over the image format table: every format, the ones added later included, writes any
+// tape and reads it back frame for frame, and content detection does not take its files for another's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <numeric>
+
+#include "tape/code.hpp"
+#include "tape/error.hpp"
+#include "tape/image.hpp"
+
+using namespace tape;
+
+namespace {
+
+std::vector<std::string> format_ids() {
+    std::vector<std::string> ids;
+    for (const auto& f : image_formats()) ids.emplace_back(f.id);
+    return ids;
+}
+
+const ImageFormat& format(const std::string& id) {
+    const ImageFormat* f = find_image_format(id);
+    if (!f) throw std::logic_error("no format " + id);
+    return *f;
+}
+
+std::vector<Frame> every_frame_value() {
+    std::vector<Frame> frames(256);
+    std::iota(frames.begin(), frames.end(), 0);
+    return frames;
+}
+
+std::span<const std::uint8_t> bytes_of(const std::string& file) {
+    return {reinterpret_cast<const std::uint8_t*>(file.data()), file.size()};
+}
+
+// What the file backend and the CLI look at to choose a format by content.
+constexpr std::size_t detection_prefix = 4096;
+
+class ImageFormatContract : public ::testing::TestWithParam<std::string> {};
+
+}  // namespace
+
+TEST_P(ImageFormatContract, DescribesItselfInTheTable) {
+    const ImageFormat& f = format(GetParam());
+    EXPECT_FALSE(f.description.empty());
+    EXPECT_NE(f.match, nullptr);
+    EXPECT_NE(f.read, nullptr);
+    EXPECT_NE(f.write, nullptr);
+    auto ids = format_ids();
+    EXPECT_EQ(std::count(ids.begin(), ids.end(), GetParam()), 1) << "an id names one format";
+    for (auto ext : f.extensions) {
+        EXPECT_TRUE(ext.starts_with(".")) << ext;
+        EXPECT_EQ(image_format_for_path("dir/part" + std::string(ext)), &f) << ext;
+    }
+}
+
+// A tape holding every frame value, annotated by either code or not at all, reads back the same.
+TEST_P(ImageFormatContract, WritesAndReadsBackEveryFrameValue) {
+    const ImageFormat& f = format(GetParam());
+    const auto frames = every_frame_value();
+    const FrameCode iso = FrameCode::iso(), eia = FrameCode::eia();
+    for (const FrameCode* annotate : {static_cast<const FrameCode*>(nullptr), &iso, &eia}) {
+        SCOPED_TRACE(annotate ? std::string(code_name(annotate->code())) : "no annotation");
+        std::string file = f.write(frames, ImageWriteOptions{.annotate = annotate});
+        std::vector<Frame> back;
+        ASSERT_NO_THROW(back = f.read(bytes_of(file)));
+        EXPECT_EQ(back, frames);
+    }
+}
+
+// Detection on the written file picks this format, or a more general one that reads the file as
+// the same frames; never one that would read something else.
+TEST_P(ImageFormatContract, DetectionPicksItOrAMoreGeneralOne) {
+    const ImageFormat& f = format(GetParam());
+    const auto frames = every_frame_value();
+    std::string file = f.write(frames, ImageWriteOptions{});
+    auto bytes = bytes_of(file);
+    auto prefix = bytes.first(std::min(bytes.size(), detection_prefix));
+    EXPECT_GT(f.match(prefix), 0) << "the format does not know its own file";
+    const ImageFormat& picked = detect_image_format(prefix);
+    if (&picked == &f) return;
+    EXPECT_GE(picked.match(prefix), f.match(prefix));
+    std::vector<Frame> read_as_picked;
+    ASSERT_NO_THROW(read_as_picked = picked.read(bytes)) << "detection picked " << picked.id;
+    EXPECT_EQ(read_as_picked, frames) << "detection picked " << picked.id << ", which reads other frames";
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryFormat, ImageFormatContract, ::testing::ValuesIn(format_ids()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param;
+                             for (char& c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
