@@ -260,15 +260,15 @@ TEST(CliPunch, InterruptedFileOutputIsWholeOrAbsent) {
         for (const auto& e : std::filesystem::directory_iterator(dir.path))
             names.push_back(e.path().filename().string());
         std::sort(names.begin(), names.end());
-        if (status != 0) EXPECT_EQ(status, 130) << delay.count() << " ms";
+        EXPECT_TRUE(status == 0 || status == 130) << "status " << status << ", " << delay.count() << " ms";
         // A Ctrl-C just after the copy was put in place still ends the run with 130: the copy is whole then.
         bool copied = std::find(names.begin(), names.end(), "copy.ptp") != names.end();
-        if (status == 0) EXPECT_TRUE(copied) << delay.count() << " ms";
+        EXPECT_TRUE(copied || status != 0) << delay.count() << " ms";
         std::vector<std::string> expected = {"big.ptp", "stderr", "stdout"};
         if (copied) expected.insert(expected.begin() + 1, "copy.ptp");
         EXPECT_EQ(names, expected) << delay.count() << " ms: a temporary file left behind?";
-        if (copied)
-            EXPECT_TRUE(read_text(dir.file("copy.ptp")) == big) << "copy.ptp differs from the image, " << delay.count() << " ms";
+        EXPECT_TRUE(!copied || read_text(dir.file("copy.ptp")) == big)
+            << "copy.ptp differs from the image, " << delay.count() << " ms";
     }
 }
 
