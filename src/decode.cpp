@@ -1,9 +1,10 @@
 // Decoder: 8-track frames -> ISO 7-bit characters (ISO with a parity track, or EIA by table).
 // Blank tape and DEL are skipped; bad frames are reported, never repaired.
+#include "tape/decode.hpp"
+
 #include <cstring>
 
 #include "swar.hpp"
-#include "tape/decode.hpp"
 
 namespace tape {
 namespace {
@@ -46,8 +47,10 @@ std::size_t table_run(const FrameCode& code, const Frame* in, std::size_t n, cha
     std::size_t w = 0, i = 0;
     for (; i < n; ++i) {
         FrameKind k = code.kind(in[i]);
-        if (k == FrameKind::character) out[w++] = code.character(in[i]);
-        else if (k != FrameKind::blank && k != FrameKind::rubout) break;
+        if (k == FrameKind::character)
+            out[w++] = code.character(in[i]);
+        else if (k != FrameKind::blank && k != FrameKind::rubout)
+            break;
     }
     *written = w;
     return i;
@@ -60,7 +63,8 @@ constexpr char bad_sentinel = '\x80';
 
 Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t index) {
     bool parity = code.kind(f) == FrameKind::parity_error;
-    std::string what = parity ? "parity error" : (code.code() == Code::eia ? "not an EIA character" : "not a character");
+    std::string what =
+        parity ? "parity error" : (code.code() == Code::eia ? "not an EIA character" : "not a character");
     return Diagnostic{parity ? Errc::parity : Errc::not_in_code, Position{.frame = index + 1},
                       what + ", holes " + holes_picture(f)};
 }
@@ -103,10 +107,16 @@ void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t posit
     for (std::size_t i = 0; i < added.size(); ++i) {
         auto c = static_cast<unsigned char>(added[i]);
         std::string_view piece(&added[i], 1);
-        if (c == static_cast<unsigned char>(bad_sentinel)) piece = bad_frame_marker;
-        else if (options_.charset == Charset::koi7 && c == 0x0E) { cyrillic_ = true; continue; }
-        else if (options_.charset == Charset::koi7 && c == 0x0F) { cyrillic_ = false; continue; }
-        else if (cyrillic_ && !koi7_cyrillic(c).empty()) piece = koi7_cyrillic(c);
+        if (c == static_cast<unsigned char>(bad_sentinel))
+            piece = bad_frame_marker;
+        else if (options_.charset == Charset::koi7 && c == 0x0E) {
+            cyrillic_ = true;
+            continue;
+        } else if (options_.charset == Charset::koi7 && c == 0x0F) {
+            cyrillic_ = false;
+            continue;
+        } else if (cyrillic_ && !koi7_cyrillic(c).empty())
+            piece = koi7_cyrillic(c);
         text += piece;
         if (positions) pos.insert(pos.end(), piece.size(), out.frame_of[positions_from + i]);
     }

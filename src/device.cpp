@@ -19,7 +19,8 @@ std::unique_ptr<Transport> open_device(std::string_view device, DeviceUse use, b
     auto colon = device.find(':');
     std::string known;
     for (const auto& b : backends) {
-        if (colon != std::string_view::npos && device.substr(0, colon) == b.prefix) return b.open(device.substr(colon + 1), use, replace);
+        if (colon != std::string_view::npos && device.substr(0, colon) == b.prefix)
+            return b.open(device.substr(colon + 1), use, replace);
         known += (known.empty() ? "" : ", ") + std::string(b.prefix) + ":";
     }
     throw Error(Errc::usage, "'" + std::string(device) + "' names no device; a device string starts with " + known);

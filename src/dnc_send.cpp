@@ -36,8 +36,10 @@ public:
             if (flow_ == Flow::xonxoff) take_input(0ms, i);
             while (blocked() && !stopped()) {
                 report(i, frames.size(), start, true);
-                if (flow_ == Flow::xonxoff) take_input(50ms, i);
-                else clock_.sleep_until(clock_.now() + 5ms);
+                if (flow_ == Flow::xonxoff)
+                    take_input(50ms, i);
+                else
+                    clock_.sleep_until(clock_.now() + 5ms);
             }
             if (stopped()) {
                 r.stopped = true;
@@ -47,7 +49,8 @@ public:
             try {
                 line_.write({&byte, 1});
             } catch (const Error& e) {
-                throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(i + 1) + " of " + std::to_string(frames.size()) + ")");
+                throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(i + 1) + " of " +
+                                          std::to_string(frames.size()) + ")");
             }
             r.sent = i + 1;
             if (o_.progress && clock_.now() - last_report > 250ms) {
@@ -79,7 +82,9 @@ private:
         std::uint8_t buf[64];
         ReadResult got = line_.read(buf, wait);
         for (std::size_t k = 0; k < got.count; ++k) xonxoff_.receive(buf[k]);
-        if (got.end) throw Error(Errc::io, line_.name() + ": the other side hung up after " + std::to_string(frame) + " frame(s)");
+        if (got.end)
+            throw Error(Errc::io,
+                        line_.name() + ": the other side hung up after " + std::to_string(frame) + " frame(s)");
     }
 
     void wait_for_xon() {
@@ -98,7 +103,8 @@ private:
     void report(std::uint64_t done, std::uint64_t total, Clock::time_point start, bool paused) {
         if (!o_.progress) return;
         double seconds = std::chrono::duration<double>(clock_.now() - start).count();
-        o_.progress(LineProgress{done, total, xonxoff_.pauses(), paused, seconds > 0 ? static_cast<double>(done) / seconds : 0});
+        o_.progress(LineProgress{done, total, xonxoff_.pauses(), paused,
+                                 seconds > 0 ? static_cast<double>(done) / seconds : 0});
     }
 };
 

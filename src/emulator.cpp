@@ -11,7 +11,9 @@ namespace {
 
 using namespace std::chrono_literals;
 
-bool is_char(const FrameCode& code, Frame f, char c) { return code.kind(f) == FrameKind::character && code.character(f) == c; }
+bool is_char(const FrameCode& code, Frame f, char c) {
+    return code.kind(f) == FrameKind::character && code.character(f) == c;
+}
 
 class Emulator {
 public:
@@ -65,7 +67,8 @@ public:
             next_ += period;
             if (clock_.now() > next_ + 10 * period) next_ = clock_.now();  // late: no burst to catch up
             Frame sent = tape_[pos_++];
-            if (code_.kind(sent) == FrameKind::character && watch_.feed(code_.character(sent)) == ProgramEndWatch::Event::program_end) {
+            if (code_.kind(sent) == FrameKind::character &&
+                watch_.feed(code_.character(sent)) == ProgramEndWatch::Event::program_end) {
                 std::size_t stop = seek_rewind_stop(tape_, pos_, code_);
                 log("end of program");
                 set_running(false);
@@ -110,7 +113,8 @@ private:
 
     void finish_search() {
         std::optional<long long> number;
-        if (search_digits_ && !search_digits_->empty() && search_digits_->size() < 18) number = std::stoll(*search_digits_);
+        if (search_digits_ && !search_digits_->empty() && search_digits_->size() < 18)
+            number = std::stoll(*search_digits_);
         search_digits_.reset();
         ++r_.searches;
         auto hit = seek_main_block(tape_, pos_, code_, number);
@@ -158,7 +162,8 @@ private:
 
 }  // namespace
 
-EmulatorResult emulate_reader(Transport& line, std::span<const Frame> tape, const EmulatorOptions& options, Clock& clock) {
+EmulatorResult emulate_reader(Transport& line, std::span<const Frame> tape, const EmulatorOptions& options,
+                              Clock& clock) {
     return Emulator(line, tape, options, clock).run();
 }
 

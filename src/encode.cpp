@@ -1,10 +1,11 @@
 // Encoder: text program -> 8-track frames in ISO (parity on track 8) or EIA (by table).
+#include "tape/encode.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <string>
 
 #include "swar.hpp"
-#include "tape/encode.hpp"
 #include "tape/error.hpp"
 #include "tape/utf8_text.hpp"
 #include "utf8.hpp"
@@ -73,9 +74,12 @@ Position advance(Position p, std::string_view text, std::size_t newlines) {
     if (first == 0x7F) why = "a DEL in the text: on tape it is a rubout that readers skip, so it cannot be punched";
     if (first >= 0x80) {
         auto cp = utf8::decode(ch);
-        if (charset == Charset::ascii && cp && koi7_position(*cp)) why += " (Cyrillic needs --charset koi7)";
-        else if (cp && (*cp == U'Ё' || *cp == U'ё')) why += " (КОИ-7 has no Ё: write Е)";
-        else if (cp && *cp == U'Ъ') why += " (КОИ-7 has no capital Ъ: write ъ)";
+        if (charset == Charset::ascii && cp && koi7_position(*cp))
+            why += " (Cyrillic needs --charset koi7)";
+        else if (cp && (*cp == U'Ё' || *cp == U'ё'))
+            why += " (КОИ-7 has no Ё: write Е)";
+        else if (cp && *cp == U'Ъ')
+            why += " (КОИ-7 has no capital Ъ: write ъ)";
     }
     throw Error(Errc::bad_text, where, why);
 }
@@ -108,7 +112,8 @@ std::size_t encode_run(const FrameCode& code, std::string_view chars, Frame* out
 Encoder::Encoder(const EncodeOptions& options)
     : options_(options), code_(FrameCode::make(options.code, options.parity, options.eia_table)) {
     if (options.leader > max_blank_frames || options.trailer > max_blank_frames)
-        throw Error(Errc::usage, "a leader or trailer is at most " + std::to_string(max_blank_frames) + " blank frames");
+        throw Error(Errc::usage,
+                    "a leader or trailer is at most " + std::to_string(max_blank_frames) + " blank frames");
 }
 
 // Text -> the 7-bit character stream: CR LF becomes LF (CR LF again with crlf), КОИ-7 letters get
@@ -173,7 +178,8 @@ void Encoder::encode_piece(std::string_view text, std::vector<Frame>& out) {
     std::size_t at = out.size();
     out.resize(at + chars.size());
     std::size_t stop = encode_run(code_, chars, out.data() + at);
-    if (stop != chars.size()) cannot_carry(text, plain ? stop : origin_[stop], position_, options_.code, options_.charset);
+    if (stop != chars.size())
+        cannot_carry(text, plain ? stop : origin_[stop], position_, options_.code, options_.charset);
     position_ = advance(position_, text, scan.newlines);
 }
 

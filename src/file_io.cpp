@@ -6,9 +6,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <climits>
 #include <csignal>
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 
@@ -37,7 +37,8 @@ std::vector<std::uint8_t> read_file(const std::string& path) {
     FileSource source(path);
     std::vector<std::uint8_t> bytes;
     struct stat st {};
-    if (path != "-" && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) bytes.reserve(static_cast<std::size_t>(st.st_size));
+    if (path != "-" && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode))
+        bytes.reserve(static_cast<std::size_t>(st.st_size));
     std::uint8_t buf[65536];
     while (std::size_t n = source.read(buf)) bytes.insert(bytes.end(), buf, buf + n);
     return bytes;
@@ -258,7 +259,8 @@ std::size_t FileSource::read(std::span<std::uint8_t> buffer) {
 
 namespace tape {
 
-FrameFileWriter::FrameFileWriter(const std::string& path, const ImageFormat& format, const FrameCode* annotate, bool replace)
+FrameFileWriter::FrameFileWriter(const std::string& path, const ImageFormat& format, const FrameCode* annotate,
+                                 bool replace)
     : path_(path), format_(format), annotate_(annotate), last_sync_(std::chrono::steady_clock::now()) {
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : O_EXCL), 0666);
     if (fd_ < 0) {

@@ -2,11 +2,12 @@
 // the implied point, three digits when zeros may be left out (first 0: leading, last 0: trailing);
 // '+' when the value is signed; after a dimensionless address one digit gives the number of digits,
 // two digits starting with 0 when leading zeros may be left out; DS: explicit point accepted.
+#include "tape/format_spec.hpp"
+
 #include <algorithm>
 #include <cctype>
 
 #include "tape/error.hpp"
-#include "tape/format_spec.hpp"
 
 namespace tape {
 namespace {
@@ -27,7 +28,8 @@ WordFormat word_format(char address, bool sign, const std::string& d, std::strin
     f.text = std::string(1, address) + (sign ? "+" : "") + d;
     auto digit = [&](std::size_t i) { return d[i] - '0'; };
     bool feed = feed_addresses.find(address) != std::string_view::npos;
-    bool dimension_style = is_dimension_address(address) || sign || (feed && (d.size() == 3 || (d.size() == 2 && d[0] != '0')));
+    bool dimension_style =
+        is_dimension_address(address) || sign || (feed && (d.size() == 3 || (d.size() == 2 && d[0] != '0')));
     if (dimension_style) {
         f.dimension = true;
         if (d.size() == 2) {
@@ -42,8 +44,9 @@ WordFormat word_format(char address, bool sign, const std::string& d, std::strin
             f.before = digit(0);
             f.after = digit(1);
         } else {
-            spec_error(spec, f.text + ": a dimension word takes two digits (before and after the point), or three "
-                                     "with a leading 0 (leading zeros omitted) or a trailing 0 (trailing zeros omitted)");
+            spec_error(spec, f.text +
+                                 ": a dimension word takes two digits (before and after the point), or three "
+                                 "with a leading 0 (leading zeros omitted) or a trailing 0 (trailing zeros omitted)");
         }
         if (f.before + f.after == 0) spec_error(spec, f.text + " allows no digits");
     } else {
@@ -53,8 +56,9 @@ WordFormat word_format(char address, bool sign, const std::string& d, std::strin
             f.omit_leading = true;
             f.before = digit(1);
         } else {
-            spec_error(spec, f.text + ": a dimensionless word takes one digit (the number of digits), or two starting "
-                                     "with 0 (leading zeros omitted)");
+            spec_error(spec, f.text +
+                                 ": a dimensionless word takes one digit (the number of digits), or two starting "
+                                 "with 0 (leading zeros omitted)");
         }
         if (f.before == 0) spec_error(spec, f.text + " allows no digits");
     }
@@ -91,13 +95,18 @@ FormatSpec parse_format_spec(std::string_view text) {
     std::size_t i = 0;
     while (i < s.size()) {
         char c = s[i];
-        if (c == '%') spec.program_start = true, ++i;
-        else if (c == ':') spec.main_block = true, ++i;
-        else if (c == '/') spec.block_skip = true, ++i;
-        else if (c == '.') spec.tab = true, ++i;
+        if (c == '%')
+            spec.program_start = true, ++i;
+        else if (c == ':')
+            spec.main_block = true, ++i;
+        else if (c == '/')
+            spec.block_skip = true, ++i;
+        else if (c == '.')
+            spec.tab = true, ++i;
         else if (c == '*') {
             if (++i != s.size()) spec_error(text, "'*' (end of block) must be last");
-        } else if (c == 'D' && i + 1 < s.size() && s[i + 1] == 'S' && (i + 2 == s.size() || !std::isdigit(static_cast<unsigned char>(s[i + 2])))) {
+        } else if (c == 'D' && i + 1 < s.size() && s[i + 1] == 'S' &&
+                   (i + 2 == s.size() || !std::isdigit(static_cast<unsigned char>(s[i + 2])))) {
             spec.explicit_point = true;
             i += 2;
         } else if (c >= 'A' && c <= 'Z') {
@@ -111,7 +120,8 @@ FormatSpec parse_format_spec(std::string_view text) {
             spec.words.push_back(word_format(c, sign, s.substr(j, k - j), text));
             i = k;
         } else {
-            spec_error(text, std::string("'") + c + "' is not part of the notation (% : / DS . * and words such as X+053, N03)");
+            spec_error(text, std::string("'") + c +
+                                 "' is not part of the notation (% : / DS . * and words such as X+053, N03)");
         }
     }
     if (spec.words.empty()) spec_error(text, "no words");
@@ -128,7 +138,8 @@ DecimalValue word_value(const Word& w, const WordFormat* from) {
     } else if (from && from->dimension) {
         std::size_t total = static_cast<std::size_t>(from->before + from->after);
         std::string d = whole;
-        if (d.size() < total) d = from->omit_trailing ? d + std::string(total - d.size(), '0') : std::string(total - d.size(), '0') + d;
+        if (d.size() < total)
+            d = from->omit_trailing ? d + std::string(total - d.size(), '0') : std::string(total - d.size(), '0') + d;
         std::size_t cut = d.size() - static_cast<std::size_t>(from->after);
         whole = d.substr(0, cut);
         fraction = d.substr(cut);
@@ -139,21 +150,27 @@ DecimalValue word_value(const Word& w, const WordFormat* from) {
     return v;
 }
 
-std::vector<std::pair<std::string_view, std::string>> check_word(const Word& w, const FormatSpec& spec, bool program_has_points) {
+std::vector<std::pair<std::string_view, std::string>> check_word(const Word& w, const FormatSpec& spec,
+                                                                 bool program_has_points) {
     std::vector<std::pair<std::string_view, std::string>> problems;
     const WordFormat* f = spec.find(w.address);
     if (!f) {
-        problems.emplace_back("spec-address", "the controller format has no address " + std::string(1, w.address == ':' ? 'N' : w.address));
+        problems.emplace_back("spec-address", "the controller format has no address " +
+                                                  std::string(1, w.address == ':' ? 'N' : w.address));
         return problems;
     }
-    if (w.sign && !f->sign) problems.emplace_back("spec-sign", w.text + ": the format writes " + f->text + " without a sign");
+    if (w.sign && !f->sign)
+        problems.emplace_back("spec-sign", w.text + ": the format writes " + f->text + " without a sign");
     if (w.has_point()) {
-        if (!spec.explicit_point) problems.emplace_back("spec-point", w.text + ": the format has no DS, so no explicit decimal point");
-        else if (!f->dimension) problems.emplace_back("spec-point", w.text + ": " + f->text + " is a whole number");
+        if (!spec.explicit_point)
+            problems.emplace_back("spec-point", w.text + ": the format has no DS, so no explicit decimal point");
+        else if (!f->dimension)
+            problems.emplace_back("spec-point", w.text + ": " + f->text + " is a whole number");
         int before = w.point, after = static_cast<int>(w.digits().size()) - w.point;
         if (f->dimension && (before > f->before || after > f->after))
             problems.emplace_back("spec-digits", w.text + ": " + f->text + " allows " + std::to_string(f->before) +
-                                                     " digits before the point and " + std::to_string(f->after) + " after");
+                                                     " digits before the point and " + std::to_string(f->after) +
+                                                     " after");
         return problems;
     }
     int n = static_cast<int>(w.digits().size());
@@ -162,42 +179,51 @@ std::vector<std::pair<std::string_view, std::string>> check_word(const Word& w, 
         int allowed = f->before;
         bool ok = f->omit_leading || f->dimension ? n <= allowed : n == allowed;
         if (!ok)
-            problems.emplace_back("spec-digits", w.text + ": " + f->text + " takes " + (f->omit_leading || f->dimension ? "at most " : "exactly ") +
+            problems.emplace_back("spec-digits", w.text + ": " + f->text + " takes " +
+                                                     (f->omit_leading || f->dimension ? "at most " : "exactly ") +
                                                      std::to_string(allowed) + " digit(s)");
         return problems;
     }
     int total = f->before + f->after;
     bool ok = (f->omit_leading || f->omit_trailing) ? n <= total : n == total;
     if (!ok)
-        problems.emplace_back("spec-digits", w.text + ": " + f->text + " takes " + ((f->omit_leading || f->omit_trailing) ? "at most " : "exactly ") +
-                                                 std::to_string(total) + " digits (" + std::to_string(f->before) + " before the implied point, " +
-                                                 std::to_string(f->after) + " after)");
+        problems.emplace_back("spec-digits", w.text + ": " + f->text + " takes " +
+                                                 ((f->omit_leading || f->omit_trailing) ? "at most " : "exactly ") +
+                                                 std::to_string(total) + " digits (" + std::to_string(f->before) +
+                                                 " before the implied point, " + std::to_string(f->after) + " after)");
     return problems;
 }
 
 std::string format_word(const Word& w, const FormatSpec& spec, const FormatSpec* from, bool strip_zeros) {
     const WordFormat* f = spec.find(w.address);
-    if (!f) throw Error(Errc::bad_text, "the controller format has no address " + std::string(1, w.address == ':' ? 'N' : w.address));
+    if (!f)
+        throw Error(Errc::bad_text,
+                    "the controller format has no address " + std::string(1, w.address == ':' ? 'N' : w.address));
     // A main block number is written with N's digits, but only a format with ':' has main blocks.
     if (w.address == ':' && !spec.main_block)
         throw Error(Errc::bad_text, w.text + ": the controller format has no ':' main blocks");
     DecimalValue v = word_value(w, from ? from->find(w.address) : nullptr);
-    if (v.negative && !f->sign) throw Error(Errc::bad_text, w.text + ": negative, but the format writes " + f->text + " without a sign");
+    if (v.negative && !f->sign)
+        throw Error(Errc::bad_text, w.text + ": negative, but the format writes " + f->text + " without a sign");
     std::string out(1, w.address);
     if (f->sign) out += v.negative ? '-' : '+';
     if (!f->dimension) {
         if (!v.fraction.empty()) throw Error(Errc::bad_text, w.text + ": " + f->text + " takes a whole number");
         if (static_cast<int>(v.whole.size()) > f->before)
-            throw Error(Errc::bad_text, w.text + ": " + f->text + " has room for " + std::to_string(f->before) + " digit(s)");
+            throw Error(Errc::bad_text,
+                        w.text + ": " + f->text + " has room for " + std::to_string(f->before) + " digit(s)");
         std::string d = v.whole.empty() ? "0" : v.whole;
-        if (!(strip_zeros && f->omit_leading)) d = std::string(static_cast<std::size_t>(f->before) - v.whole.size(), '0') + v.whole;
+        if (!(strip_zeros && f->omit_leading))
+            d = std::string(static_cast<std::size_t>(f->before) - v.whole.size(), '0') + v.whole;
         if (d.empty()) d = "0";
         return out + d;
     }
     if (static_cast<int>(v.whole.size()) > f->before)
-        throw Error(Errc::bad_text, w.text + ": " + f->text + " has room for " + std::to_string(f->before) + " digit(s) before the point");
+        throw Error(Errc::bad_text, w.text + ": " + f->text + " has room for " + std::to_string(f->before) +
+                                        " digit(s) before the point");
     if (static_cast<int>(v.fraction.size()) > f->after)
-        throw Error(Errc::bad_text, w.text + ": " + f->text + " has room for " + std::to_string(f->after) + " digit(s) after the point");
+        throw Error(Errc::bad_text, w.text + ": " + f->text + " has room for " + std::to_string(f->after) +
+                                        " digit(s) after the point");
     if (spec.explicit_point) {
         // A format without digits before the point (X+05) has no room for the usual "0.": the point
         // comes first, and zero is ".0" so that the word keeps a digit.
@@ -206,8 +232,10 @@ std::string format_word(const Word& w, const FormatSpec& spec, const FormatSpec*
     }
     std::string d = std::string(static_cast<std::size_t>(f->before) - v.whole.size(), '0') + v.whole + v.fraction +
                     std::string(static_cast<std::size_t>(f->after) - v.fraction.size(), '0');
-    if (strip_zeros && f->omit_leading) d = strip_leading_zeros(d);
-    else if (strip_zeros && f->omit_trailing) d = strip_trailing_zeros(d);
+    if (strip_zeros && f->omit_leading)
+        d = strip_leading_zeros(d);
+    else if (strip_zeros && f->omit_trailing)
+        d = strip_trailing_zeros(d);
     if (d.empty()) d = "0";
     return out + d;
 }

@@ -12,8 +12,8 @@ bool allowed_control(unsigned char c) { return c == '\t' || c == '\n' || c == '\
 
 // Characters that show as nothing or as a space: a reader of a message could not tell they are there.
 bool invisible(char32_t cp) {
-    return cp == 0xA0 || cp == 0xAD || cp == 0xFEFF || (cp >= 0x200B && cp <= 0x200F) || (cp >= 0x2028 && cp <= 0x202E) ||
-           (cp >= 0x2060 && cp <= 0x2064) || (cp >= 0x80 && cp < 0xA0);
+    return cp == 0xA0 || cp == 0xAD || cp == 0xFEFF || (cp >= 0x200B && cp <= 0x200F) ||
+           (cp >= 0x2028 && cp <= 0x202E) || (cp >= 0x2060 && cp <= 0x2064) || (cp >= 0x80 && cp < 0xA0);
 }
 
 std::string hex_byte(unsigned char c) {
@@ -38,11 +38,14 @@ std::optional<TextFault> find_text_fault(std::span<const std::uint8_t> bytes) {
         std::string what;
         std::size_t n = 1;
         if (c < 0x80) {
-            if (c == 0) what = "a NUL byte";
-            else if ((c < 0x20 && !allowed_control(c)) || c == 0x7F) what = "the control character " + hex_byte(c);
+            if (c == 0)
+                what = "a NUL byte";
+            else if ((c < 0x20 && !allowed_control(c)) || c == 0x7F)
+                what = "the control character " + hex_byte(c);
         } else {
             n = utf8::length(s, i);
-            if (n == 1 || !utf8::decode(s.substr(i, n))) what = "byte 0x" + hex_byte(c).substr(2) + ", which is not UTF-8";
+            if (n == 1 || !utf8::decode(s.substr(i, n)))
+                what = "byte 0x" + hex_byte(c).substr(2) + ", which is not UTF-8";
         }
         if (!what.empty()) return TextFault{Position{.line = line, .column = column}, i, what};
         if (c == '\n') {
@@ -86,8 +89,10 @@ std::string visible(std::string_view s) {
     for (std::size_t i = 0; i < s.size();) {
         auto c = static_cast<unsigned char>(s[i]);
         if (c < 0x80) {
-            if (c < 0x20 || c == 0x7F) out += hex_byte(c);
-            else out += static_cast<char>(c);
+            if (c < 0x20 || c == 0x7F)
+                out += hex_byte(c);
+            else
+                out += static_cast<char>(c);
             ++i;
             continue;
         }
@@ -98,8 +103,10 @@ std::string visible(std::string_view s) {
             ++i;
             continue;
         }
-        if (invisible(*cp)) out += code_point_name(*cp);
-        else out.append(s.substr(i, n));
+        if (invisible(*cp))
+            out += code_point_name(*cp);
+        else
+            out.append(s.substr(i, n));
         i += n;
     }
     return out;

@@ -1,9 +1,10 @@
 // Decoding: blank tape and DEL skipped, bad frames reported with their numbers, never repaired.
+#include "tape/decode.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "tape/decode.hpp"
 #include "tape/encode.hpp"
 #include "test_util.hpp"
 
@@ -68,8 +69,10 @@ TEST(Decode, FastPathAgreesWithTheTableOnRandomTapes) {
         FrameCode iso = FrameCode::iso();
         for (auto& f : t) {
             unsigned pick = rng() % 100;
-            f = pick < 90 ? *iso.frame_for(static_cast<unsigned char>(0x20 + rng() % 0x5F))
-                          : pick < 94 ? 0x00 : pick < 97 ? 0xFF : static_cast<Frame>(rng());
+            f = pick < 90   ? *iso.frame_for(static_cast<unsigned char>(0x20 + rng() % 0x5F))
+                : pick < 94 ? 0x00
+                : pick < 97 ? 0xFF
+                            : static_cast<Frame>(rng());
         }
         for (bool keep : {false, true}) {
             DecodeOptions fast{.keep_going = keep}, table{.keep_going = keep, .positions = true};
@@ -96,8 +99,10 @@ TEST(Decode, EverySingleBitFlipOfTheSampleIsDetected) {
             for (bool positions : {false, true}) {
                 auto r = decode(damaged, DecodeOptions{.positions = positions});
                 bool found = !r.diagnostics.empty() && *r.diagnostics[0].where.frame == i + 1;
-                if (!positions) detected += found;
-                else EXPECT_TRUE(found) << "frame " << i + 1 << " bit " << bit;
+                if (!positions)
+                    detected += found;
+                else
+                    EXPECT_TRUE(found) << "frame " << i + 1 << " bit " << bit;
             }
         }
     }
@@ -118,9 +123,13 @@ TEST(Decode, Koi7ShiftsBecomeCyrillic) {
     // SO, 'd' 'e' (Н1: Д Е), SI, 'X'
     FrameCode iso = FrameCode::iso();
     std::vector<Frame> t;
-    for (char c : std::string("(\x0e" "de\x0fX)")) t.push_back(*iso.frame_for(static_cast<unsigned char>(c)));
+    for (char c : std::string("(\x0e"
+                              "de\x0fX)"))
+        t.push_back(*iso.frame_for(static_cast<unsigned char>(c)));
     EXPECT_EQ(decode(t, DecodeOptions{.charset = Charset::koi7}).text, "(ДЕX)");
-    EXPECT_EQ(decode(t, DecodeOptions{}).text, "(\x0e" "de\x0fX)");
+    EXPECT_EQ(decode(t, DecodeOptions{}).text,
+              "(\x0e"
+              "de\x0fX)");
     auto with_pos = decode(t, DecodeOptions{.charset = Charset::koi7, .positions = true});
     EXPECT_EQ(with_pos.frame_of.size(), with_pos.text.size());
     EXPECT_EQ(with_pos.frame_of[1], 2U);  // both bytes of Д come from frame index 2

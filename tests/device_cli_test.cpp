@@ -10,11 +10,11 @@
 #include <fstream>
 #include <thread>
 
+#include "process_util.hpp"
 #include "pty_util.hpp"
 #include "tape/encode.hpp"
 #include "tape/image.hpp"
 #include "tape/line_state.hpp"
-#include "process_util.hpp"
 #include "test_util.hpp"
 
 extern char** environ;
@@ -37,8 +37,8 @@ TEST(CliFeed, SendsTheProgramThroughPausesExactlyOnce) {
     PTY_OR_SKIP(pty);
     std::string text = read_text(sample_path("gost-20999-format-example.txt"));
     auto expected = encode(text + "%", EncodeOptions{.leader = 5, .trailer = 5});
-    Process tape({"feed", sample_path("gost-20999-format-example.txt"), pty.device("baud=38400&flow=xonxoff"), "--leader", "5",
-                  "--trailer", "5", "--rate", "2000"},
+    Process tape({"feed", sample_path("gost-20999-format-example.txt"), pty.device("baud=38400&flow=xonxoff"),
+                  "--leader", "5", "--trailer", "5", "--rate", "2000"},
                  dir);
     std::vector<std::uint8_t> got;
     int pauses = 0;
@@ -61,7 +61,8 @@ TEST(CliFeed, SendsTheProgramThroughPausesExactlyOnce) {
 TEST(CliFeed, WaitXonGivesUpOnASilentController) {
     TempDir dir;
     PTY_OR_SKIP(pty);
-    Process tape({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--wait-xon", "--xon-timeout", "0.5"}, dir);
+    Process tape({"feed", sample_path("16k20f3s5-turning.iso.ptp"), pty.device(), "--wait-xon", "--xon-timeout", "0.5"},
+                 dir);
     EXPECT_EQ(tape.wait(), 3);
     EXPECT_NE(tape.err().find("no DC1 (XON)"), std::string::npos) << tape.err();
     std::vector<std::uint8_t> got;
@@ -137,7 +138,9 @@ TEST(CliRead, RefusesAnExistingOutputWithoutForce) {
 TEST(CliPunch, SendsEveryFrameOfTheImage) {
     TempDir dir;
     PTY_OR_SKIP(pty);
-    Process tape({"punch", sample_path("16k20f3s5-turning.eia.ptp"), pty.device("baud=115200&flow=none"), "--rate", "5000"}, dir);
+    Process tape(
+        {"punch", sample_path("16k20f3s5-turning.eia.ptp"), pty.device("baud=115200&flow=none"), "--rate", "5000"},
+        dir);
     auto frames = image_frames(sample_path("16k20f3s5-turning.eia.ptp"));
     std::vector<std::uint8_t> got;
     pty.receive_until_size(got, frames.size(), 10s);

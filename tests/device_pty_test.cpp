@@ -251,7 +251,7 @@ TEST(DevicePty, ReceiverEndsAtThePercentAfterM02AndDropsFlowCodes) {
     auto line = open_device(pty.device(), DeviceUse::read);
     std::vector<Frame> tape = encode("%\nN1 G01 X1\nN2 M02\n%", EncodeOptions{.leader = 3, .trailer = 0});
     std::vector<Frame> sent = tape;
-    sent.insert(sent.begin(), dc2);              // punch on
+    sent.insert(sent.begin(), dc2);  // punch on
     auto after = encode("N3 X9\n", EncodeOptions{.leader = 0, .trailer = 0});
     sent.insert(sent.end(), after.begin(), after.end());  // beyond the end: not taken
     EXPECT_EQ(receive_program_sent(pty, *line, sent), tape);

@@ -1,8 +1,9 @@
 // Encoding: leader and trailer, line endings, characters a code cannot carry, round trips.
+#include "tape/encode.hpp"
+
 #include <gtest/gtest.h>
 
 #include "tape/decode.hpp"
-#include "tape/encode.hpp"
 #include "tape/error.hpp"
 #include "test_util.hpp"
 
@@ -45,7 +46,8 @@ TEST(Encode, FastPathMatchesTheTableForEveryPosition) {
     auto frames = encode(all, bare);
     FrameCode iso = FrameCode::iso();
     ASSERT_EQ(frames.size(), all.size());
-    for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(frames[i], *iso.frame_for(static_cast<unsigned char>(all[i])));
+    for (std::size_t i = 0; i < all.size(); ++i)
+        EXPECT_EQ(frames[i], *iso.frame_for(static_cast<unsigned char>(all[i])));
 }
 
 TEST(Encode, NonAsciiIsAnErrorNamingLineAndColumn) {
@@ -72,7 +74,9 @@ TEST(Encode, Koi7ShiftsOutAndBackBeforeLatinLettersAndEndOfBlock) {
     EncodeOptions o{.charset = Charset::koi7, .leader = 0, .trailer = 0};
     auto t = encode("(ВАЛ 1)X\n(Д)\n", o);
     auto r = decode(t, {});
-    EXPECT_EQ(r.text, "(\x0ewal 1)\x0fX\n(\x0e" "d)\x0f\n");
+    EXPECT_EQ(r.text,
+              "(\x0ewal 1)\x0fX\n(\x0e"
+              "d)\x0f\n");
     EXPECT_EQ(decode(t, DecodeOptions{.charset = Charset::koi7}).text, "(ВАЛ 1)X\n(Д)\n");
     Error yo = encode_error("(ЁЖ)\n", o);
     EXPECT_STREQ(yo.what(), "'Ё' cannot be punched in ISO code (КОИ-7 has no Ё: write Е)");
@@ -80,7 +84,8 @@ TEST(Encode, Koi7ShiftsOutAndBackBeforeLatinLettersAndEndOfBlock) {
 }
 
 TEST(RoundTrip, SamplesThroughBothCodes) {
-    for (const char* name : {"gost-20999-format-example.txt", "gost-20999-format-example.eia.txt", "16k20f3s5-turning.txt"}) {
+    for (const char* name :
+         {"gost-20999-format-example.txt", "gost-20999-format-example.eia.txt", "16k20f3s5-turning.txt"}) {
         std::string text = read_text(sample_path(name));
         for (Code code : {Code::iso, Code::eia}) {
             if (code == Code::eia && text.find(':') != std::string::npos) continue;  // EIA has no ':'

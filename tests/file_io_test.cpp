@@ -1,7 +1,8 @@
 // Outputs are written whole or not at all, and never replace a file without permission.
-#include <gtest/gtest.h>
+#include "tape/file_io.hpp"
 
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <poll.h>
 #include <sys/inotify.h>
 #include <sys/stat.h>
@@ -12,9 +13,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tape/error.hpp"
-#include "tape/file_io.hpp"
 #include "process_util.hpp"
+#include "tape/error.hpp"
 #include "test_util.hpp"
 
 using namespace tape;
@@ -81,7 +81,8 @@ TEST(FileIo, ForceKeepsModeAndWritesDevicesInPlace) {
     // A character device stays one: written into, not renamed over. A private null device node, so that
     // a regression cannot replace the system's /dev/null.
     std::string node = dir.file("null");
-    if (::mknod(node.c_str(), S_IFCHR | 0666, ::makedev(1, 3)) != 0) GTEST_SKIP() << "cannot make a device node (not root)";
+    if (::mknod(node.c_str(), S_IFCHR | 0666, ::makedev(1, 3)) != 0)
+        GTEST_SKIP() << "cannot make a device node (not root)";
     write_file_atomic(node, "frames", true);
     ASSERT_EQ(::stat(node.c_str(), &st), 0);
     EXPECT_TRUE(S_ISCHR(st.st_mode));

@@ -91,14 +91,18 @@ TEST(FormatWord, ImpliedPointInputWithFrom) {
     // 16К20Ф3С5 style input: X+0000000 is 5.2 (seven digits) on the source controller.
     EXPECT_EQ(fmt("DS X+053", "X-0040000", false, "X+052"), "X-400.");
     EXPECT_EQ(fmt("X+053", "X-0040000", false, "X+052"), "X-00400000");
-    EXPECT_EQ(fmt("X+043", "X125", false, "X+053"), "X+0000125");   // leading zeros omitted in the source
-    EXPECT_EQ(fmt("X+063", "X125", false, "X+530"), "X+012500000"); // trailing zeros omitted in the source
+    EXPECT_EQ(fmt("X+043", "X125", false, "X+053"), "X+0000125");    // leading zeros omitted in the source
+    EXPECT_EQ(fmt("X+063", "X125", false, "X+530"), "X+012500000");  // trailing zeros omitted in the source
     EXPECT_EQ(fmt("X+530", "X12.5", true), "X+000125");              // trailing zeros left out
 }
 
 TEST(FormatWord, ValuesThatDoNotFitAreErrors) {
-    for (auto [spec, w] : {std::pair{"X+053", "X123456."}, {"X+053", "X1.2345"}, {"X53", "X-1."}, {"G02", "G1.5"},
-                          {"G02", "G123"}, {"N03", "X1"}}) {
+    for (auto [spec, w] : {std::pair{"X+053", "X123456."},
+                           {"X+053", "X1.2345"},
+                           {"X53", "X-1."},
+                           {"G02", "G1.5"},
+                           {"G02", "G123"},
+                           {"N03", "X1"}}) {
         try {
             fmt(spec, w);
             ADD_FAILURE() << spec << " accepted " << w;

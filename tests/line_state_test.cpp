@@ -1,11 +1,12 @@
 // Pure parts of the device layer, on byte arrays: XON/XOFF, the end-of-program watch, serial settings.
+#include "tape/line_state.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "tape/error.hpp"
-#include "tape/line_state.hpp"
 #include "serial_termios.hpp"
+#include "tape/error.hpp"
 #include "tape/serial_settings.hpp"
 
 using namespace tape;
@@ -86,8 +87,8 @@ TEST(SerialSettings, ParsesEveryKey) {
 }
 
 TEST(SerialSettings, RejectsWhatIsNotThere) {
-    for (const char* bad : {"", "?baud=9600", "/dev/x?baud=9601", "/dev/x?bits=6", "/dev/x?parity=mark", "/dev/x?speed=9600",
-                            "/dev/x?flow=dtr", "/dev/x?bits=7", "/dev/x?stop=3", "/dev/x?baud"}) {
+    for (const char* bad : {"", "?baud=9600", "/dev/x?baud=9601", "/dev/x?bits=6", "/dev/x?parity=mark",
+                            "/dev/x?speed=9600", "/dev/x?flow=dtr", "/dev/x?bits=7", "/dev/x?stop=3", "/dev/x?baud"}) {
         try {
             parse_serial_settings(bad);
             ADD_FAILURE() << "accepted " << bad;

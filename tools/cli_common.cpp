@@ -29,7 +29,8 @@ const tape::CodeTable* Globals::table() {
     if (!loaded_table) {
         try {
             auto bytes = tape::read_file(eia_table);
-            loaded_table = tape::CodeTable::parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+            loaded_table =
+                tape::CodeTable::parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
         } catch (const tape::Error& e) {
             fail(eia_table, e);
         }
@@ -80,7 +81,8 @@ void fail(const std::string& file, tape::Errc code, const std::string& message) 
 }
 
 void say_unlisted(const std::string& name, std::uint64_t count, const std::string& what) {
-    say(name, std::to_string(count) + " more " + what + " not shown (--max-errors " + std::to_string(globals().max_errors) + ")");
+    say(name, std::to_string(count) + " more " + what + " not shown (--max-errors " +
+                  std::to_string(globals().max_errors) + ")");
 }
 
 std::uint64_t report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames) {
@@ -101,7 +103,8 @@ std::vector<std::uint8_t> read_input(const std::string& path) {
     }
 }
 
-TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id) {
+TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes,
+                          const std::string& format_id) {
     TapeInput in;
     in.name = path.empty() ? "-" : path;
     try {
@@ -117,9 +120,12 @@ TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_
     return in;
 }
 
-TapeInput read_tape(const std::string& path, const std::string& format_id) { return tape_from_bytes(path, read_input(path), format_id); }
+TapeInput read_tape(const std::string& path, const std::string& format_id) {
+    return tape_from_bytes(path, read_input(path), format_id);
+}
 
-bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id, const std::string& kind) {
+bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id,
+                    const std::string& kind) {
     if (kind != "auto") return kind == "image";
     if (!format_id.empty()) return true;
     const tape::ImageFormat* by_ext = path.empty() || path == "-" ? nullptr : tape::image_format_for_path(path);
@@ -143,8 +149,10 @@ void require_program_text(const std::string& path, std::span<const std::uint8_t>
 
 void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
     std::vector<std::string> codes = {"iso", "eia"};
-    if (with_auto) codes.insert(codes.begin(), "auto");
-    else choice.code = "iso";
+    if (with_auto)
+        codes.insert(codes.begin(), "auto");
+    else
+        choice.code = "iso";
     sub->add_option("--code,-c", choice.code,
                     with_auto ? "Tape code: auto (detect ISO or EIA from the first block), iso or eia"
                               : "Tape code: iso (ISO 7-bit, even parity on track 8) or eia (EIA RS-244)")
@@ -205,7 +213,8 @@ CLI::Validator format_check(bool for_writing) { return CLI::IsMember(format_ids(
 
 void refuse_binary_terminal(const std::string& path, bool binary, bool force) {
     if ((path.empty() || path == "-") && binary && ::isatty(STDOUT_FILENO) && !force)
-        fail("", tape::Errc::usage, "refusing to write a binary tape image to a terminal (use -o FILE, --format holes, or --force)");
+        fail("", tape::Errc::usage,
+             "refusing to write a binary tape image to a terminal (use -o FILE, --format holes, or --force)");
 }
 
 void write_output(const std::string& path, const std::string& data, bool binary, bool force) {
@@ -223,11 +232,10 @@ void write_output(const std::string& path, const std::string& data, bool binary,
     }
 }
 
-
-
 void add_program_source_options(CLI::App* sub, ProgramSource& source) {
     add_code_options(sub, source.choice, true);
-    sub->add_option("--format,-f", source.format, "Image format of IN: " + format_choices(false) + " (IN is then a tape image)")
+    sub->add_option("--format,-f", source.format,
+                    "Image format of IN: " + format_choices(false) + " (IN is then a tape image)")
         ->check(format_check(false));
     sub->add_option("--input", source.kind, "What IN is: auto (image or text by extension and content), text, image")
         ->check(CLI::IsMember({"auto", "text", "image"}))

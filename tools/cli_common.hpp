@@ -2,7 +2,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <optional>
 #include <string>
@@ -28,8 +27,8 @@ int status_for(tape::Errc code);
 
 /// Options given before or after the subcommand.
 struct Globals {
-    int verbosity = 0;      ///< -v steps up, -q down
-    std::string eia_table;  ///< --eia-table FILE: a corrected EIA table
+    int verbosity = 0;               ///< -v steps up, -q down
+    std::string eia_table;           ///< --eia-table FILE: a corrected EIA table
     std::uint64_t max_errors = 100;  ///< --max-errors: messages of one kind before the rest are only counted
     std::optional<tape::CodeTable> loaded_table;
 
@@ -67,7 +66,8 @@ void say_unlisted(const std::string& name, std::uint64_t count, const std::strin
 /// Reads IN ("-" = stdin) as an image: --format, else by extension, else by content.
 TapeInput read_tape(const std::string& path, const std::string& format_id);
 /// The same from bytes already read.
-TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id);
+TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes,
+                          const std::string& format_id);
 /// The whole of IN ("-" or empty = stdin); failure ends the program.
 std::vector<std::uint8_t> read_input(const std::string& path);
 /// Whether IN is a tape image rather than a text program: --input, --format, a raw image's extension,

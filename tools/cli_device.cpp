@@ -38,7 +38,8 @@ std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, 
     }
 }
 
-ProgressLine::ProgressLine(std::string verb, bool force) : verb_(std::move(verb)), on_(force || ::isatty(STDERR_FILENO)) {}
+ProgressLine::ProgressLine(std::string verb, bool force)
+    : verb_(std::move(verb)), on_(force || ::isatty(STDERR_FILENO)) {}
 
 ProgressLine::~ProgressLine() {
     if (drawn_) std::cerr << '\n';
@@ -48,9 +49,10 @@ void ProgressLine::operator()(const tape::LineProgress& p) {
     if (!on_) return;
     char line[160];
     if (p.total)
-        std::snprintf(line, sizeof line, "\rtape: %s %llu/%llu frames, %.0f frames/s, %llu pause(s)%s   ", verb_.c_str(),
-                      static_cast<unsigned long long>(p.frames), static_cast<unsigned long long>(p.total), p.rate,
-                      static_cast<unsigned long long>(p.pauses), p.paused ? ", paused (XOFF)" : "");
+        std::snprintf(line, sizeof line, "\rtape: %s %llu/%llu frames, %.0f frames/s, %llu pause(s)%s   ",
+                      verb_.c_str(), static_cast<unsigned long long>(p.frames),
+                      static_cast<unsigned long long>(p.total), p.rate, static_cast<unsigned long long>(p.pauses),
+                      p.paused ? ", paused (XOFF)" : "");
     else
         std::snprintf(line, sizeof line, "\rtape: %s %llu frames, %.0f frames/s   ", verb_.c_str(),
                       static_cast<unsigned long long>(p.frames), p.rate);
@@ -70,13 +72,16 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
         ->each([&p](const std::string&) { p.trailer_given = true; });
     sub->add_flag("--crlf", p.crlf, "End blocks with CR LF instead of LF (text programs, ISO)");
     sub->add_flag("!--no-percent", p.percent_first, "Do not put a '%' block first when the program has none");
-    sub->add_option("--end", p.end, "After the program: percent (a '%', then the trailer) or none (the trailer only, for M30 tapes)")
+    sub->add_option("--end", p.end,
+                    "After the program: percent (a '%', then the trailer) or none (the trailer only, for M30 tapes)")
         ->check(CLI::IsMember({"percent", "none"}))
         ->capture_default_str();
     sub->add_option("--format,-f", p.format,
                     "Image format of IN (IN is then a tape image), and of a file: device: " + format_choices(false))
         ->check(format_check(false));
-    sub->add_option("--input", p.kind, "What IN is: auto, text or image")->check(CLI::IsMember({"auto", "text", "image"}))->capture_default_str();
+    sub->add_option("--input", p.kind, "What IN is: auto, text or image")
+        ->check(CLI::IsMember({"auto", "text", "image"}))
+        ->capture_default_str();
 }
 
 std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
@@ -90,9 +95,11 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
             std::size_t first = 0, last = frames.size();
             while (first < last && frames[first] == tape::blank_frame) ++first;
             while (last > first && frames[last - 1] == tape::blank_frame) --last;
-            std::size_t lead = p.leader_given ? p.leader : first, trail = p.trailer_given ? p.trailer : frames.size() - last;
+            std::size_t lead = p.leader_given ? p.leader : first,
+                        trail = p.trailer_given ? p.trailer : frames.size() - last;
             std::vector<tape::Frame> out(lead, tape::blank_frame);
-            out.insert(out.end(), frames.begin() + static_cast<std::ptrdiff_t>(first), frames.begin() + static_cast<std::ptrdiff_t>(last));
+            out.insert(out.end(), frames.begin() + static_cast<std::ptrdiff_t>(first),
+                       frames.begin() + static_cast<std::ptrdiff_t>(last));
             out.insert(out.end(), trail, tape::blank_frame);
             frames = std::move(out);
         }
@@ -120,8 +127,8 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
 
 namespace {
 
-void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o, const std::string& verb,
-                  bool progress_forced) {
+void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o,
+                  const std::string& verb, bool progress_forced) {
     o.stop = &interrupted();
     ProgressLine progress(verb, progress_forced);
     o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
@@ -132,11 +139,13 @@ void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, ta
         fail("", e);
     }
     if (r.stopped) {
-        say(line.name(), "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
+        say(line.name(),
+            "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
         throw Exit{interrupted_status};
     }
     if (globals().verbosity > 0)
-        say(line.name(), verb + " " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
+        say(line.name(),
+            verb + " " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
 }
 
 // Holes pictures are annotated with the characters of the code the frames are in, when one fits.

@@ -23,7 +23,8 @@ std::atomic<bool>& interrupted();
 void install_interrupt_handler();
 
 /// Opens a device string; errors end the program with the right status.
-std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, tape::DeviceUse use, bool replace = false);
+std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, tape::DeviceUse use,
+                                                     bool replace = false);
 
 /// A progress line on stderr, when stderr is a terminal (or forced), at most a few times a second.
 class ProgressLine {
@@ -43,10 +44,10 @@ struct FeedProfile {
     CodeChoice choice;
     std::size_t leader = tape::default_leader, trailer = tape::default_trailer;
     bool leader_given = false, trailer_given = false;
-    bool crlf = false;          ///< CR LF at the end of each block
-    bool percent_first = true;  ///< a '%' block first when the program has none
-    std::string end = "percent";///< "percent": a '%' after the program; "none"
-    std::string format;         ///< image format of IN, when an image
+    bool crlf = false;            ///< CR LF at the end of each block
+    bool percent_first = true;    ///< a '%' block first when the program has none
+    std::string end = "percent";  ///< "percent": a '%' after the program; "none"
+    std::string format;           ///< image format of IN, when an image
     std::string kind = "auto";
 };
 void add_feed_profile_options(CLI::App* sub, FeedProfile& p);

@@ -19,7 +19,8 @@ void run(const DecodeArgs& a) {
     std::string name = display_name(a.input);
     std::unique_ptr<tape::ImageInput> in;
     try {
-        in = std::make_unique<tape::ImageInput>(a.input, a.format.empty() ? nullptr : tape::find_image_format(a.format));
+        in =
+            std::make_unique<tape::ImageInput>(a.input, a.format.empty() ? nullptr : tape::find_image_format(a.format));
     } catch (const tape::Error& e) {
         fail(name, e);
     }
@@ -51,7 +52,8 @@ void run(const DecodeArgs& a) {
         }
         if (!out) out = std::make_unique<tape::OutputFile>(a.output, a.force);  // an empty tape: an empty program
         for (const auto& [code, count] : decoder.unlisted())
-            say_unlisted(name, count, code == tape::Errc::parity ? "parity error(s)" : "frame(s) that are no character");
+            say_unlisted(name, count,
+                         code == tape::Errc::parity ? "parity error(s)" : "frame(s) that are no character");
         try {
             out->commit();
         } catch (const tape::Error& e) {
@@ -74,7 +76,8 @@ void add_decode(CLI::App& app) {
     sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
     sub->add_option("-o,--output", a->output, "Text file to write; - for stdout");
     add_code_options(sub, a->choice, true);
-    sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false) + " (default: by extension, else by content)")
+    sub->add_option("--format,-f", a->format,
+                    "Image format of IN: " + format_choices(false) + " (default: by extension, else by content)")
         ->check(format_check(false));
     sub->add_flag("--keep-going,-k", a->keep_going,
                   "Report every bad frame, write the program with each marked U+FFFD, still exit 1");

@@ -21,8 +21,10 @@ void run(const EmulateArgs& a) {
     o.parity = *tape::parse_parity(a.parity);
     if (o.code == tape::Code::eia && o.parity != tape::Parity::even)  // as decode says it
         fail("", tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
-    if (a.flow == "rtscts") o.flow = tape::Flow::rtscts;
-    else if (a.flow == "xonxoff") o.flow = tape::Flow::xonxoff;
+    if (a.flow == "rtscts")
+        o.flow = tape::Flow::rtscts;
+    else if (a.flow == "xonxoff")
+        o.flow = tape::Flow::xonxoff;
     o.search = parse_byte(a.search, "--search-char");
     o.rewind = parse_byte(a.rewind, "--rewind-char");
     // Commands are compared without bit 8; DC1 and DC3 start and stop the reader.
@@ -63,16 +65,24 @@ void add_emulate(CLI::App& app) {
     sub->add_option("--rate", a->rate, "Reader speed in frames per second (ФС-1501: 1500)")
         ->check(real_number(min_rate, max_rate))
         ->capture_default_str();
-    sub->add_option("--code,-c", a->code, "Code of the tape, to find '%', ':' and M02/M30: iso or eia")->check(CLI::IsMember({"iso", "eia"}))->capture_default_str();
+    sub->add_option("--code,-c", a->code, "Code of the tape, to find '%', ':' and M02/M30: iso or eia")
+        ->check(CLI::IsMember({"iso", "eia"}))
+        ->capture_default_str();
     sub->add_option("--parity,-p", a->parity,
                     "Track 8 rule of an ISO tape: even (NC tapes), odd, mark (DEC-era ASCII), space, none")
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}))
         ->capture_default_str();
-    sub->add_option("--flow", a->flow, "rtscts: CTS starts and stops the reader instead of DC1/DC3")->check(CLI::IsMember({"xonxoff", "rtscts"}));
-    sub->add_option("--search-char", a->search, "Request from the controller to search forward to the next main block (then digits: that block)")->capture_default_str();
-    sub->add_option("--rewind-char", a->rewind, "Request from the controller to rewind to the '%' stop")->capture_default_str();
-    sub->add_flag("--send-leader", a->send_leader, "Send the blank leader too instead of starting at the first punched frame");
-    sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))->check(format_check(false));
+    sub->add_option("--flow", a->flow, "rtscts: CTS starts and stops the reader instead of DC1/DC3")
+        ->check(CLI::IsMember({"xonxoff", "rtscts"}));
+    sub->add_option("--search-char", a->search,
+                    "Request from the controller to search forward to the next main block (then digits: that block)")
+        ->capture_default_str();
+    sub->add_option("--rewind-char", a->rewind, "Request from the controller to rewind to the '%' stop")
+        ->capture_default_str();
+    sub->add_flag("--send-leader", a->send_leader,
+                  "Send the blank leader too instead of starting at the first punched frame");
+    sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))
+        ->check(format_check(false));
     sub->callback([a] { run(*a); });
 }
 

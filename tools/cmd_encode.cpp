@@ -1,11 +1,11 @@
 // tape encode: a text program -> a tape image.
+#include <memory>
+
 #include "cli_common.hpp"
 #include "cli_numbers.hpp"
 #include "commands.hpp"
 #include "tape/encode.hpp"
 #include "tape/file_io.hpp"
-
-#include <memory>
 
 namespace cli {
 namespace {
@@ -81,7 +81,8 @@ void run(const EncodeArgs& a) {
     } catch (const tape::Error& e) {
         fail(a.output == "-" ? "stdout" : a.output, e);
     }
-    if (globals().verbosity > 0) say(in_name, std::to_string(written) + " frames written as " + std::string(format->id));
+    if (globals().verbosity > 0)
+        say(in_name, std::to_string(written) + " frames written as " + std::string(format->id));
 }
 
 }  // namespace
@@ -98,7 +99,8 @@ void add_encode(CLI::App& app) {
     sub->add_option("--trailer", a->trailer, "Blank frames after the program")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str();
-    sub->add_option("--format,-f", a->format, "Image format: " + format_choices(true) + " (default: by extension of OUT, else raw)")
+    sub->add_option("--format,-f", a->format,
+                    "Image format: " + format_choices(true) + " (default: by extension of OUT, else raw)")
         ->check(format_check(true));
     sub->add_flag("--force", a->force, "Replace an existing OUT; write raw to a terminal");
     sub->callback([a] { run(*a); });

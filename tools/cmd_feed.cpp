@@ -19,9 +19,12 @@ void run(const FeedArgs& a) {
     // Every option is checked before the device is opened: a refusal leaves no file and sends nothing.
     tape::SendOptions o;
     o.rate = a.rate > 0 ? a.rate : (a.delay_ms > 0 ? 1000.0 / a.delay_ms : 0);
-    if (a.flow == "xonxoff") o.flow = tape::Flow::xonxoff;
-    else if (a.flow == "rtscts") o.flow = tape::Flow::rtscts;
-    else if (a.flow == "none") o.flow = tape::Flow::none;
+    if (a.flow == "xonxoff")
+        o.flow = tape::Flow::xonxoff;
+    else if (a.flow == "rtscts")
+        o.flow = tape::Flow::rtscts;
+    else if (a.flow == "none")
+        o.flow = tape::Flow::none;
     o.wait_xon = a.wait_xon;
     o.xon_timeout = std::chrono::milliseconds(static_cast<long long>(a.xon_timeout * 1000));  // at most a day
     o.xon = parse_byte(a.xon, "--xon");

@@ -33,8 +33,9 @@ void run(const FormatArgs& a) {
     bool failed = false;
     for (const auto& p : in.tape.programs) {
         if (!from && !tape::uses_explicit_points(p))
-            say(in.name, position_text(p.start, in.from_tape) + ": the program writes no decimal point: its numbers are "
-                                                                 "taken as whole numbers (give --from SPEC for implied points)");
+            say(in.name, position_text(p.start, in.from_tape) +
+                             ": the program writes no decimal point: its numbers are "
+                             "taken as whole numbers (give --from SPEC for implied points)");
         text += (in.tape.physical_start && &p == &in.tape.programs.front() ? "%%" : "%") + p.number.value_or("") + "\n";
         for (const auto& b : p.blocks) {
             if (b.skip && !spec.block_skip) {
@@ -46,9 +47,11 @@ void run(const FormatArgs& a) {
             std::string line = b.skip ? "/" : "";
             auto put = [&](const tape::Word& w) {
                 try {
-                    line += (line.empty() || line == "/" ? "" : sep) + tape::format_word(w, spec, from ? &*from : nullptr, a.strip_zeros);
+                    line += (line.empty() || line == "/" ? "" : sep) +
+                            tape::format_word(w, spec, from ? &*from : nullptr, a.strip_zeros);
                 } catch (const tape::Error& e) {
-                    say(in.name, position_text(w.where, in.from_tape) + ": block " + std::to_string(b.ordinal) + ": " + e.what());
+                    say(in.name, position_text(w.where, in.from_tape) + ": block " + std::to_string(b.ordinal) + ": " +
+                                     e.what());
                     failed = true;
                 }
             };
@@ -95,7 +98,9 @@ void add_format(CLI::App& app) {
     sub->add_option("-o,--output", a->output, "Where to write: text, or a tape image when OUT has an image extension");
     sub->add_option("--to", a->out_format, "Output: text, raw or holes (default: by the extension of OUT, else text)")
         ->check(CLI::IsMember({"text", "raw", "holes"}));
-    sub->add_option("--to-code", a->out_code, "Code of an image output: iso or eia")->check(CLI::IsMember({"iso", "eia"}))->capture_default_str();
+    sub->add_option("--to-code", a->out_code, "Code of an image output: iso or eia")
+        ->check(CLI::IsMember({"iso", "eia"}))
+        ->capture_default_str();
     sub->add_flag("--strip-zeros", a->strip_zeros, "Leave out leading (or trailing) zeros where the format allows");
     sub->add_flag("--spaces", a->spaces, "Put a space between words");
     sub->add_flag("--force", a->force, "Replace an existing OUT");

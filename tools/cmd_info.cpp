@@ -35,16 +35,19 @@ void run(const InfoArgs& a) {
     }
     auto counts = tape::count_parity(in.frames);
     tape::Parity rule = tape::Parity::even;
-    if (!a.parity.empty()) rule = *tape::parse_parity(a.parity);
-    else if (!code && counts.dominant()) rule = *counts.dominant();  // count errors against what the tape uses
+    if (!a.parity.empty())
+        rule = *tape::parse_parity(a.parity);
+    else if (!code && counts.dominant())
+        rule = *counts.dominant();  // count errors against what the tape uses
     tape::FrameCode fc = tape::FrameCode::make(code.value_or(tape::Code::iso), rule, globals().table());
     tape::TapeSurvey s = tape::survey(in.frames, fc);
     std::string code_text = code ? std::string(tape::code_name(*code)) : "unknown";
     std::ostringstream out;
     if (a.json) {
-        out << "{\"file\": " << json_string(display_name(in.name)) << ", \"format\": " << json_string(std::string(in.format->id))
-            << ", \"code\": " << (code ? json_string(code_text) : "null") << ", \"code_reason\": " << json_string(reason)
-            << ", \"parity\": " << json_string(parity_found(counts))
+        out << "{\"file\": " << json_string(display_name(in.name))
+            << ", \"format\": " << json_string(std::string(in.format->id))
+            << ", \"code\": " << (code ? json_string(code_text) : "null")
+            << ", \"code_reason\": " << json_string(reason) << ", \"parity\": " << json_string(parity_found(counts))
             << ", \"parity_rule\": " << json_string(std::string(tape::parity_name(fc.parity())))
             << ", \"frames\": {\"total\": " << s.frames << ", \"leader\": " << s.leader << ", \"data\": " << s.data
             << ", \"del\": " << s.rubouts << ", \"blank_inside\": " << s.blank_inside << ", \"trailer\": " << s.trailer
@@ -55,8 +58,8 @@ void run(const InfoArgs& a) {
         out << "file:           " << display_name(in.name) << "\n"
             << "format:         " << in.format->id << "\n"
             << "code:           " << code_text << " (" << reason << ")\n"
-            << "parity found:   " << parity_found(counts) << " (" << counts.frames << " punched frames, "
-            << counts.even << " even, " << counts.odd << " odd, " << counts.mark << " with track 8"
+            << "parity found:   " << parity_found(counts) << " (" << counts.frames << " punched frames, " << counts.even
+            << " even, " << counts.odd << " odd, " << counts.mark << " with track 8"
             << (misfit ? ", " + std::to_string(misfit) + " do not fit" : "") << ")\n"
             << "frames:         " << s.frames << "\n"
             << "  leader:       " << s.leader << "\n"
@@ -78,10 +81,14 @@ void add_info(CLI::App& app) {
     auto a = std::make_shared<InfoArgs>();
     auto* sub = app.add_subcommand("info", "Tell what is on a tape: code, parity found, frame counts, program starts");
     sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
-    sub->add_option("--code,-c", a->code, "auto, iso or eia")->check(CLI::IsMember({"auto", "iso", "eia"}))->capture_default_str();
-    sub->add_option("--parity,-p", a->parity, "Count parity errors against this rule (default: even, or what the tape uses)")
+    sub->add_option("--code,-c", a->code, "auto, iso or eia")
+        ->check(CLI::IsMember({"auto", "iso", "eia"}))
+        ->capture_default_str();
+    sub->add_option("--parity,-p", a->parity,
+                    "Count parity errors against this rule (default: even, or what the tape uses)")
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}));
-    sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))->check(format_check(false));
+    sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))
+        ->check(format_check(false));
     sub->add_flag("--json", a->json, "One JSON object for other programs");
     sub->callback([a] { run(*a); });
 }

@@ -37,8 +37,9 @@ void run(const LintArgs& a) {
             continue;
         }
         ++shown[rule];
-        out += in.name + ":" + position_text(f.where, in.from_tape) + (f.block ? ":block " + std::to_string(f.block) : "") + ": " +
-               std::string(f.rule) + ": " + (f.severity == tape::Severity::error ? "" : std::string(tape::severity_name(f.severity)) + ": ") +
+        out += in.name + ":" + position_text(f.where, in.from_tape) +
+               (f.block ? ":block " + std::to_string(f.block) : "") + ": " + std::string(f.rule) + ": " +
+               (f.severity == tape::Severity::error ? "" : std::string(tape::severity_name(f.severity)) + ": ") +
                tape::visible(f.message) + "\n";
     }
     write_output("-", out, false, false);
@@ -52,10 +53,12 @@ void run(const LintArgs& a) {
 
 void add_lint(CLI::App& app) {
     auto a = std::make_shared<LintArgs>();
-    auto* sub = app.add_subcommand("lint", "Check programs against ГОСТ 20999-83 (and a controller format with --spec)");
+    auto* sub =
+        app.add_subcommand("lint", "Check programs against ГОСТ 20999-83 (and a controller format with --spec)");
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
     add_program_source_options(sub, a->source);
-    sub->add_option("--spec,-s", a->spec, "Controller format, ГОСТ 20999-83 §9 notation, e.g. \"N03 G02 X+053 Y+053 F031 S04 T04 M02\"");
+    sub->add_option("--spec,-s", a->spec,
+                    "Controller format, ГОСТ 20999-83 §9 notation, e.g. \"N03 G02 X+053 Y+053 F031 S04 T04 M02\"");
     sub->callback([a] { run(*a); });
 }
 

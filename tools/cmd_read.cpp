@@ -17,13 +17,19 @@ struct ReadArgs {
 
 void add_read(CLI::App& app) {
     auto a = std::make_shared<ReadArgs>();
-    auto* sub = app.add_subcommand("read", "Read a tape from a device into an image; ends at the end of the tape, a quiet line, a hang-up or Ctrl-C");
+    auto* sub = app.add_subcommand(
+        "read",
+        "Read a tape from a device into an image; ends at the end of the tape, a quiet line, a hang-up or Ctrl-C");
     sub->add_option("device", a->device, "Device string: file:PATH, serial:PATH?...")->required();
-    sub->add_option("-o,--output", a->output, "Tape image to write (frames appended as they arrive, flushed every second)")->required();
+    sub->add_option("-o,--output", a->output,
+                    "Tape image to write (frames appended as they arrive, flushed every second)")
+        ->required();
     sub->add_option("--timeout", a->timeout, "End after SECONDS without a frame (0: never)")
         ->check(real_number(0, max_timeout_s))
         ->capture_default_str();
-    sub->add_option("--format,-f", a->format, "Image format: " + format_choices(true) + " (default: by extension, else raw)")->check(format_check(true));
+    sub->add_option("--format,-f", a->format,
+                    "Image format: " + format_choices(true) + " (default: by extension, else raw)")
+        ->check(format_check(true));
     sub->add_flag("--force", a->force, "Replace an existing OUT");
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
     sub->callback([a] {

@@ -15,10 +15,14 @@ struct ReceiveArgs {
 
 const char* end_text(tape::ReceiveResult::End e) {
     switch (e) {
-    case tape::ReceiveResult::End::program_end: return "end of program";
-    case tape::ReceiveResult::End::idle: return "no frame for the time-out";
-    case tape::ReceiveResult::End::hangup: return "end of tape, or the other side hung up";
-    case tape::ReceiveResult::End::stopped: return "stopped";
+        case tape::ReceiveResult::End::program_end:
+            return "end of program";
+        case tape::ReceiveResult::End::idle:
+            return "no frame for the time-out";
+        case tape::ReceiveResult::End::hangup:
+            return "end of tape, or the other side hung up";
+        case tape::ReceiveResult::End::stopped:
+            return "stopped";
     }
     return "";
 }
@@ -34,7 +38,8 @@ tape::ReceiveResult::End receive_into_image(const std::string& device, const std
     if (line->seven_bit() && o.code != tape::Code::iso)
         fail(line->name(), tape::Errc::usage,
              "a 7-bit line carries ISO tapes only (the UART's parity stands for track 8): use bits=8 for EIA");
-    const tape::ImageFormat* format = format_id.empty() ? tape::image_format_for_path(output) : tape::find_image_format(format_id);
+    const tape::ImageFormat* format =
+        format_id.empty() ? tape::image_format_for_path(output) : tape::find_image_format(format_id);
     if (!format) format = tape::find_image_format("raw");
     tape::FrameCode annotate = tape::FrameCode::make(o.code, o.parity, o.eia_table);
     std::unique_ptr<tape::FrameFileWriter> out;
@@ -93,15 +98,20 @@ void add_receive(CLI::App& app) {
     sub->add_option("--timeout", a->timeout, "End after SECONDS without a frame (0: never)")
         ->check(real_number(0, max_timeout_s))
         ->capture_default_str();
-    sub->add_option("--code,-c", a->code, "Code of the program, to see its end: iso or eia")->check(CLI::IsMember({"iso", "eia"}))->capture_default_str();
+    sub->add_option("--code,-c", a->code, "Code of the program, to see its end: iso or eia")
+        ->check(CLI::IsMember({"iso", "eia"}))
+        ->capture_default_str();
     sub->add_option("--parity,-p", a->parity,
                     "Track 8 rule of an ISO program: even (NC tapes), odd, mark (DEC-era ASCII), space, none; "
                     "on a bits=7 line track 8 is punched back by it")
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}))
         ->capture_default_str();
     sub->add_flag("--whole", a->whole, "Do not end at the '%' after M02/M30: keep receiving until time-out or hang-up");
-    sub->add_flag("--keep-flow-codes", a->keep_flow_codes, "Keep DC1-DC4 in the image (they are line control, dropped by default)");
-    sub->add_option("--format,-f", a->format, "Image format: " + format_choices(true) + " (default: by extension, else raw)")->check(format_check(true));
+    sub->add_flag("--keep-flow-codes", a->keep_flow_codes,
+                  "Keep DC1-DC4 in the image (they are line control, dropped by default)");
+    sub->add_option("--format,-f", a->format,
+                    "Image format: " + format_choices(true) + " (default: by extension, else raw)")
+        ->check(format_check(true));
     sub->add_flag("--force", a->force, "Replace an existing OUT");
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
     sub->callback([a] { run(*a); });

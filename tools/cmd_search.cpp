@@ -21,7 +21,8 @@ struct SearchArgs {
 };
 
 std::string hit(const ProgramInput& in, const tape::Location& where, const std::string& what) {
-    return position_text(where, in.from_tape) + (in.from_tape ? " (line " + std::to_string(where.line) + ")" : "") + ": " + what + "\n";
+    return position_text(where, in.from_tape) + (in.from_tape ? " (line " + std::to_string(where.line) + ")" : "") +
+           ": " + what + "\n";
 }
 
 // Block numbers have at most 9 digits on any controller; more is a typing mistake, not a block.
@@ -34,7 +35,9 @@ std::optional<long long> as_number(const std::string& s) {
     return n;
 }
 
-bool looks_numeric(const std::string& s) { return !s.empty() && s.find_first_not_of("+-0123456789") == std::string::npos; }
+bool looks_numeric(const std::string& s) {
+    return !s.empty() && s.find_first_not_of("+-0123456789") == std::string::npos;
+}
 
 void run(SearchArgs a, const CLI::App& sub) {
     std::optional<long long> main_number;
@@ -43,7 +46,8 @@ void run(SearchArgs a, const CLI::App& sub) {
             main_number = as_number(*a.main_value);
             if (!main_number || *main_number < 0 || static_cast<std::uint64_t>(*main_number) > max_block_number)
                 fail("", tape::Errc::usage,
-                     "--main: must be a whole number from 0 to " + std::to_string(max_block_number) + ", not '" + *a.main_value + "'");
+                     "--main: must be a whole number from 0 to " + std::to_string(max_block_number) + ", not '" +
+                         *a.main_value + "'");
         } else if (a.input == "-") {
             a.input = *a.main_value;  // "--main IN": the option took the file
         } else {
@@ -58,7 +62,10 @@ void run(SearchArgs a, const CLI::App& sub) {
         auto first = tape::find_main_block(in.tape, from, main_number);
         for (auto r = first; r; r = tape::find_main_block(in.tape, r->block->where.offset + 1, main_number))
             out += hit(in, r->block->where, r->block->text());
-        if (out.empty()) fail(in.name, tape::Errc::not_in_code, std::string("no main block") + (main_number ? " :" + std::to_string(*main_number) : "") + " from " + where);
+        if (out.empty())
+            fail(in.name, tape::Errc::not_in_code,
+                 std::string("no main block") + (main_number ? " :" + std::to_string(*main_number) : "") + " from " +
+                     where);
     } else if (a.rewind) {
         const tape::Program* p = tape::find_rewind_stop(in.tape, from == 0 ? 0 : from);
         if (!p) fail(in.name, tape::Errc::not_in_code, "no '%' before " + where);
@@ -78,13 +85,16 @@ void run(SearchArgs a, const CLI::App& sub) {
 
 void add_search(CLI::App& app) {
     auto a = std::make_shared<SearchArgs>();
-    auto* sub = app.add_subcommand("search", "Find main blocks, the rewind stop, a program or a block, with their frames");
+    auto* sub =
+        app.add_subcommand("search", "Find main blocks, the rewind stop, a program or a block, with their frames");
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
-    auto* main = sub->add_option("--main", a->main_value, "Main blocks (':') from --from on, or only the one numbered N")
-                     ->expected(0, 1);
+    auto* main =
+        sub->add_option("--main", a->main_value, "Main blocks (':') from --from on, or only the one numbered N")
+            ->expected(0, 1);
     auto* rewind = sub->add_flag("--rewind", a->rewind, "The '%' a rewinding reader stops at, before --from");
     auto* program = sub->add_option("--program", a->program, "The program numbered N (after '%')");
-    auto* block = sub->add_option("--block", a->block, "Blocks numbered N (N or ':' word)")->check(whole_number(0, max_block_number));
+    auto* block = sub->add_option("--block", a->block, "Blocks numbered N (N or ':' word)")
+                      ->check(whole_number(0, max_block_number));
     main->excludes(rewind)->excludes(program)->excludes(block);
     rewind->excludes(program)->excludes(block);
     program->excludes(block);

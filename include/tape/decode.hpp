@@ -21,20 +21,20 @@ inline constexpr std::string_view bad_frame_marker = "\xEF\xBF\xBD";
 
 struct DecodeOptions {
     Code code = Code::iso;
-    Parity parity = Parity::even;        ///< ISO only; EIA parity is fixed (odd, track 5)
+    Parity parity = Parity::even;  ///< ISO only; EIA parity is fixed (odd, track 5)
     Charset charset = Charset::ascii;
-    bool keep_going = false;             ///< report every bad frame instead of stopping at the first
-    bool positions = false;              ///< fill DecodeResult::frame_of
-    std::size_t max_diagnostics = 0;     ///< keep at most this many of each kind, count the rest (0: all)
-    const CodeTable* eia_table = nullptr;///< a corrected EIA table; nullptr = built-in
+    bool keep_going = false;               ///< report every bad frame instead of stopping at the first
+    bool positions = false;                ///< fill DecodeResult::frame_of
+    std::size_t max_diagnostics = 0;       ///< keep at most this many of each kind, count the rest (0: all)
+    const CodeTable* eia_table = nullptr;  ///< a corrected EIA table; nullptr = built-in
 };
 
 struct DecodeResult {
-    std::string text;                    ///< the characters, UTF-8; LF ends a block
-    std::vector<std::uint64_t> frame_of; ///< with positions: 0-based frame index of each byte of text
-    std::vector<Diagnostic> diagnostics; ///< one per bad frame, in tape order, up to max_diagnostics a kind
-    std::map<Errc, std::uint64_t> unlisted; ///< bad frames beyond max_diagnostics, by kind
-    bool complete = true;                ///< false when decoding stopped at the first bad frame
+    std::string text;                        ///< the characters, UTF-8; LF ends a block
+    std::vector<std::uint64_t> frame_of;     ///< with positions: 0-based frame index of each byte of text
+    std::vector<Diagnostic> diagnostics;     ///< one per bad frame, in tape order, up to max_diagnostics a kind
+    std::map<Errc, std::uint64_t> unlisted;  ///< bad frames beyond max_diagnostics, by kind
+    bool complete = true;                    ///< false when decoding stopped at the first bad frame
 
     bool ok() const { return diagnostics.empty(); }
 };

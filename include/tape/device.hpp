@@ -62,9 +62,9 @@ enum class DeviceUse { read, write, both };
 
 /// One backend: an entry of the table in device.cpp.
 struct DeviceBackend {
-    std::string_view prefix;       ///< "file", "serial"
+    std::string_view prefix;  ///< "file", "serial"
     std::string_view description;
-    std::string_view syntax;       ///< "file:PATH"
+    std::string_view syntax;  ///< "file:PATH"
     /// Opens the part after "prefix:". replace: an existing output may be replaced.
     std::unique_ptr<Transport> (*open)(std::string_view rest, DeviceUse use, bool replace);
 };

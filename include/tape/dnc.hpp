@@ -25,7 +25,7 @@ struct LineProgress {
     std::uint64_t total = 0;   ///< to send (0 when unknown)
     std::uint64_t pauses = 0;  ///< XOFFs (DC3) received
     bool paused = false;
-    double rate = 0;           ///< frames per second so far
+    double rate = 0;  ///< frames per second so far
 };
 
 /// The slowest pacing a rate may ask for: one frame a day. A slower rate is a mistake, and its period
@@ -37,12 +37,12 @@ inline constexpr double min_frame_rate = 1.0 / 86400;
 std::chrono::steady_clock::duration frame_period(double rate);
 
 struct SendOptions {
-    double rate = 0;                          ///< frames per second; 0: the line's rate, or unpaced for files
-    std::optional<Flow> flow{};               ///< default: what the device string says
-    bool wait_xon = false;                    ///< send nothing before the first DC1 from the other side
-    std::chrono::milliseconds xon_timeout{0}; ///< with wait_xon: give up after this long (0: wait for ever)
-    std::uint8_t xon = dc1, xoff = dc3;       ///< the flow characters (Fanuc-style DC1/DC3 by default), bit 8 ignored
-    const std::atomic<bool>* stop = nullptr;  ///< set (e.g. by SIGINT) to stop after the current frame
+    double rate = 0;                           ///< frames per second; 0: the line's rate, or unpaced for files
+    std::optional<Flow> flow{};                ///< default: what the device string says
+    bool wait_xon = false;                     ///< send nothing before the first DC1 from the other side
+    std::chrono::milliseconds xon_timeout{0};  ///< with wait_xon: give up after this long (0: wait for ever)
+    std::uint8_t xon = dc1, xoff = dc3;        ///< the flow characters (Fanuc-style DC1/DC3 by default), bit 8 ignored
+    const std::atomic<bool>* stop = nullptr;   ///< set (e.g. by SIGINT) to stop after the current frame
     std::function<void(const LineProgress&)> progress{};  ///< called a few times a second
 };
 
@@ -57,7 +57,8 @@ struct SendResult {
 /// Throws Error(Errc::io) naming the frame when the other side hangs up or no DC1 comes in time;
 /// Error(Errc::usage), before sending anything, for a rate frame_period refuses, RTS/CTS on a line
 /// without modem lines, the same character for XON and XOFF, or frames a 7-bit line cannot carry.
-SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock = system_clock());
+SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options,
+                       Clock& clock = system_clock());
 
 struct ReceiveOptions {
     std::chrono::milliseconds idle_timeout{0};  ///< end after this long without a frame (0: never)
@@ -88,11 +89,11 @@ struct ReceiveResult {
 ReceiveResult receive_frames(Transport& line, const ReceiveOptions& options, Clock& clock = system_clock());
 
 struct EmulatorOptions {
-    double rate = 1500;                       ///< frames per second (ФС-1501)
-    bool skip_leader = true;                  ///< start at the first punched frame
+    double rate = 1500;                         ///< frames per second (ФС-1501)
+    bool skip_leader = true;                    ///< start at the first punched frame
     std::uint8_t start = dc1, stop_code = dc3;  ///< DC1 starts the reader, DC3 stops it
-    std::uint8_t search = ':';                ///< then optional digits: search forward to that main block
-    std::uint8_t rewind = '%';                ///< rewind to the '%' stop before the current position
+    std::uint8_t search = ':';                  ///< then optional digits: search forward to that main block
+    std::uint8_t rewind = '%';                  ///< rewind to the '%' stop before the current position
     Code code = Code::iso;
     Parity parity = Parity::even;             ///< ISO only: the track 8 rule the tape was punched with
     const CodeTable* eia_table = nullptr;     ///< a corrected EIA table; nullptr = built-in

@@ -22,12 +22,12 @@ inline constexpr std::size_t max_blank_frames = 100000;
 
 struct EncodeOptions {
     Code code = Code::iso;
-    Parity parity = Parity::even;        ///< ISO only
+    Parity parity = Parity::even;  ///< ISO only
     Charset charset = Charset::ascii;
     std::size_t leader = default_leader;
     std::size_t trailer = default_trailer;
-    bool crlf = false;                   ///< CR LF on tape at the end of each block (ISO only)
-    const CodeTable* eia_table = nullptr;///< a corrected EIA table; nullptr = built-in
+    bool crlf = false;                     ///< CR LF on tape at the end of each block (ISO only)
+    const CodeTable* eia_table = nullptr;  ///< a corrected EIA table; nullptr = built-in
 };
 
 /// Each text line is a block: LF or CR LF in the text, LF (EIA: EOB) on tape.
@@ -55,7 +55,7 @@ private:
     FrameCode code_;
     bool leader_done_ = false;
     bool cyrillic_ = false;
-    std::string held_;                 ///< an unfinished character or CR from the end of the last chunk
+    std::string held_;                           ///< an unfinished character or CR from the end of the last chunk
     Position position_{.line = 1, .column = 1};  ///< of the next byte, for messages
     std::string converted_;
     std::vector<std::size_t> origin_;

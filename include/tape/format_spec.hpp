@@ -26,11 +26,11 @@ struct WordFormat {
 
 struct FormatSpec {
     std::string text;
-    bool program_start = false;  ///< '%'
-    bool main_block = false;     ///< ':'
-    bool block_skip = false;     ///< '/'
-    bool explicit_point = false; ///< 'DS': the controller accepts an explicit decimal point
-    bool tab = false;            ///< '.': HT is used
+    bool program_start = false;   ///< '%'
+    bool main_block = false;      ///< ':'
+    bool block_skip = false;      ///< '/'
+    bool explicit_point = false;  ///< 'DS': the controller accepts an explicit decimal point
+    bool tab = false;             ///< '.': HT is used
     std::vector<WordFormat> words;
 
     /// The format of an address (':' uses N's), or nullptr.
@@ -55,7 +55,7 @@ DecimalValue word_value(const Word& w, const WordFormat* from);
 /// What is wrong with a word for this format (empty when nothing): each entry a rule id and message.
 /// program_has_points: the program writes explicit points, so words without one are whole numbers.
 std::vector<std::pair<std::string_view, std::string>> check_word(const Word& w, const FormatSpec& spec,
-                                                                  bool program_has_points);
+                                                                 bool program_has_points);
 
 /// The word rewritten for the format: all digits the format has (leading zeros left out where the
 /// format allows and strip_zeros), the sign when the format has one, an explicit point only with DS

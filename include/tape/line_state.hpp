@@ -59,22 +59,29 @@ public:
         if (in_m_ && (c == ' ' || c == '\t')) return Event::none;
         if (in_m_) close_m();
         switch (c) {
-        case '(': comment_ = true; return Event::none;
-        case 'M': in_m_ = true; m_value_ = 0; m_digits_ = false; return Event::none;
-        case '\n':
-            if (end_in_block_) {
-                end_in_block_ = false;
-                ended_ = true;
-                return Event::program_end;
-            }
-            return Event::none;
-        case '%':
-            if (ended_) {
-                ended_ = false;
-                return Event::next_percent;
-            }
-            return Event::none;
-        default: return Event::none;
+            case '(':
+                comment_ = true;
+                return Event::none;
+            case 'M':
+                in_m_ = true;
+                m_value_ = 0;
+                m_digits_ = false;
+                return Event::none;
+            case '\n':
+                if (end_in_block_) {
+                    end_in_block_ = false;
+                    ended_ = true;
+                    return Event::program_end;
+                }
+                return Event::none;
+            case '%':
+                if (ended_) {
+                    ended_ = false;
+                    return Event::next_percent;
+                }
+                return Event::none;
+            default:
+                return Event::none;
         }
     }
     /// True between the end of a program and the next '%'.
