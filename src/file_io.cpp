@@ -103,7 +103,7 @@ void discard_pending_output() noexcept {
     pending_set = 0;
 }
 
-OutputFile::OutputFile(const std::string& path, bool overwrite) : path_(path) {
+OutputFile::OutputFile(const std::string& path, bool overwrite) {
     if (path.empty() || path == "-") {
         fd_ = STDOUT_FILENO;
         direct_ = true;
@@ -226,7 +226,7 @@ std::size_t MemorySource::read(std::span<std::uint8_t> buffer) {
     return n;
 }
 
-FileSource::FileSource(const std::string& path) : path_(path) {
+FileSource::FileSource(const std::string& path) {
     fd_ = path == "-" || path.empty() ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd_ < 0) io_fail("cannot open");
     struct stat st {};

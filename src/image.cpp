@@ -1,9 +1,10 @@
 // The image format table: the one place formats are listed.
+#include "tape/image.hpp"
+
 #include <algorithm>
 #include <cctype>
 
 #include "image_formats.hpp"
-#include "tape/image.hpp"
 
 namespace tape {
 namespace {
@@ -39,6 +40,8 @@ const ImageFormat* image_format_for_path(std::string_view path) {
             if (e == ext) return &f;
     return nullptr;
 }
+
+bool extension_is_ambiguous(std::string_view path) { return lower(path).ends_with(".txt"); }
 
 const ImageFormat& detect_image_format(std::span<const std::uint8_t> prefix) {
     const ImageFormat* best = &formats[0];

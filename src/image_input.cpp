@@ -21,8 +21,7 @@ ImageInput::ImageInput(std::unique_ptr<ByteSource> source, const std::string& na
     if (!format_ && name != "-" && !name.empty()) format_ = image_format_for_path(name);
     // ".txt" may be a holes picture or anything else: there the content decides. A format given by the
     // caller or named by a format's own extension (".holes") is never overridden by the content.
-    bool txt = name.size() >= 4 && (name.ends_with(".txt") || name.ends_with(".TXT"));
-    bool content_decides = !format_ || (!format && txt);
+    bool content_decides = !format_ || (!format && extension_is_ambiguous(name));
     if (content_decides) {
         std::uint8_t buf[prefix_bytes];
         while (bytes_.size() < prefix_bytes) {
@@ -97,14 +96,15 @@ std::span<const Frame> ImageInput::next() {
 CodeDetection ImageInput::detect() {
     // detect_code looks at the frames before the first end of block (at most 4096 punched ones) and
     // counts parity over the first 16384 frames: read ahead until both are covered or the limit is hit.
+    std::size_t scanned = 0, punched = 0;
+    bool decided = false;  // an end of block, or 4096 punched frames, among the frames read so far
     auto enough = [&] {
-        if (ahead_.size() < 16384) return false;
-        std::size_t punched = 0;
-        for (Frame f : ahead_) {
+        for (; scanned < ahead_.size() && !decided; ++scanned) {
+            Frame f = ahead_[scanned];
             if (f == 0x00 || f == 0xFF || f == 0x7F) continue;
-            if (f == 0x0A || f == 0x80 || ++punched >= 4096) return true;
+            decided = f == 0x0A || f == 0x80 || ++punched >= 4096;
         }
-        return false;
+        return decided && ahead_.size() >= 16384;
     };
     while (!enough() && ahead_.size() < detection_limit)
         if (!fill() && ended_) break;

@@ -85,14 +85,14 @@ void say_unlisted(const std::string& name, std::uint64_t count, const std::strin
                   std::to_string(globals().max_errors) + ")");
 }
 
-std::uint64_t report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames) {
-    for (const auto& d : r.diagnostics) say(name, where_text(d.where, raw_frames) + ": " + d.message);
-    std::uint64_t total = r.diagnostics.size();
-    for (const auto& [code, count] : r.unlisted) {
+void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std::uint64_t>& unlisted) {
+    for (const auto& [code, count] : unlisted)
         say_unlisted(name, count, code == tape::Errc::parity ? "parity error(s)" : "frame(s) that are no character");
-        total += count;
-    }
-    return total;
+}
+
+void report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames) {
+    for (const auto& d : r.diagnostics) say(name, where_text(d.where, raw_frames) + ": " + d.message);
+    say_unlisted_frames(name, r.unlisted);
 }
 
 std::vector<std::uint8_t> read_input(const std::string& path) {
@@ -130,9 +130,8 @@ bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& by
     if (!format_id.empty()) return true;
     const tape::ImageFormat* by_ext = path.empty() || path == "-" ? nullptr : tape::image_format_for_path(path);
     auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
-    // An image extension decides, but ".txt", which a text program has as often as a holes picture.
-    bool txt = path.ends_with(".txt") || path.ends_with(".TXT");
-    if ((by_ext && !txt) || tape::find_image_format("holes")->match(prefix) >= 60) return true;
+    if ((by_ext && !tape::extension_is_ambiguous(path)) || tape::find_image_format("holes")->match(prefix) >= 60)
+        return true;
     if (tape::is_program_text(bytes)) return false;
     // A text program with a stray byte is reported where the byte is, not read as a strange tape.
     if (tape::looks_like_damaged_text(bytes)) require_program_text(path, bytes);

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,8 +59,9 @@ struct TapeInput {
     bool raw() const { return format && format->id == "raw"; }
 };
 /// Prints the bad frames a decoding kept, then how many more of each kind were only counted.
-/// Returns the number of bad frames in all.
-std::uint64_t report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames);
+void report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames);
+/// One such line for each kind of bad frame beyond the limit.
+void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std::uint64_t>& unlisted);
 /// "12345 more parity error(s) not shown (--max-errors 100)".
 void say_unlisted(const std::string& name, std::uint64_t count, const std::string& what);
 

@@ -51,9 +51,7 @@ void run(const DecodeArgs& a) {
             piece.text.clear();
         }
         if (!out) out = std::make_unique<tape::OutputFile>(a.output, a.force);  // an empty tape: an empty program
-        for (const auto& [code, count] : decoder.unlisted())
-            say_unlisted(name, count,
-                         code == tape::Errc::parity ? "parity error(s)" : "frame(s) that are no character");
+        say_unlisted_frames(name, decoder.unlisted());
         try {
             out->commit();
         } catch (const tape::Error& e) {

@@ -44,7 +44,7 @@ public:
     void discard() noexcept;
 
 private:
-    std::string path_, final_path_, temporary_;
+    std::string final_path_, temporary_;
     int fd_ = -1;
     bool direct_ = false, close_fd_ = false, overwrite_ = false, committed_ = false;
 };
@@ -78,7 +78,6 @@ public:
 
 private:
     void close() noexcept;
-    std::string path_;
     int fd_ = -1;
 };
 
