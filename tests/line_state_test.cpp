@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "serial_termios.hpp"
+#include "device/serial_termios.hpp"
 #include "tape/error.hpp"
 #include "tape/serial_settings.hpp"
 

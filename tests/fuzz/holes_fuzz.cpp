@@ -1,4 +1,4 @@
-// libFuzzer target: any bytes as a holes picture (src/image_holes.cpp). What the reader accepts must
+// libFuzzer target: any bytes as a holes picture (src/image/image_holes.cpp). What the reader accepts must
 // come back unchanged through the writer, annotated or not; match() must answer for any prefix.
 #include <cstddef>
 #include <cstdint>

@@ -4,8 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "tape/decode.hpp"
-#include "tape/encode.hpp"
+#include "tape/tape.hpp"
 
 int main() {
     const std::string line = "N10 G01 X+12.5 Y-3 F120\n";

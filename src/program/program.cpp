@@ -4,9 +4,9 @@
 #include <array>
 #include <cstring>
 
-#include "swar.hpp"
+#include "codec/swar.hpp"
 #include "tape/program.hpp"
-#include "utf8.hpp"
+#include "codec/utf8.hpp"
 
 namespace tape {
 

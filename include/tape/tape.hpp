@@ -1,0 +1,26 @@
+// The whole public interface of the tape library in one include, for programs that use much of it.
+// Each header below also stands alone; include only those you need to keep builds quick.
+#pragma once
+
+#include "tape/charset.hpp"
+#include "tape/clock.hpp"
+#include "tape/code.hpp"
+#include "tape/decode.hpp"
+#include "tape/detect.hpp"
+#include "tape/device.hpp"
+#include "tape/dnc.hpp"
+#include "tape/encode.hpp"
+#include "tape/error.hpp"
+#include "tape/file_io.hpp"
+#include "tape/format_spec.hpp"
+#include "tape/frame.hpp"
+#include "tape/functions.hpp"
+#include "tape/image.hpp"
+#include "tape/image_input.hpp"
+#include "tape/line_state.hpp"
+#include "tape/lint.hpp"
+#include "tape/program.hpp"
+#include "tape/search.hpp"
+#include "tape/serial_settings.hpp"
+#include "tape/survey.hpp"
+#include "tape/utf8_text.hpp"
