@@ -28,7 +28,10 @@ TEST(DetectCode, MarkParityTapeIsRecognisedAndExplained) {
     auto t = encode("HELLO WORLD\nSECOND LINE\n", EncodeOptions{.parity = Parity::mark});
     auto d = detect_code(t);
     EXPECT_FALSE(d.code);
-    EXPECT_NE(d.reason.find("--parity mark"), std::string::npos) << d.reason;
+    EXPECT_NE(d.reason.find("mark parity"), std::string::npos) << d.reason;
+    EXPECT_EQ(d.reason.find("--"), std::string::npos) << "no command-line option in a library message: " << d.reason;
+    EXPECT_EQ(d.hint.action, Hint::Action::use_iso_parity);
+    EXPECT_EQ(d.hint.value, "mark");
 }
 
 TEST(DetectCode, NoiseFitsNeither) {

@@ -43,7 +43,9 @@ TEST(FileIo, RefusesToReplaceWithoutOverwrite) {
         write_file_atomic(p, "new", false);
         FAIL() << "replaced an existing file";
     } catch (const Error& e) {
-        EXPECT_EQ(e.code(), Errc::usage);
+        EXPECT_EQ(e.code(), Errc::exists);
+        EXPECT_EQ(e.hint().action, Hint::Action::replace_output);
+        EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos) << "no command-line option: " << e.what();
     }
     EXPECT_EQ(read_text(p), "old");
     write_file_atomic(p, "new", true);

@@ -73,7 +73,7 @@ TEST(Lint, SyntaxFindingsAreIncludedAndSorted) {
     EXPECT_EQ(findings[0].rule, "no-digits");
     auto two = lint(load("%\nN1 X1 X2 #\nM02\n"));
     ASSERT_EQ(two.size(), 2U);
-    EXPECT_LT(two[0].where.offset, two[1].where.offset);
+    EXPECT_LT(*two[0].where.byte, *two[1].where.byte);
 }
 
 TEST(LintSpec, EveryWordAgainstTheFormat) {

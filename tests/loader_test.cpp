@@ -100,7 +100,7 @@ TEST(Loader, ANewPercentEndsAnUnterminatedProgram) {
     auto t = load("%1\nN1 G01\n%2\nN1 M02\n");
     ASSERT_EQ(t.programs.size(), 2U);
     EXPECT_EQ(rules(t), std::vector<std::string_view>{"program-end"});
-    EXPECT_EQ(t.findings[0].block, 1U);
+    EXPECT_EQ(t.findings[0].where.block, 1U);
 }
 
 TEST(Loader, TapePositionsAreFrames) {

@@ -15,7 +15,7 @@ namespace cli {
 
 int status_for(tape::Errc code) {
     if (code == tape::Errc::io) return io_failure;
-    if (code == tape::Errc::usage) return usage;
+    if (code == tape::Errc::usage || code == tape::Errc::exists) return usage;
     return bad_data;
 }
 
@@ -70,9 +70,33 @@ std::string where_text(const tape::Position& where, bool raw_frames) {
     return s;
 }
 
+std::string hint_text(const tape::Hint& hint) {
+    using A = tape::Hint::Action;
+    switch (hint.action) {
+    case A::none: return "";
+    case A::replace_output: return "use --force to replace it";
+    case A::use_charset: return "use --charset " + std::string(hint.value);
+    case A::use_iso_parity: return "try --code iso --parity " + std::string(hint.value);
+    case A::read_as_image: return "if this is a tape image, give --input image";
+    }
+    return "";
+}
+
+namespace {
+std::string with_hint(std::string message, const tape::Hint& hint) {
+    std::string h = hint_text(hint);
+    return h.empty() ? message : message + " (" + h + ")";
+}
+}  // namespace
+
+void say_diagnostic(const std::string& name, const tape::Diagnostic& d, bool raw_frames) {
+    std::string where = where_text(d.where, raw_frames);
+    say(name, (where.empty() ? "" : where + ": ") + with_hint(d.message, d.hint));
+}
+
 void fail(const std::string& file, const tape::Error& e, bool raw_frames) {
     std::string where = where_text(e.where(), raw_frames);
-    say(file, (where.empty() ? "" : where + ": ") + e.what());
+    say(file, (where.empty() ? "" : where + ": ") + with_hint(e.what(), e.hint()));
     throw Exit{status_for(e.code())};
 }
 
@@ -91,59 +115,57 @@ void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std
 }
 
 void report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames) {
-    for (const auto& d : r.diagnostics) say(name, where_text(d.where, raw_frames) + ": " + d.message);
+    for (const auto& d : r.diagnostics) say_diagnostic(name, d, raw_frames);
     say_unlisted_frames(name, r.unlisted);
 }
 
-std::vector<std::uint8_t> read_input(const std::string& path) {
+tape::InputOptions input_options(const CodeChoice& choice, const std::string& format_id, const std::string& kind) {
+    tape::InputOptions o;
+    o.kind = kind == "text" ? tape::InputKind::text : kind == "image" ? tape::InputKind::image : tape::InputKind::automatic;
+    o.format = format_id.empty() ? nullptr : tape::find_image_format(format_id);
+    o.detect_code = choice.code == "auto";
+    o.decode.code = choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
+    o.decode.parity = *tape::parse_parity(choice.parity);
+    o.decode.charset = *tape::parse_charset(choice.charset);
+    o.decode.eia_table = globals().table();
+    o.decode.max_diagnostics = globals().max_errors;
+    return o;
+}
+
+std::unique_ptr<tape::Input> open_input(const std::string& path, const tape::InputOptions& options) {
+    if (!options.detect_code && options.decode.code == tape::Code::eia && options.decode.parity != tape::Parity::even)
+        fail(display_name(path), tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
     try {
-        return tape::read_file(path.empty() ? "-" : path);
+        return std::make_unique<tape::Input>(path.empty() ? "-" : path, options);
     } catch (const tape::Error& e) {
         fail(display_name(path), e);
     }
 }
 
-TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes,
-                          const std::string& format_id) {
+const tape::DecodeOptions& decide_code(tape::Input& input, const std::string& name) {
+    try {
+        const tape::DecodeOptions& o = input.decode_options();
+        if (globals().verbosity > 0 && input.detection()) say(name, "code " + input.detection()->reason);
+        return o;
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+}
+
+TapeInput read_tape(const std::string& path, const std::string& format_id) {
     TapeInput in;
     in.name = path.empty() ? "-" : path;
+    tape::InputOptions o = input_options(CodeChoice{}, format_id, "image");
+    o.detect_code = false;
+    auto input = open_input(in.name, o);
+    in.format = input->format();
     try {
-        // The same format decision as every streamed input: --format, else the extension, else content.
-        tape::ImageInput image(std::make_unique<tape::MemorySource>(bytes), in.name,
-                               format_id.empty() ? nullptr : tape::find_image_format(format_id));
-        in.format = &image.format();
-        for (auto frames = image.next(); !frames.empty(); frames = image.next())
+        for (auto frames = input->next_frames(); !frames.empty(); frames = input->next_frames())
             in.frames.insert(in.frames.end(), frames.begin(), frames.end());
     } catch (const tape::Error& e) {
         fail(display_name(in.name), e);
     }
     return in;
-}
-
-TapeInput read_tape(const std::string& path, const std::string& format_id) {
-    return tape_from_bytes(path, read_input(path), format_id);
-}
-
-bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id,
-                    const std::string& kind) {
-    if (kind != "auto") return kind == "image";
-    if (!format_id.empty()) return true;
-    const tape::ImageFormat* by_ext = path.empty() || path == "-" ? nullptr : tape::image_format_for_path(path);
-    auto prefix = std::span<const std::uint8_t>(bytes).first(std::min<std::size_t>(bytes.size(), 4096));
-    if ((by_ext && !tape::extension_is_ambiguous(path)) || tape::find_image_format("holes")->match(prefix) >= 60)
-        return true;
-    if (tape::is_program_text(bytes)) return false;
-    // A text program with a stray byte is reported where the byte is, not read as a strange tape.
-    if (tape::looks_like_damaged_text(bytes)) require_program_text(path, bytes);
-    return true;
-}
-
-void require_program_text(const std::string& path, std::span<const std::uint8_t> bytes) {
-    auto fault = tape::find_text_fault(bytes);
-    if (!fault) return;
-    say(display_name(path), fault->where.describe() + ": " + fault->what +
-                                ": a text program cannot hold it (if this is a tape image, give --input image)");
-    throw Exit{bad_data};
 }
 
 void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
@@ -166,37 +188,11 @@ void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
         ->capture_default_str();
 }
 
-tape::DecodeOptions resolve_code(const CodeChoice& choice, const std::string& name,
-                                 const std::function<tape::CodeDetection()>& detect) {
-    tape::DecodeOptions o;
-    o.parity = *tape::parse_parity(choice.parity);
-    o.charset = *tape::parse_charset(choice.charset);
-    o.eia_table = globals().table();
-    o.max_diagnostics = globals().max_errors;
-    if (choice.code != "auto") {
-        o.code = *tape::parse_code(choice.code);
-    } else if (o.parity != tape::Parity::even) {
-        o.code = tape::Code::iso;  // only ISO/ASCII tapes have a choice of parity
-    } else {
-        auto d = detect();
-        if (!d.code) fail(name, tape::Errc::unknown_code, d.reason);
-        if (globals().verbosity > 0) say(name, "code " + d.reason);
-        o.code = *d.code;
-    }
-    if (o.code == tape::Code::eia && o.parity != tape::Parity::even)
-        fail(name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
-    return o;
-}
-
-tape::DecodeOptions resolve_code(const CodeChoice& choice, const TapeInput& input) {
-    return resolve_code(choice, display_name(input.name), [&] { return tape::detect_code(input.frames); });
-}
-
 namespace {
 std::vector<std::string> format_ids(bool for_writing) {
     std::vector<std::string> ids;
     for (const auto& f : tape::image_formats())
-        if (for_writing ? f.write != nullptr : f.read != nullptr) ids.emplace_back(f.id);
+        if (for_writing ? f.can_write() : f.can_read()) ids.emplace_back(f.id);
     return ids;
 }
 }  // namespace
@@ -241,23 +237,69 @@ void add_program_source_options(CLI::App* sub, ProgramSource& source) {
         ->capture_default_str();
 }
 
-ProgramInput load_program(const std::string& path, const ProgramSource& source) {
+std::unique_ptr<tape::Input> open_program(const std::string& path, const ProgramSource& source) {
+    tape::InputOptions o = input_options(source.choice, source.format, source.kind);
+    o.decode.positions = true;
+    return open_input(path, o);
+}
+
+namespace {
+// Bad frames stop the loading where they stand, printed as decode prints them.
+class BadFramesFail : public tape::ProgramVisitor {
+public:
+    BadFramesFail(tape::ProgramVisitor& to, const std::string& name, bool raw) : to_(to), name_(name), raw_(raw) {}
+    void label(std::string_view text) override { to_.label(text); }
+    void program_start(const tape::Program& header) override { to_.program_start(header); }
+    void block(const tape::Block& block) override { to_.block(block); }
+    void after_end(std::string_view text, const tape::Location& where) override { to_.after_end(text, where); }
+    void physical_start() override { to_.physical_start(); }
+    void finding(const tape::Finding& f) override {
+        if (f.code == tape::Errc::parity || f.code == tape::Errc::not_in_code) {
+            say_diagnostic(name_, f, raw_);
+            bad_ = true;
+            return;
+        }
+        to_.finding(f);
+    }
+    bool bad() const { return bad_; }
+
+private:
+    tape::ProgramVisitor& to_;
+    const std::string& name_;
+    bool raw_;
+    bool bad_ = false;
+};
+}  // namespace
+
+void load_program(tape::Input& input, const std::string& name, tape::ProgramVisitor& visitor) {
+    if (input.is_image()) decide_code(input, name);
+    BadFramesFail guard(visitor, name, input.format() && input.format()->bytes_are_frames);
+    try {
+        tape::load_each(input, guard);
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+    if (guard.bad()) throw Exit{bad_data};
+}
+
+ProgramInput load_program_whole(const std::string& path, const ProgramSource& source) {
     ProgramInput in;
     in.name = display_name(path);
-    std::vector<std::uint8_t> bytes = read_input(path);
-    if (!is_image_input(path, bytes, source.format, source.kind)) {
-        require_program_text(path, bytes);
-        in.tape = tape::load(std::string(bytes.begin(), bytes.end()));
-        return in;
+    auto input = open_program(path, source);
+    in.from_tape = input->is_image();
+    if (input->is_image()) decide_code(*input, in.name);
+    try {
+        tape::load(*input, in.tape);
+    } catch (const tape::Error& e) {
+        fail(in.name, e);
     }
-    TapeInput t = tape_from_bytes(path, bytes, source.format);
-    tape::DecodeOptions o = resolve_code(source.choice, t);
-    o.positions = true;
-    tape::DecodeResult r = tape::decode(t.frames, o);
-    report_bad_frames(in.name, r, t.raw());
-    if (!r.ok()) throw Exit{bad_data};
-    in.from_tape = true;
-    in.tape = tape::load(std::move(r.text), std::move(r.frame_of));
+    bool bad = false;
+    for (const auto& f : in.tape.findings)
+        if (f.code == tape::Errc::parity || f.code == tape::Errc::not_in_code) {
+            say_diagnostic(in.name, f, input->format()->bytes_are_frames);
+            bad = true;
+        }
+    if (bad) throw Exit{bad_data};
     return in;
 }
 
@@ -282,6 +324,11 @@ std::string json_string(const std::string& s) {
         }
     }
     return out + "\"";
+}
+
+std::string position_text(const tape::Position& where, bool from_tape) {
+    if (from_tape && where.frame) return "frame " + std::to_string(*where.frame);
+    return "line " + std::to_string(where.line.value_or(0));
 }
 
 std::string position_text(const tape::Location& where, bool from_tape) {

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "tape/detect.hpp"
 #include "tape/error.hpp"
 #include "tape/image.hpp"
+#include "tape/input.hpp"
 #include "tape/program.hpp"
 
 namespace cli {
@@ -51,49 +53,43 @@ void say(const std::string& file, const std::string& message);
 /// "frame 137 (byte 0x88)" for raw images, where frame N is byte N-1.
 std::string where_text(const tape::Position& where, bool raw_frames);
 
-/// A tape image read from a file or stdin.
-struct TapeInput {
-    std::string name;  ///< as given, "-" for stdin; "stdin" in messages
-    const tape::ImageFormat* format = nullptr;
-    std::vector<tape::Frame> frames;
-    bool raw() const { return format && format->id == "raw"; }
-};
-/// Prints the bad frames a decoding kept, then how many more of each kind were only counted.
-void report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames);
-/// One such line for each kind of bad frame beyond the limit.
-void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std::uint64_t>& unlisted);
-/// "12345 more parity error(s) not shown (--max-errors 100)".
-void say_unlisted(const std::string& name, std::uint64_t count, const std::string& what);
-
-/// Reads IN ("-" = stdin) as an image: --format, else by extension, else by content.
-TapeInput read_tape(const std::string& path, const std::string& format_id);
-/// The same from bytes already read.
-TapeInput tape_from_bytes(const std::string& path, const std::vector<std::uint8_t>& bytes,
-                          const std::string& format_id);
-/// The whole of IN ("-" or empty = stdin); failure ends the program.
-std::vector<std::uint8_t> read_input(const std::string& path);
-/// Whether IN is a tape image rather than a text program: --input, --format, a raw image's extension,
-/// a holes picture, or anything that is not clean UTF-8 text.
-bool is_image_input(const std::string& path, const std::vector<std::uint8_t>& bytes, const std::string& format_id,
-                    const std::string& kind);
-std::string display_name(const std::string& path);
-/// Fails (exit 1) naming the line and column of the first byte a text program cannot hold.
-void require_program_text(const std::string& path, std::span<const std::uint8_t> bytes);
-
 /// The code chosen for a decoding run: --code auto detects and explains itself with -v.
 struct CodeChoice {
     std::string code = "auto";
     std::string parity = "even";
     std::string charset = "ascii";
 };
-void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto);
-/// Options for the library from the choice, detecting the code when asked; fails with exit 1 when
-/// the tape fits neither code.
-tape::DecodeOptions resolve_code(const CodeChoice& choice, const TapeInput& input);
-/// The same for a tape being streamed: detect is called only when the code is to be detected.
-tape::DecodeOptions resolve_code(const CodeChoice& choice, const std::string& name,
-                                 const std::function<tape::CodeDetection()>& detect);
+/// A tape image read whole from a file or stdin (for the device commands, which send it whole).
+struct TapeInput {
+    std::string name;  ///< as given, "-" for stdin; "stdin" in messages
+    const tape::ImageFormat* format = nullptr;
+    std::vector<tape::Frame> frames;
+    bool raw() const { return format && format->bytes_are_frames; }
+};
+/// Prints one diagnostic: "tape: FILE: frame 12 (byte 0xB): message (hint)".
+void say_diagnostic(const std::string& name, const tape::Diagnostic& d, bool raw_frames);
+/// Prints the bad frames a decoding kept, then how many more of each kind were only counted.
+void report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames);
+/// One such line for each kind of bad frame beyond the limit.
+void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std::uint64_t>& unlisted);
+/// "12345 more parity error(s) not shown (--max-errors 100)".
+void say_unlisted(const std::string& name, std::uint64_t count, const std::string& what);
+/// What the command line offers for a hint: "use --force to replace it"; "" for none.
+std::string hint_text(const tape::Hint& hint);
 
+/// IN ("-" = stdin) opened by the library's one entry point: an image by --format, extension or
+/// content, or a text program. Failure ends the program.
+std::unique_ptr<tape::Input> open_input(const std::string& path, const tape::InputOptions& options);
+/// The library's input options for --code/--parity/--charset, --format and --input.
+tape::InputOptions input_options(const CodeChoice& choice, const std::string& format_id,
+                                 const std::string& kind = "auto");
+/// How an image is decoded, the code detected when asked (said with -v); failure ends the program.
+const tape::DecodeOptions& decide_code(tape::Input& input, const std::string& name);
+/// Reads IN ("-" = stdin) whole as an image: --format, else by extension, else by content.
+TapeInput read_tape(const std::string& path, const std::string& format_id);
+std::string display_name(const std::string& path);
+
+void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto);
 /// The image formats of the table that can be read (or written): "raw or holes", and a CLI11 check
 /// that accepts exactly their ids. The CLI's --format choices come from here, never from a list of its own.
 std::string format_choices(bool for_writing);
@@ -106,12 +102,6 @@ void refuse_binary_terminal(const std::string& path, bool binary, bool force);
 /// and a binary image on a terminal without force.
 void write_output(const std::string& path, const std::string& data, bool binary, bool force);
 
-/// A program read for the loader: a text program, or a tape image decoded with frame positions.
-struct ProgramInput {
-    std::string name;  ///< for messages
-    bool from_tape = false;
-    tape::LoadedTape tape;
-};
 /// Options saying how IN is read: as decode's, plus --input text|image|auto.
 struct ProgramSource {
     CodeChoice choice;
@@ -119,14 +109,26 @@ struct ProgramSource {
     std::string kind = "auto";
 };
 void add_program_source_options(CLI::App* sub, ProgramSource& source);
-/// Reads IN: an image (by --format, extension, or content) is decoded with positions; anything that
-/// is clean UTF-8 text is a text program. A bad frame on a tape fails with exit 1, as decode does.
-ProgramInput load_program(const std::string& path, const ProgramSource& source);
+/// IN opened for the loader: an image (by --format, extension, or content) decoded with positions,
+/// or a text program.
+std::unique_ptr<tape::Input> open_program(const std::string& path, const ProgramSource& source);
+/// Streams IN's programs into visitor. A bad frame is printed and ends the program with exit 1, as
+/// decode does; so does a text program that is not clean text.
+void load_program(tape::Input& input, const std::string& name, tape::ProgramVisitor& visitor);
+/// A program read whole for the loader.
+struct ProgramInput {
+    std::string name;  ///< for messages
+    bool from_tape = false;
+    tape::LoadedTape tape;
+};
+/// The whole of IN's programs in memory, for the commands that need all of it at once.
+ProgramInput load_program_whole(const std::string& path, const ProgramSource& source);
 
 /// A JSON string literal for s (UTF-8 passed through, controls escaped).
 std::string json_string(const std::string& s);
 
 /// "frame 137" for tapes, "line 3" for text.
 std::string position_text(const tape::Location& where, bool from_tape);
+std::string position_text(const tape::Position& where, bool from_tape);
 
 }  // namespace cli

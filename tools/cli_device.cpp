@@ -8,6 +8,7 @@
 
 #include "cli_numbers.hpp"
 #include "tape/detect.hpp"
+#include "tape/feed.hpp"
 #include "tape/file_io.hpp"
 
 namespace cli {
@@ -86,40 +87,23 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
 
 std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
     std::string name = display_name(path);
-    std::vector<std::uint8_t> bytes = read_input(path);
-    bool image = is_image_input(path, bytes, p.format, p.kind);
-    if (image) {
-        TapeInput in = tape_from_bytes(path, bytes, p.format);
-        std::vector<tape::Frame> frames = std::move(in.frames);
-        if (p.leader_given || p.trailer_given) {
-            std::size_t first = 0, last = frames.size();
-            while (first < last && frames[first] == tape::blank_frame) ++first;
-            while (last > first && frames[last - 1] == tape::blank_frame) --last;
-            std::size_t lead = p.leader_given ? p.leader : first,
-                        trail = p.trailer_given ? p.trailer : frames.size() - last;
-            std::vector<tape::Frame> out(lead, tape::blank_frame);
-            out.insert(out.end(), frames.begin() + static_cast<std::ptrdiff_t>(first),
-                       frames.begin() + static_cast<std::ptrdiff_t>(last));
-            out.insert(out.end(), trail, tape::blank_frame);
-            frames = std::move(out);
-        }
-        return frames;
-    }
-    std::string text(bytes.begin(), bytes.end());
-    auto first = text.find_first_not_of(" \t\r\n");
-    if (p.percent_first && (first == std::string::npos || text[first] != '%')) text = "%\n" + text;
-    if (!text.empty() && text.back() != '\n') text += '\n';
-    if (p.end == "percent") text += "%";
-    tape::EncodeOptions o;
-    o.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
-    o.parity = *tape::parse_parity(p.choice.parity);
-    o.charset = *tape::parse_charset(p.choice.charset);
-    o.leader = p.leader;
-    o.trailer = p.trailer;
-    o.crlf = p.crlf;
-    o.eia_table = globals().table();
+    tape::InputOptions io = input_options(p.choice, p.format, p.kind);
+    io.detect_code = false;  // an image is sent as it is
+    auto input = open_input(path, io);
+    tape::FeedOptions o;
+    o.encode.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
+    o.encode.parity = io.decode.parity;
+    o.encode.charset = io.decode.charset;
+    o.encode.leader = p.leader;
+    o.encode.trailer = p.trailer;
+    o.encode.crlf = p.crlf;
+    o.encode.eia_table = globals().table();
+    o.replace_leader = p.leader_given;
+    o.replace_trailer = p.trailer_given;
+    o.percent_first = p.percent_first;
+    o.percent_end = p.end == "percent";
     try {
-        return tape::encode(text, o);
+        return tape::frames_to_send(*input, o);
     } catch (const tape::Error& e) {
         fail(name, e);
     }
@@ -176,7 +160,7 @@ void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, ta
         if (o.wait_xon) fail(to.device, tape::Errc::usage, "a file sends no DC1 (XON): --wait-xon needs a line");
         const tape::ImageFormat* format =
             to.format.empty() ? tape::image_format_for_path(*path) : tape::find_image_format(to.format);
-        if (!format) format = tape::find_image_format("raw");
+        if (!format) format = &tape::default_image_format();
         // The default Ctrl-C handling stays: it removes the temporary, so the file is whole or absent.
         try {
             tape::write_file_atomic(*path, image_text(*format, frames), to.force);

@@ -1,5 +1,4 @@
 // tape blocks: the programs on a tape, one line per block (кадр), or JSON for other programs.
-#include <sstream>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -29,70 +28,119 @@ std::string explanation(const tape::Block& b, bool russian) {
     return out;
 }
 
-std::string findings_json(const std::vector<tape::Finding>& findings) {
-    std::string out = "[";
-    for (const auto& f : findings) {
-        out += std::string(out.size() > 1 ? ", " : "") + "{\"rule\": " + json_string(std::string(f.rule)) +
-               ", \"severity\": " + json_string(std::string(tape::severity_name(f.severity))) +
-               ", \"frame\": " + optional_number(f.where.frame) + ", \"line\": " + std::to_string(f.where.line) +
-               ", \"column\": " + std::to_string(f.where.column) + ", \"block\": " + std::to_string(f.block) +
-               ", \"message\": " + json_string(f.message) + "}";
-    }
-    return out + "]";
+std::string finding_json(const tape::Finding& f) {
+    return "{\"rule\": " + json_string(std::string(f.id())) +
+           ", \"severity\": " + json_string(std::string(tape::severity_name(f.severity))) +
+           ", \"frame\": " + optional_number(f.where.frame) + ", \"line\": " + optional_number(f.where.line) +
+           ", \"column\": " + optional_number(f.where.column) + ", \"block\": " + std::to_string(f.where.block.value_or(0)) +
+           ", \"message\": " + json_string(f.message) + "}";
 }
 
-std::string as_json(const tape::LoadedTape& t) {
-    std::ostringstream out;
-    out << "{\"programs\": [";
-    for (std::size_t i = 0; i < t.programs.size(); ++i) {
-        const auto& p = t.programs[i];
-        out << (i ? ", " : "") << "{\"number\": " << (p.number ? json_string(*p.number) : "null")
-            << ", \"first_frame\": " << optional_number(p.start.frame) << ", \"line\": " << p.start.line
-            << ", \"ended\": " << (p.ended ? "true" : "false") << ", \"blocks\": [";
-        for (std::size_t k = 0; k < p.blocks.size(); ++k) {
-            const auto& b = p.blocks[k];
-            out << (k ? ", " : "") << "{\"frame\": " << optional_number(b.where.frame) << ", \"line\": " << b.where.line
-                << ", \"number\": " << (b.number ? json_string(b.number->text) : "null") << ", \"main\": " << (b.main ? "true" : "false")
-                << ", \"skip\": " << (b.skip ? "true" : "false") << ", \"words\": [";
-            for (std::size_t w = 0; w < b.words.size(); ++w) out << (w ? ", " : "") << json_string(b.words[w].text);
-            out << "], \"comments\": [";
-            for (std::size_t c = 0; c < b.comments.size(); ++c) out << (c ? ", " : "") << json_string(b.comments[c].text);
-            out << "]}";
-        }
-        out << "], \"after_end\": " << json_string(p.after_end) << "}";
+// Blocks are written as the loader gives them, so that a tape of any length lists in bounded memory:
+// only the label, the text after a program's end and the findings are held.
+class Lister : public tape::ProgramVisitor {
+public:
+    Lister(const BlocksArgs& a, const std::string& name, bool from_tape) : a_(a), name_(name), from_tape_(from_tape) {
+        if (a_.json) out_ += "{\"programs\": [";
     }
-    out << "], \"label\": " << json_string(t.label) << ", \"physical_start\": " << (t.physical_start ? "true" : "false")
-        << ", \"diagnostics\": " << findings_json(t.findings) << "}\n";
-    return out.str();
-}
 
-std::string as_listing(const tape::LoadedTape& t, bool from_tape, bool explain, bool russian) {
-    std::ostringstream out;
-    if (t.label.find_first_not_of(" \t\r\n") != std::string::npos) out << "label: " << t.label << (t.label.back() == '\n' ? "" : "\n");
-    if (t.physical_start) out << "%% physical start of the tape\n";
-    for (const auto& p : t.programs) {
-        out << "program " << (p.number ? *p.number : "(no number)") << " at " << position_text(p.start, from_tape) << "\n";
-        for (const auto& b : p.blocks) {
-            std::string pos = position_text(b.where, from_tape);
-            out << "  " << pos << std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') << b.text();
-            if (explain) {
-                std::string e = explanation(b, russian);
-                if (!e.empty()) out << "    ; " << e;
+    void label(std::string_view text) override { label_ += text; }
+    void physical_start() override {
+        physical_start_ = true;
+        flush_label();
+        if (!a_.json) out_ += "%% physical start of the tape\n";
+    }
+    void program_start(const tape::Program& p) override {
+        close_program();
+        flush_label();
+        in_program_ = true;
+        ended_ = false;
+        blocks_ = 0;
+        if (a_.json)
+            out_ += std::string(programs_ ? ", " : "") + "{\"number\": " + (p.number ? json_string(*p.number) : "null") +
+                    ", \"first_frame\": " + optional_number(p.start.frame) + ", \"line\": " + std::to_string(p.start.line) +
+                    ", \"blocks\": [";
+        else
+            out_ += "program " + (p.number ? *p.number : "(no number)") + " at " + position_text(p.start, from_tape_) + "\n";
+        ++programs_;
+    }
+    void block(const tape::Block& b) override {
+        if (b.ends_program()) ended_ = true;
+        if (a_.json) {
+            out_ += std::string(blocks_ ? ", " : "") + "{\"frame\": " + optional_number(b.where.frame) +
+                    ", \"line\": " + std::to_string(b.where.line) +
+                    ", \"number\": " + (b.number ? json_string(b.number->text) : "null") +
+                    ", \"main\": " + (b.main ? "true" : "false") + ", \"skip\": " + (b.skip ? "true" : "false") +
+                    ", \"words\": [";
+            for (std::size_t w = 0; w < b.words.size(); ++w) out_ += (w ? ", " : "") + json_string(b.words[w].text);
+            out_ += "], \"comments\": [";
+            for (std::size_t c = 0; c < b.comments.size(); ++c) out_ += (c ? ", " : "") + json_string(b.comments[c].text);
+            out_ += "]}";
+        } else {
+            std::string pos = position_text(b.where, from_tape_);
+            out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + b.text();
+            if (a_.explain) {
+                std::string e = explanation(b, a_.lang == "ru");
+                if (!e.empty()) out_ += "    ; " + e;
             }
-            out << "\n";
+            out_ += "\n";
         }
-        out << (p.ended ? "  end of program\n" : "  no end (M02/M30)\n");
-        if (p.after_end.find_first_not_of(" \t\r\n") != std::string::npos)
-            out << "after the end, not part of the program:\n" << p.after_end << (p.after_end.back() == '\n' ? "" : "\n");
+        ++blocks_;
+        if (out_.size() >= 64 << 10) flush();
     }
-    return out.str();
-}
+    void after_end(std::string_view text, const tape::Location&) override { after_end_ += text; }
+    void finding(const tape::Finding& f) override {
+        say(name_, position_text(f.where, from_tape_) + ": " + std::string(tape::severity_name(f.severity)) + ": " + f.message);
+        if (a_.json) findings_ += std::string(findings_.empty() ? "" : ", ") + finding_json(f);
+    }
+
+    void finish() {
+        close_program();
+        flush_label();
+        if (a_.json)
+            out_ += "], \"label\": " + json_string(label_) + ", \"physical_start\": " + (physical_start_ ? "true" : "false") +
+                    ", \"diagnostics\": [" + findings_ + "]}\n";
+        flush();
+    }
+
+private:
+    void flush() {
+        write_output("-", out_, false, false);
+        out_.clear();
+    }
+    void flush_label() {
+        if (a_.json || label_done_) return;
+        label_done_ = true;
+        if (label_.find_first_not_of(" \t\r\n") != std::string::npos)
+            out_ += "label: " + label_ + (label_.back() == '\n' ? "" : "\n");
+    }
+    void close_program() {
+        if (!in_program_) return;
+        in_program_ = false;
+        if (a_.json) {
+            out_ += std::string("], \"ended\": ") + (ended_ ? "true" : "false") + ", \"after_end\": " + json_string(after_end_) + "}";
+        } else {
+            out_ += ended_ ? "  end of program\n" : "  no end (M02/M30)\n";
+            if (after_end_.find_first_not_of(" \t\r\n") != std::string::npos)
+                out_ += "after the end, not part of the program:\n" + after_end_ + (after_end_.back() == '\n' ? "" : "\n");
+        }
+        after_end_.clear();
+    }
+
+    const BlocksArgs& a_;
+    const std::string& name_;
+    bool from_tape_;
+    std::string out_, label_, after_end_, findings_;
+    bool label_done_ = false, physical_start_ = false, in_program_ = false, ended_ = false;
+    std::uint64_t programs_ = 0, blocks_ = 0;
+};
 
 void run(const BlocksArgs& a) {
-    ProgramInput in = load_program(a.input, a.source);
-    for (const auto& f : in.tape.findings)
-        say(in.name, position_text(f.where, in.from_tape) + ": " + std::string(tape::severity_name(f.severity)) + ": " + f.message);
-    write_output("-", a.json ? as_json(in.tape) : as_listing(in.tape, in.from_tape, a.explain, a.lang == "ru"), false, false);
+    std::string name = display_name(a.input);
+    auto in = open_program(a.input, a.source);
+    Lister lister(a, name, in->is_image());
+    load_program(*in, name, lister);
+    lister.finish();
 }
 
 }  // namespace

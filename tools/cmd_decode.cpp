@@ -4,7 +4,6 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "tape/file_io.hpp"
-#include "tape/image_input.hpp"
 
 namespace cli {
 namespace {
@@ -17,32 +16,26 @@ struct DecodeArgs {
 
 void run(const DecodeArgs& a) {
     std::string name = display_name(a.input);
-    std::unique_ptr<tape::ImageInput> in;
-    try {
-        in =
-            std::make_unique<tape::ImageInput>(a.input, a.format.empty() ? nullptr : tape::find_image_format(a.format));
-    } catch (const tape::Error& e) {
-        fail(name, e);
-    }
-    bool raw = in->format().id == "raw";
+    tape::InputOptions io = input_options(a.choice, a.format, "image");
+    io.decode.keep_going = a.keep_going;
+    auto in = open_input(a.input, io);
+    bool raw = in->format()->bytes_are_frames;
+    decide_code(*in, name);
     std::unique_ptr<tape::OutputFile> out;
+    auto open_output = [&] {
+        try {
+            out = std::make_unique<tape::OutputFile>(a.output, a.force);
+        } catch (const tape::Error& e) {
+            fail(a.output, e);
+        }
+    };
     try {
-        tape::DecodeOptions o = resolve_code(a.choice, name, [&] { return in->detect(); });
-        o.keep_going = a.keep_going;
-        tape::Decoder decoder(o);
         tape::DecodeResult piece;
-        for (auto frames = in->next(); !frames.empty(); frames = in->next()) {
-            bool going = decoder.feed(frames, piece);
-            for (const auto& d : piece.diagnostics) say(name, where_text(d.where, raw) + ": " + d.message);
+        while (in->next_text(piece)) {
+            for (const auto& d : piece.diagnostics) say_diagnostic(name, d, raw);
             piece.diagnostics.clear();
-            if (!going) throw Exit{bad_data};  // nothing written: the program would be cut short
-            if (!out) {
-                try {
-                    out = std::make_unique<tape::OutputFile>(a.output, a.force);
-                } catch (const tape::Error& e) {
-                    fail(a.output, e);
-                }
-            }
+            if (!piece.complete) throw Exit{bad_data};  // nothing written: the program would be cut short
+            if (!out) open_output();
             try {
                 out->write(piece.text);
             } catch (const tape::Error& e) {
@@ -50,15 +43,15 @@ void run(const DecodeArgs& a) {
             }
             piece.text.clear();
         }
-        if (!out) out = std::make_unique<tape::OutputFile>(a.output, a.force);  // an empty tape: an empty program
-        say_unlisted_frames(name, decoder.unlisted());
+        if (!out) open_output();  // an empty tape: an empty program
+        say_unlisted_frames(name, in->decoder() ? in->decoder()->unlisted() : std::map<tape::Errc, std::uint64_t>{});
         try {
             out->commit();
         } catch (const tape::Error& e) {
             fail(a.output, e);
         }
-        if (decoder.bad_frames()) {
-            say(name, std::to_string(decoder.bad_frames()) + " bad frame(s), each marked \xEF\xBF\xBD in the text");
+        if (std::uint64_t bad = in->decoder() ? in->decoder()->bad_frames() : 0) {
+            say(name, std::to_string(bad) + " bad frame(s), each marked \xEF\xBF\xBD in the text");
             throw Exit{bad_data};
         }
     } catch (const tape::Error& e) {

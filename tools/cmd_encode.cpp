@@ -30,7 +30,7 @@ void run(const EncodeArgs& a) {
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
     const tape::ImageFormat* format = a.format.empty() ? nullptr : tape::find_image_format(a.format);
     if (!format && a.output != "-") format = tape::image_format_for_path(a.output);
-    if (!format) format = tape::find_image_format("raw");
+    if (!format) format = &tape::default_image_format();
     refuse_binary_terminal(a.output, format->binary, a.force);
     tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
     tape::ImageWriteOptions wo{&code};

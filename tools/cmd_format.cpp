@@ -27,7 +27,7 @@ void run(const FormatArgs& a) {
     tape::FormatSpec spec = parse_spec(a.spec);
     std::optional<tape::FormatSpec> from;
     if (a.from_option->count() > 0) from = parse_spec(a.from);
-    ProgramInput in = load_program(a.input, a.source);
+    ProgramInput in = load_program_whole(a.input, a.source);
     const std::string sep = a.spaces ? " " : "";
     std::string text = in.tape.label;
     bool failed = false;

@@ -1,4 +1,5 @@
 // tape info: what is on a tape — code, parity found, frame counts, program starts.
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -22,30 +23,51 @@ std::string parity_found(const tape::ParityCounts& p) {
 }
 
 void run(const InfoArgs& a) {
-    TapeInput in = read_tape(a.input, a.format);
+    std::string name = display_name(a.input);
+    tape::InputOptions io = input_options(CodeChoice{}, a.format, "image");
+    io.detect_code = false;
+    auto in = open_input(a.input, io);
     std::optional<tape::Code> code;
     std::string reason;
-    if (a.code == "auto") {
-        auto d = tape::detect_code(in.frames);
-        code = d.code;
-        reason = d.reason;
-    } else {
-        code = tape::parse_code(a.code);
-        reason = "given with --code";
+    std::optional<tape::Parity> rule;  // the parity rule errors are counted against, once it is known
+    try {
+        if (a.code == "auto") {
+            const auto& d = in->detect();
+            code = d.code;
+            reason = d.reason;
+            if (d.hint) reason += " (" + hint_text(d.hint) + ")";
+        } else {
+            code = tape::parse_code(a.code);
+            reason = "given with --code";
+        }
+    } catch (const tape::Error& e) {
+        fail(name, e);
     }
-    auto counts = tape::count_parity(in.frames);
-    tape::Parity rule = tape::Parity::even;
-    if (!a.parity.empty())
-        rule = *tape::parse_parity(a.parity);
-    else if (!code && counts.dominant())
-        rule = *counts.dominant();  // count errors against what the tape uses
-    tape::FrameCode fc = tape::FrameCode::make(code.value_or(tape::Code::iso), rule, globals().table());
-    tape::TapeSurvey s = tape::survey(in.frames, fc);
+    if (!a.parity.empty()) rule = *tape::parse_parity(a.parity);
+    else if (code) rule = tape::Parity::even;
+    // Without a code, errors are counted against the rule the whole tape uses: one survey a rule, in
+    // one pass, and the one of the rule found is shown.
+    std::vector<tape::Parity> rules = rule ? std::vector{*rule}
+                                           : std::vector{tape::Parity::even, tape::Parity::odd, tape::Parity::mark,
+                                                         tape::Parity::space};
+    std::vector<tape::Surveyor> surveyors;
+    for (auto r : rules) surveyors.emplace_back(tape::FrameCode::make(code.value_or(tape::Code::iso), r, globals().table()));
+    try {
+        for (auto frames = in->next_frames(); !frames.empty(); frames = in->next_frames())
+            for (auto& s : surveyors) s.feed(frames);
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+    auto counts = surveyors.front().result().parity;
+    if (!rule) rule = counts.dominant().value_or(tape::Parity::even);
+    auto chosen = static_cast<std::size_t>(std::find(rules.begin(), rules.end(), *rule) - rules.begin());
+    tape::FrameCode fc = tape::FrameCode::make(code.value_or(tape::Code::iso), *rule, globals().table());
+    tape::TapeSurvey s = surveyors[chosen].result();
     std::string code_text = code ? std::string(tape::code_name(*code)) : "unknown";
     std::ostringstream out;
     if (a.json) {
-        out << "{\"file\": " << json_string(display_name(in.name))
-            << ", \"format\": " << json_string(std::string(in.format->id))
+        out << "{\"file\": " << json_string(name)
+            << ", \"format\": " << json_string(std::string(in->format()->id))
             << ", \"code\": " << (code ? json_string(code_text) : "null")
             << ", \"code_reason\": " << json_string(reason) << ", \"parity\": " << json_string(parity_found(counts))
             << ", \"parity_rule\": " << json_string(std::string(tape::parity_name(fc.parity())))
@@ -55,8 +77,8 @@ void run(const InfoArgs& a) {
             << "}, \"program_starts\": " << s.program_starts << ", \"end_of_blocks\": " << s.end_of_blocks << "}\n";
     } else {
         auto misfit = counts.dominant() ? counts.misfits(*counts.dominant()) : 0;
-        out << "file:           " << display_name(in.name) << "\n"
-            << "format:         " << in.format->id << "\n"
+        out << "file:           " << name << "\n"
+            << "format:         " << in->format()->id << "\n"
             << "code:           " << code_text << " (" << reason << ")\n"
             << "parity found:   " << parity_found(counts) << " (" << counts.frames << " punched frames, " << counts.even
             << " even, " << counts.odd << " odd, " << counts.mark << " with track 8"

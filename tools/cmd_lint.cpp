@@ -23,7 +23,7 @@ void run(const LintArgs& a) {
             fail("", e);
         }
     }
-    ProgramInput in = load_program(a.input, a.source);
+    ProgramInput in = load_program_whole(a.input, a.source);
     auto findings = tape::lint(in.tape, tape::LintOptions{spec ? &*spec : nullptr});
     std::string out;
     std::size_t errors = 0, warnings = 0;
@@ -31,14 +31,14 @@ void run(const LintArgs& a) {
     for (const auto& f : findings) {
         errors += f.severity == tape::Severity::error;
         warnings += f.severity == tape::Severity::warning;
-        std::string rule(f.rule);
+        std::string rule(f.id());
         if (globals().max_errors != 0 && shown[rule] >= globals().max_errors) {
             ++unlisted[rule];
             continue;
         }
         ++shown[rule];
         out += in.name + ":" + position_text(f.where, in.from_tape) +
-               (f.block ? ":block " + std::to_string(f.block) : "") + ": " + std::string(f.rule) + ": " +
+               (f.where.block ? ":block " + std::to_string(*f.where.block) : "") + ": " + rule + ": " +
                (f.severity == tape::Severity::error ? "" : std::string(tape::severity_name(f.severity)) + ": ") +
                tape::visible(f.message) + "\n";
     }

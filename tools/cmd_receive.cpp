@@ -3,6 +3,7 @@
 #include "cli_numbers.hpp"
 #include "commands.hpp"
 #include "tape/file_io.hpp"
+#include "tape/frame_file_writer.hpp"
 
 namespace cli {
 namespace {
@@ -40,7 +41,7 @@ tape::ReceiveResult::End receive_into_image(const std::string& device, const std
              "a 7-bit line carries ISO tapes only (the UART's parity stands for track 8): use bits=8 for EIA");
     const tape::ImageFormat* format =
         format_id.empty() ? tape::image_format_for_path(output) : tape::find_image_format(format_id);
-    if (!format) format = tape::find_image_format("raw");
+    if (!format) format = &tape::default_image_format();
     tape::FrameCode annotate = tape::FrameCode::make(o.code, o.parity, o.eia_table);
     std::unique_ptr<tape::FrameFileWriter> out;
     try {

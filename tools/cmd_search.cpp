@@ -54,7 +54,7 @@ void run(SearchArgs a, const CLI::App& sub) {
             fail("", tape::Errc::usage, "--main takes a block number, not '" + *a.main_value + "'");
         }
     }
-    ProgramInput in = load_program(a.input, a.source);
+    ProgramInput in = load_program_whole(a.input, a.source);
     std::uint64_t from = tape::frame_offset(in.tape, a.from);
     std::string out;
     std::string where = std::string(in.from_tape ? "frame " : "line ") + std::to_string(a.from);

@@ -12,14 +12,29 @@ struct ShowArgs {
 };
 
 void run(const ShowArgs& a) {
-    TapeInput in = read_tape(a.input, a.format);
-    tape::DecodeOptions o = resolve_code(a.choice, in);
+    std::string name = display_name(a.input);
+    auto in = open_input(a.input, input_options(a.choice, a.format, "image"));
+    const tape::DecodeOptions& o = decide_code(*in, name);
     tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
-    write_output("-", tape::find_image_format("holes")->write(in.frames, tape::ImageWriteOptions{&code}), false, false);
-    auto s = tape::survey(in.frames, code);
+    auto writer = tape::find_image_format("holes")->make_writer(tape::ImageWriteOptions{&code});
+    tape::Surveyor surveyor(code);
+    std::string picture;
+    try {
+        for (auto frames = in->next_frames(); !frames.empty(); frames = in->next_frames()) {
+            writer->write(frames, picture);
+            surveyor.feed(frames);
+            write_output("-", picture, false, false);
+            picture.clear();
+        }
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+    writer->finish(picture);
+    write_output("-", picture, false, false);
+    auto s = surveyor.result();
     if (s.parity_errors + s.not_in_code > 0) {
-        say(display_name(in.name), std::to_string(s.parity_errors) + " parity error(s), " +
-                                       std::to_string(s.not_in_code) + " frame(s) not in the code, marked '!'");
+        say(name, std::to_string(s.parity_errors) + " parity error(s), " + std::to_string(s.not_in_code) +
+                      " frame(s) not in the code, marked '!'");
         throw Exit{bad_data};
     }
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "tape/code.hpp"
+#include "tape/error.hpp"
 #include "tape/frame.hpp"
 
 namespace tape {
@@ -14,6 +15,7 @@ namespace tape {
 struct CodeDetection {
     std::optional<Code> code;  ///< nullopt when the tape fits neither ISO nor EIA
     std::string reason;        ///< why, in words a machinist understands
+    Hint hint{};               ///< when neither fits: the reading that might (ISO with another parity)
 };
 
 /// Decides ISO or EIA from the frames before the first end of block (ISO LF 0x0A, EIA EOB 0x80),

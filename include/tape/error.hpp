@@ -1,4 +1,5 @@
-// Typed errors and diagnostics of the tape library.
+// Typed errors and the one diagnostic type of the tape library: codec, image formats, loader, lint
+// and devices all report through it.
 #pragma once
 
 #include <cstdint>
@@ -18,8 +19,10 @@ enum class Errc {
     bad_image,     ///< an image file that does not follow its format
     bad_text,      ///< a text character the chosen code cannot carry
     bad_table,     ///< a code table file that cannot be read
+    bad_program,   ///< a program that breaks a rule of ГОСТ 20999-83 or of a controller format
     io,            ///< reading or writing failed
     usage,         ///< the caller asked for something impossible
+    exists,        ///< an output that already exists and may not be replaced
 };
 
 /// Stable short name, e.g. "parity".
@@ -28,37 +31,70 @@ std::string_view errc_name(Errc code);
 /// True for the kinds that mean "bad data in the input" (as opposed to I/O or usage).
 bool is_data_error(Errc code);
 
-/// Where on the tape or in the text something was found. Frames and lines are counted from 1.
+enum class Severity { info, warning, error };
+/// "info", "warning", "error".
+std::string_view severity_name(Severity s);
+
+/// Where something was found, as far as it is known. Frames, lines, columns, blocks and programs are
+/// counted from 1, byte offsets (into the text or the image file) from 0.
 struct Position {
     std::optional<std::uint64_t> frame{};
     std::optional<std::uint64_t> line{};
     std::optional<std::uint64_t> column{};
+    std::optional<std::uint64_t> byte{};
+    std::optional<std::uint64_t> block{};
+    std::optional<std::uint64_t> program{};
 
-    /// "frame 137", "line 3, column 7", or "" when nothing is known.
+    /// "frame 137", "line 3, column 7", or "" when neither is known.
     std::string describe() const;
 };
 
-/// A finding about damaged or unusual data. Damaged data is a value, not an exception.
-struct Diagnostic {
-    Errc code;
-    Position where;
-    std::string message;
+/// What the user could do about a diagnostic, in the data's terms: the program showing the message
+/// says it in its own (the command line names its options, a GUI its buttons).
+struct Hint {
+    enum class Action {
+        none,
+        replace_output,   ///< allow the output to be replaced
+        use_charset,      ///< encode with character set `value` ("koi7")
+        use_iso_parity,   ///< read as ISO with parity `value` ("odd", "mark", "space", "none")
+        read_as_image,    ///< read the input as a tape image, not as a text program
+    };
+    Action action = Action::none;
+    std::string_view value{};
+
+    explicit operator bool() const { return action != Action::none; }
 };
 
-/// Thrown for errors that stop an operation; carries the kind and the position.
+/// A finding about damaged or unusual data, from any layer. Damaged data is a value, not an
+/// exception. The stable id is the rule's for program findings and the kind's name otherwise.
+struct Diagnostic {
+    Errc code = Errc::bad_program;
+    Position where{};
+    std::string message{};
+    std::string_view rule{};  ///< the program rule broken ("word-order"); empty for the codec's kinds
+    Severity severity = Severity::error;
+    Hint hint{};
+
+    /// The stable id: rule, or errc_name(code).
+    std::string_view id() const { return rule.empty() ? errc_name(code) : rule; }
+};
+
+/// Thrown for errors that stop an operation; carries the kind, the position and a hint.
 class Error : public std::runtime_error {
 public:
-    Error(Errc code, Position where, const std::string& message)
-        : std::runtime_error(message), code_(code), where_(where) {}
-    Error(Errc code, const std::string& message) : Error(code, Position{}, message) {}
-    explicit Error(const Diagnostic& d) : Error(d.code, d.where, d.message) {}
+    Error(Errc code, Position where, const std::string& message, Hint hint = {})
+        : std::runtime_error(message), code_(code), where_(where), hint_(hint) {}
+    Error(Errc code, const std::string& message, Hint hint = {}) : Error(code, Position{}, message, hint) {}
+    explicit Error(const Diagnostic& d) : Error(d.code, d.where, d.message, d.hint) {}
 
     Errc code() const noexcept { return code_; }
     const Position& where() const noexcept { return where_; }
+    const Hint& hint() const noexcept { return hint_; }
 
 private:
     Errc code_;
     Position where_;
+    Hint hint_;
 };
 
 }  // namespace tape

@@ -85,30 +85,6 @@ private:
 /// SIGINT/SIGTERM handler, so that an interrupted run leaves no OUT.tmpXXXXXX behind.
 void discard_pending_output() noexcept;
 
-/// An image written as frames arrive from a device: appended, flushed to disk at least once a second,
-/// so that a run cut short keeps every frame already received.
-class FrameFileWriter {
-public:
-    /// Creates path (refuses an existing one unless replace: Error(Errc::usage)); format raw or holes.
-    FrameFileWriter(const std::string& path, const ImageFormat& format, const FrameCode* annotate, bool replace);
-    ~FrameFileWriter();
-    FrameFileWriter(const FrameFileWriter&) = delete;
-    FrameFileWriter& operator=(const FrameFileWriter&) = delete;
-
-    void append(std::span<const std::uint8_t> frames);
-    /// Flushes to disk now.
-    void sync();
-    std::uint64_t frames() const { return frames_; }
-
-private:
-    std::string path_;
-    const ImageFormat& format_;
-    const FrameCode* annotate_;
-    int fd_ = -1;
-    std::uint64_t frames_ = 0;
-    std::chrono::steady_clock::time_point last_sync_;
-};
-
 /// True when path names an existing file (or anything else that exists).
 bool path_exists(const std::string& path);
 

@@ -39,13 +39,12 @@ private:
 
     std::unique_ptr<ByteSource> source_;
     const ImageFormat* format_ = nullptr;
-    std::vector<std::uint8_t> bytes_;             // read but not yet parsed (holes: an unfinished line)
-    std::vector<Frame> ahead_;                    // frames read ahead for detection, given out first
-    std::vector<Frame> given_;                    // what next() returned last (ahead_ swapped in)
-    std::unique_ptr<std::uint8_t[]> raw_buffer_;  // raw images are read straight into it
+    std::unique_ptr<ImageReader> reader_;
+    std::vector<std::uint8_t> bytes_;              // read for format detection, not yet given to reader_
+    std::vector<Frame> ahead_;                     // frames read ahead for detection, given out first
+    std::vector<Frame> given_;                     // what next() returned last (ahead_ swapped in)
+    std::unique_ptr<std::uint8_t[]> read_buffer_;  // chunks are read into it (raw frames straight from it)
     bool ended_ = false;
-    bool whole_file_format_ = false;  // a binary format other than raw: parsed whole
-    std::uint64_t lines_before_ = 0;  // lines of a text format already parsed
 };
 
 }  // namespace tape

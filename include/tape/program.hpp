@@ -2,11 +2,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "tape/error.hpp"
 
 namespace tape {
 
@@ -17,6 +20,9 @@ struct Location {
     std::optional<std::uint64_t> frame{};
     std::uint64_t line = 0;
     std::uint64_t column = 0;
+
+    /// The same place as a diagnostic's position.
+    Position position() const { return Position{.frame = frame, .line = line, .column = column, .byte = offset}; }
 };
 
 /// One word: address letter, optional sign, digits, optional explicit decimal point (§3.1).
@@ -65,17 +71,11 @@ struct Program {
     std::optional<Location> after_end_at{};
 };
 
-enum class Severity { info, warning, error };
-std::string_view severity_name(Severity s);
-
-/// A finding of the loader or of lint: a stable rule id, a severity, where, and a message.
-struct Finding {
-    std::string_view rule;
-    Severity severity = Severity::error;
-    Location where;
-    std::uint64_t block = 0;  ///< Block::ordinal, 0 when not in a block
-    std::string message;
-};
+/// A finding of the loader or of lint: a Diagnostic with a rule id (Errc::bad_program).
+using Finding = Diagnostic;
+/// The finding of rule at where, in block (Block::ordinal; 0 when not in a block).
+Finding program_finding(std::string_view rule, Severity severity, const Location& where, std::uint64_t block,
+                        std::string message);
 
 /// The contents of a tape: the label section, the programs, and what the loader found wrong.
 struct LoadedTape {
@@ -106,6 +106,24 @@ public:
     /// The '%%' physical start mark (§1.8).
     virtual void physical_start() {}
     virtual void finding(const Finding& finding) { (void)finding; }
+};
+
+/// The loader fed a piece of text at a time, in bounded memory (a line is held until its LF comes):
+/// the same findings and blocks as load() however the text is cut.
+class ProgramLoader {
+public:
+    explicit ProgramLoader(ProgramVisitor& visitor);
+    ~ProgramLoader();
+    ProgramLoader(const ProgramLoader&) = delete;
+    ProgramLoader& operator=(const ProgramLoader&) = delete;
+
+    /// The next piece of text; frame_of (0-based frame of each of its bytes) empty for text input.
+    void feed(std::string_view text, std::span<const std::uint64_t> frame_of = {});
+    /// The text has ended: loads the last line and reports a program left open.
+    void finish();
+
+private:
+    std::unique_ptr<class Loader> loader_;
 };
 
 /// Streams text through the loader: the same parse as load(), block by block.

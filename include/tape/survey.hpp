@@ -24,6 +24,22 @@ struct TapeSurvey {
     ParityCounts parity;              ///< what the punched frames fit
 };
 
+/// The same counts a chunk at a time, in bounded memory; the result is the same however the tape is cut.
+class Surveyor {
+public:
+    explicit Surveyor(const FrameCode& code) : code_(code) {}
+    void feed(std::span<const Frame> frames);
+    /// The counts so far, the blank frames at the end taken as trailer.
+    TapeSurvey result() const;
+
+private:
+    FrameCode code_;
+    TapeSurvey s_;
+    std::uint64_t blank_run_ = 0;  // blank frames since the last punched one
+    bool punched_ = false;         // a punched frame seen: blanks from now on are inside or trailer
+    bool after_percent_ = false;
+};
+
 /// Counts the tape's frames as read with code. Never throws on bad frames: they are counted.
 TapeSurvey survey(std::span<const Frame> frames, const FrameCode& code);
 

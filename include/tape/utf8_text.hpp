@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "tape/error.hpp"
 
@@ -23,6 +24,21 @@ struct TextFault {
     std::string what;
 };
 std::optional<TextFault> find_text_fault(std::span<const std::uint8_t> bytes);
+
+/// find_text_fault over a text read in pieces, with positions counted from the start of the text.
+class TextChecker {
+public:
+    /// The first fault in this piece; a character cut by the piece's end is checked with the next.
+    std::optional<TextFault> check(std::span<const std::uint8_t> piece);
+    /// The text has ended: a character left unfinished is a fault.
+    std::optional<TextFault> finish();
+
+private:
+    std::optional<TextFault> check_whole(std::span<const std::uint8_t> bytes);
+
+    std::vector<std::uint8_t> carry_;  // the start of a character cut by a piece's end
+    std::uint64_t lines_before_ = 0, columns_before_ = 0, bytes_before_ = 0;
+};
 
 /// True when bytes read as a text file in which a few bytes are wrong (a NUL, a stray byte of another
 /// encoding), rather than as a tape image: almost all printable, with lines, no blank leader.

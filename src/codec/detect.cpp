@@ -43,9 +43,10 @@ CodeDetection detect_code(std::span<const Frame> frames) {
     if (!end_of_block && mostly_odd && !iso_start) return {Code::eia, "EIA: " + counts};
     auto parity = count_parity(frames.first(std::min(frames.size(), look_limit * 4))).dominant();
     if (parity == Parity::mark || parity == Parity::space || parity == Parity::odd)
-        return {std::nullopt, "neither ISO nor EIA: the frames look like an ASCII tape with " +
-                                  std::string(parity_name(*parity)) + " parity on track 8 (try --code iso --parity " +
-                                  std::string(parity_name(*parity)) + "); " + counts};
+        return {std::nullopt,
+                "neither ISO nor EIA: the frames look like an ASCII tape with " + std::string(parity_name(*parity)) +
+                    " parity on track 8; " + counts,
+                Hint{Hint::Action::use_iso_parity, parity_name(*parity)}};
     return {std::nullopt, "neither ISO nor EIA: " + counts + (end_of_block ? "" : ", and no end of block")};
 }
 

@@ -2,32 +2,48 @@
 
 namespace tape {
 
-TapeSurvey survey(std::span<const Frame> frames, const FrameCode& code) {
-    TapeSurvey s;
-    s.frames = frames.size();
-    s.parity = count_parity(frames);
-    std::size_t first = 0, last = frames.size();
-    while (first < last && frames[first] == blank_frame) ++first;
-    while (last > first && frames[last - 1] == blank_frame) --last;
-    s.leader = first;
-    s.trailer = frames.size() - last;
-    bool after_percent = false;
-    for (std::size_t i = first; i < last; ++i) {
-        Frame f = frames[i];
-        switch (code.kind(f)) {
-        case FrameKind::blank: ++s.blank_inside; continue;
-        case FrameKind::rubout: ++s.rubouts; continue;
-        case FrameKind::parity_error: ++s.parity_errors; continue;
-        case FrameKind::not_in_code: ++s.not_in_code; continue;
+void Surveyor::feed(std::span<const Frame> frames) {
+    s_.frames += frames.size();
+    ParityCounts p = count_parity(frames);
+    s_.parity.frames += p.frames;
+    s_.parity.even += p.even;
+    s_.parity.odd += p.odd;
+    s_.parity.mark += p.mark;
+    s_.parity.space += p.space;
+    for (Frame f : frames) {
+        if (f == blank_frame) {
+            ++blank_run_;
+            continue;
+        }
+        // Blanks before the first punched frame are leader; between punched frames, inside.
+        (punched_ ? s_.blank_inside : s_.leader) += blank_run_;
+        blank_run_ = 0;
+        punched_ = true;
+        switch (code_.kind(f)) {
+        case FrameKind::blank: ++s_.blank_inside; continue;
+        case FrameKind::rubout: ++s_.rubouts; continue;
+        case FrameKind::parity_error: ++s_.parity_errors; continue;
+        case FrameKind::not_in_code: ++s_.not_in_code; continue;
         case FrameKind::character: break;
         }
-        ++s.data;
-        char c = code.character(f);
-        if (c == '%' && !after_percent) ++s.program_starts;
-        if (c == '\n') ++s.end_of_blocks;
-        if (c != ' ') after_percent = c == '%';
+        ++s_.data;
+        char c = code_.character(f);
+        if (c == '%' && !after_percent_) ++s_.program_starts;
+        if (c == '\n') ++s_.end_of_blocks;
+        if (c != ' ') after_percent_ = c == '%';
     }
+}
+
+TapeSurvey Surveyor::result() const {
+    TapeSurvey s = s_;
+    (punched_ ? s.trailer : s.leader) += blank_run_;
     return s;
+}
+
+TapeSurvey survey(std::span<const Frame> frames, const FrameCode& code) {
+    Surveyor surveyor(code);
+    surveyor.feed(frames);
+    return surveyor.result();
 }
 
 }  // namespace tape

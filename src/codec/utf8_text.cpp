@@ -61,6 +61,49 @@ std::optional<TextFault> find_text_fault(std::span<const std::uint8_t> bytes) {
 
 bool is_program_text(std::span<const std::uint8_t> bytes) { return !find_text_fault(bytes); }
 
+std::optional<TextFault> TextChecker::check(std::span<const std::uint8_t> piece) {
+    std::vector<std::uint8_t> joined;
+    if (!carry_.empty()) {
+        joined.swap(carry_);
+        joined.insert(joined.end(), piece.begin(), piece.end());
+        piece = joined;
+    }
+    // Hold back a UTF-8 lead byte whose sequence runs past the end of the piece.
+    std::size_t cut = piece.size();
+    for (std::size_t back = 1; back <= 3 && back <= piece.size(); ++back) {
+        std::uint8_t c = piece[piece.size() - back];
+        if ((c & 0xC0) == 0x80) continue;  // a continuation byte: look further back
+        std::size_t need = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+        if (need > back) cut = piece.size() - back;
+        break;
+    }
+    carry_.assign(piece.begin() + static_cast<std::ptrdiff_t>(cut), piece.end());
+    return check_whole(piece.first(cut));
+}
+
+std::optional<TextFault> TextChecker::finish() {
+    auto fault = check_whole(carry_);
+    carry_.clear();
+    return fault;
+}
+
+std::optional<TextFault> TextChecker::check_whole(std::span<const std::uint8_t> bytes) {
+    if (auto fault = find_text_fault(bytes)) {
+        if (*fault->where.line == 1) *fault->where.column += columns_before_;
+        *fault->where.line += lines_before_;
+        fault->offset += bytes_before_;
+        return fault;
+    }
+    std::string_view s(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    auto last_nl = s.rfind('\n');
+    std::string_view tail = last_nl == std::string_view::npos ? s : s.substr(last_nl + 1);
+    auto chars = static_cast<std::uint64_t>(std::count_if(tail.begin(), tail.end(), [](char c) { return !utf8::is_continuation(c); }));
+    lines_before_ += static_cast<std::uint64_t>(std::count(s.begin(), s.end(), '\n'));
+    columns_before_ = last_nl == std::string_view::npos ? columns_before_ + chars : chars;
+    bytes_before_ += bytes.size();
+    return std::nullopt;
+}
+
 bool looks_like_damaged_text(std::span<const std::uint8_t> bytes) {
     auto sample = bytes.first(std::min<std::size_t>(bytes.size(), 65536));
     if (sample.empty() || sample[0] == 0) return false;  // a tape starts with blank leader

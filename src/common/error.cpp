@@ -10,14 +10,23 @@ std::string_view errc_name(Errc code) {
     case Errc::bad_image: return "bad-image";
     case Errc::bad_text: return "bad-text";
     case Errc::bad_table: return "bad-table";
+    case Errc::bad_program: return "bad-program";
+    case Errc::exists: return "exists";
     case Errc::io: return "io";
     case Errc::usage: return "usage";
     }
     return "unknown";
 }
 
-bool is_data_error(Errc code) {
-    return code != Errc::io && code != Errc::usage;
+bool is_data_error(Errc code) { return code != Errc::io && code != Errc::usage && code != Errc::exists; }
+
+std::string_view severity_name(Severity s) {
+    switch (s) {
+    case Severity::info: return "info";
+    case Severity::warning: return "warning";
+    case Severity::error: return "error";
+    }
+    return "error";
 }
 
 std::string Position::describe() const {

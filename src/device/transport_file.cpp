@@ -1,8 +1,7 @@
-// file:PATH — a tape image file as a device. Reading serves the image's frames (raw or holes, as
-// `tape decode` reads them) and ends at its end; writing appends raw frames to a new file. It takes no
+// file:PATH — a tape image file as a device. Reading serves the image's frames (in any readable
+// format, as `tape decode` reads them) and ends at its end; writing appends frames to a new file in
+// the format of its extension (raw by default), through the image writers. It takes no
 // settings: "file:PATH?key=value" is refused like an unknown serial setting.
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstring>
@@ -11,8 +10,9 @@
 #include "device_query.hpp"
 #include "tape/error.hpp"
 #include "tape/file_io.hpp"
+#include "tape/frame_file_writer.hpp"
+#include "tape/image_input.hpp"
 #include "tape/image.hpp"
-#include "transport_posix.hpp"
 
 namespace tape {
 namespace {
@@ -20,52 +20,67 @@ namespace {
 class FileTransport : public Transport {
 public:
     FileTransport(std::string path, DeviceUse use, bool replace) : path_(std::move(path)) {
-        if (use == DeviceUse::read) {  // a file written to has no other side to read from
-            try {
-                auto bytes = read_file(path_);
-                const ImageFormat* f = image_format_for_path(path_);
-                if (!f) f = &detect_image_format(std::span(bytes).first(std::min<std::size_t>(bytes.size(), 4096)));
-                frames_ = f->read(bytes);
-            } catch (const Error& e) {
-                // The file layer names no file; a device error names its device, where in it included.
-                std::string where = e.where().describe();
-                throw Error(e.code(), name() + ": " + (where.empty() ? "" : where + ": ") + e.what());
+        try {
+            if (use == DeviceUse::read) {  // a file written to has no other side to read from
+                image_ = std::make_unique<ImageInput>(path_, nullptr);
+            } else {
+                const ImageFormat* format = image_format_for_path(path_);
+                writer_ = std::make_unique<FrameFileWriter>(path_, format ? *format : default_image_format(), nullptr,
+                                                            replace);
             }
+        } catch (const Error& e) {
+            rethrow_named(e);
         }
-        if (use != DeviceUse::read) {
-            int flags = O_WRONLY | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : O_EXCL);
-            fd_ = ::open(path_.c_str(), flags, 0666);
-            if (fd_ < 0) {
-                if (errno == EEXIST) throw Error(Errc::usage, name() + ": already exists (use --force to replace it)");
-                posix::fail(name(), "cannot create");
-            }
-        }
-    }
-    ~FileTransport() override {
-        if (fd_ >= 0) ::close(fd_);
     }
 
+    // Frames a chunk at a time, as the image reader gives them: a tape of any length in bounded memory.
     ReadResult read(std::span<std::uint8_t> buffer, std::chrono::milliseconds) override {
-        if (fd_ >= 0) return {};
-        std::size_t n = std::min(buffer.size(), frames_.size() - pos_);
-        std::memcpy(buffer.data(), frames_.data() + pos_, n);
+        if (!image_) return {};
+        try {
+            if (pos_ == chunk_.size() && !ended_) {
+                chunk_ = image_->next();
+                pos_ = 0;
+                ended_ = chunk_.empty();
+            }
+        } catch (const Error& e) {
+            rethrow_named(e);
+        }
+        std::size_t n = std::min(buffer.size(), chunk_.size() - pos_);
+        std::memcpy(buffer.data(), chunk_.data() + pos_, n);
         pos_ += n;
-        return {n, pos_ == frames_.size()};
+        return {n, ended_};
     }
     void write(std::span<const std::uint8_t> bytes) override {
-        if (fd_ < 0) throw Error(Errc::usage, name() + ": opened for reading only");
-        posix::write_fd(fd_, bytes, name());
+        if (!writer_) throw Error(Errc::usage, name() + ": opened for reading only");
+        try {
+            writer_->append(bytes);
+        } catch (const Error& e) {
+            rethrow_named(e);
+        }
     }
     void drain() override {
-        if (fd_ >= 0 && ::fsync(fd_) != 0) posix::fail(name(), "cannot flush to disk");
+        if (!writer_) return;
+        try {
+            writer_->sync();
+        } catch (const Error& e) {
+            rethrow_named(e);
+        }
     }
     std::string name() const override { return "file:" + path_; }
 
 private:
+    // The file layer names no file; a device error names its device, where in it included.
+    [[noreturn]] void rethrow_named(const Error& e) const {
+        std::string where = e.where().describe();
+        throw Error(e.code(), name() + ": " + (where.empty() ? "" : where + ": ") + e.what(), e.hint());
+    }
+
     std::string path_;
-    std::vector<Frame> frames_;
+    std::unique_ptr<ImageInput> image_;
+    std::span<const Frame> chunk_;
     std::size_t pos_ = 0;
-    int fd_ = -1;
+    bool ended_ = false;
+    std::unique_ptr<FrameFileWriter> writer_;
 };
 
 }  // namespace

@@ -12,26 +12,10 @@
 #include <cstdio>
 #include <cstring>
 
+#include "common/fd_util.hpp"
 #include "tape/error.hpp"
 
 namespace tape {
-namespace {
-
-[[noreturn]] void io_fail(const std::string& what) { throw Error(Errc::io, what + ": " + std::strerror(errno)); }
-
-bool write_all(int fd, std::string_view data) {
-    while (!data.empty()) {
-        ssize_t n = ::write(fd, data.data(), data.size());
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            return false;
-        }
-        data.remove_prefix(static_cast<std::size_t>(n));
-    }
-    return true;
-}
-
-}  // namespace
 
 std::vector<std::uint8_t> read_file(const std::string& path) {
     FileSource source(path);
@@ -111,7 +95,7 @@ OutputFile::OutputFile(const std::string& path, bool overwrite) {
     }
     struct stat link_st {};
     bool exists = ::lstat(path.c_str(), &link_st) == 0;
-    if (exists && !overwrite) throw Error(Errc::usage, "already exists (use --force to replace it)");
+    if (exists && !overwrite) throw Error(Errc::exists, "already exists", Hint{Hint::Action::replace_output});
     overwrite_ = overwrite;
     struct stat st {};
     bool target_exists = exists && ::stat(path.c_str(), &st) == 0;
@@ -209,7 +193,7 @@ void OutputFile::commit() {
     }
     discard();
     errno = saved;
-    if (errno == EEXIST) throw Error(Errc::usage, "already exists (use --force to replace it)");
+    if (errno == EEXIST) throw Error(Errc::exists, "already exists", Hint{Hint::Action::replace_output});
     io_fail("cannot write");
 }
 
@@ -250,44 +234,6 @@ std::size_t FileSource::read(std::span<std::uint8_t> buffer) {
         if (n >= 0) return static_cast<std::size_t>(n);
         if (errno != EINTR) io_fail("cannot read");
     }
-}
-
-}  // namespace tape
-
-#include "tape/code.hpp"
-#include "tape/image.hpp"
-
-namespace tape {
-
-FrameFileWriter::FrameFileWriter(const std::string& path, const ImageFormat& format, const FrameCode* annotate,
-                                 bool replace)
-    : path_(path), format_(format), annotate_(annotate), last_sync_(std::chrono::steady_clock::now()) {
-    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : O_EXCL), 0666);
-    if (fd_ < 0) {
-        if (errno == EEXIST) throw Error(Errc::usage, "already exists (use --force to replace it)");
-        io_fail("cannot create");
-    }
-    std::string header = format_.write({}, ImageWriteOptions{annotate_, 1, true});
-    if (!write_all(fd_, header)) io_fail("cannot write");
-}
-
-FrameFileWriter::~FrameFileWriter() {
-    if (fd_ < 0) return;
-    ::fsync(fd_);
-    ::close(fd_);
-}
-
-void FrameFileWriter::append(std::span<const std::uint8_t> frames) {
-    if (frames.empty()) return;
-    std::string data = format_.write(frames, ImageWriteOptions{annotate_, frames_ + 1, false});
-    if (!write_all(fd_, data)) io_fail("cannot write");
-    frames_ += frames.size();
-    if (std::chrono::steady_clock::now() - last_sync_ >= std::chrono::seconds(1)) sync();
-}
-
-void FrameFileWriter::sync() {
-    if (::fsync(fd_) != 0) io_fail("cannot flush to disk");
-    last_sync_ = std::chrono::steady_clock::now();
 }
 
 }  // namespace tape

@@ -5,14 +5,17 @@
 #include <cctype>
 
 #include "image_formats.hpp"
+#include "tape/error.hpp"
 
 namespace tape {
 namespace {
 
+// In the order content detection tries them; one line per format.
 const ImageFormat formats[] = {
     holes_image_format(),
     raw_image_format(),
 };
+const ImageFormat& written_by_default = formats[1];  // raw
 
 std::string lower(std::string_view s) {
     std::string out(s);
@@ -47,6 +50,7 @@ const ImageFormat& detect_image_format(std::span<const std::uint8_t> prefix) {
     const ImageFormat* best = &formats[0];
     int best_score = -1;
     for (const auto& f : formats) {
+        if (!f.can_read()) continue;
         int score = f.match(prefix);
         if (score > best_score) {
             best = &f;
@@ -54,6 +58,26 @@ const ImageFormat& detect_image_format(std::span<const std::uint8_t> prefix) {
         }
     }
     return *best;
+}
+
+const ImageFormat& default_image_format() { return written_by_default; }
+
+std::vector<Frame> ImageFormat::read(std::span<const std::uint8_t> bytes) const {
+    if (!make_reader) throw Error(Errc::usage, std::string(id) + " images can only be written");
+    std::vector<Frame> frames;
+    auto reader = make_reader();
+    reader->read(bytes, frames);
+    reader->finish(frames);
+    return frames;
+}
+
+std::string ImageFormat::write(std::span<const Frame> frames, const ImageWriteOptions& options) const {
+    if (!make_writer) throw Error(Errc::usage, std::string(id) + " images can only be read");
+    std::string out;
+    auto writer = make_writer(options);
+    writer->write(frames, out);
+    writer->finish(out);
+    return out;
 }
 
 }  // namespace tape

@@ -3,6 +3,7 @@
 // tracks 8..4, the feed hole '.', tracks 3..1; 'o' (or 'O', '*') a hole, space no hole.
 // Anything after the closing '|' is a comment (the writer puts the frame number and the decoded
 // character there); blank lines and lines starting with '#' are comments too.
+#include <algorithm>
 #include <cstdio>
 
 #include "image_formats.hpp"
@@ -72,46 +73,95 @@ int holes_match(std::span<const std::uint8_t> prefix) {
     return score;
 }
 
-std::vector<Frame> holes_read(std::span<const std::uint8_t> bytes) {
-    std::vector<Frame> frames;
-    for_each_line(bytes, [&](std::string_view line, std::uint64_t line_no, bool) {
-        std::string why;
-        auto f = parse_picture(line, &why);
-        if (!f) throw Error(Errc::bad_image, Position{.line = line_no}, why);
-        frames.push_back(*f);
-        return true;
-    });
-    return frames;
-}
-
-std::string holes_write(std::span<const Frame> frames, const ImageWriteOptions& options) {
-    std::string out;
-    out.reserve(frames.size() * 32 + 200);
-    if (options.header) out += "# tape holes picture: one frame a line, tracks 87654.321 ('.' = feed hole, 'o' = hole)\n";
-    if (options.header && options.annotate)
-        out += "# code: " + std::string(code_name(options.annotate->code())) + ", parity " +
-               std::string(parity_name(options.annotate->parity())) + "; frame number, then character\n";
-    char number[24];
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-        out += holes_picture(frames[i]);
-        std::snprintf(number, sizeof number, " %6llu", static_cast<unsigned long long>(options.first_number + i));
-        out += number;
-        if (options.annotate) {
-            FrameKind k = options.annotate->kind(frames[i]);
-            bool bad = k == FrameKind::parity_error || k == FrameKind::not_in_code;
-            out += bad ? "  ! " : "  ";
-            out += options.annotate->label(frames[i]);
+// Whole lines are parsed as they come; the unfinished last one waits for the next chunk.
+class HolesReader : public ImageReader {
+public:
+    void read(std::span<const std::uint8_t> bytes, std::vector<Frame>& out) override {
+        auto end = std::find(bytes.rbegin(), bytes.rend(), '\n').base();
+        std::span<const std::uint8_t> lines(bytes.data(), static_cast<std::size_t>(end - bytes.begin()));
+        if (!lines.empty() && !pending_.empty()) {
+            pending_.insert(pending_.end(), lines.begin(), lines.end());
+            parse(pending_, out);
+            pending_.clear();
+        } else if (!lines.empty()) {
+            parse(lines, out);
         }
-        out += '\n';
+        pending_.insert(pending_.end(), end, bytes.end());
     }
-    return out;
-}
+    void finish(std::vector<Frame>& out) override {
+        parse(pending_, out);
+        pending_.clear();
+    }
+
+private:
+    void parse(std::span<const std::uint8_t> lines, std::vector<Frame>& out) {
+        std::uint64_t lines_before = lines_before_;
+        for_each_line(lines, [&](std::string_view line, std::uint64_t line_no, bool) {
+            std::string why;
+            auto f = parse_picture(line, &why);
+            if (!f) throw Error(Errc::bad_image, Position{.line = lines_before + line_no}, why);
+            out.push_back(*f);
+            return true;
+        });
+        lines_before_ += static_cast<std::uint64_t>(std::count(lines.begin(), lines.end(), '\n'));
+    }
+
+    std::vector<std::uint8_t> pending_;  // an unfinished line
+    std::uint64_t lines_before_ = 0;     // lines already parsed, so that errors count from the file's start
+};
+
+class HolesWriter : public ImageWriter {
+public:
+    explicit HolesWriter(const ImageWriteOptions& options) : options_(options), number_(options.first_number) {}
+
+    void write(std::span<const Frame> frames, std::string& out) override {
+        if (options_.header && !header_written_) write_header(out);
+        header_written_ = true;
+        char number[24];
+        for (Frame f : frames) {
+            out += holes_picture(f);
+            std::snprintf(number, sizeof number, " %6llu", static_cast<unsigned long long>(number_++));
+            out += number;
+            if (options_.annotate) {
+                FrameKind k = options_.annotate->kind(f);
+                bool bad = k == FrameKind::parity_error || k == FrameKind::not_in_code;
+                out += bad ? "  ! " : "  ";
+                out += options_.annotate->label(f);
+            }
+            out += '\n';
+        }
+    }
+    void finish(std::string& out) override {
+        if (options_.header && !header_written_) write_header(out);  // an empty tape still says what it is
+        header_written_ = true;
+    }
+
+private:
+    void write_header(std::string& out) const {
+        out += "# tape holes picture: one frame a line, tracks 87654.321 ('.' = feed hole, 'o' = hole)\n";
+        if (options_.annotate)
+            out += "# code: " + std::string(code_name(options_.annotate->code())) + ", parity " +
+                   std::string(parity_name(options_.annotate->parity())) + "; frame number, then character\n";
+    }
+
+    ImageWriteOptions options_;
+    std::uint64_t number_;
+    bool header_written_ = false;
+};
 
 }  // namespace
 
 ImageFormat holes_image_format() {
-    return {"holes", "text picture, one frame a line: |87654.321|", holes_extensions, false,
-            holes_match, holes_read, holes_write};
+    return {.id = "holes",
+            .description = "text picture, one frame a line: |87654.321|",
+            .extensions = holes_extensions,
+            .binary = false,
+            .bytes_are_frames = false,
+            .match = holes_match,
+            .make_reader = []() -> std::unique_ptr<ImageReader> { return std::make_unique<HolesReader>(); },
+            .make_writer = [](const ImageWriteOptions& options) -> std::unique_ptr<ImageWriter> {
+                return std::make_unique<HolesWriter>(options);
+            }};
 }
 
 }  // namespace tape

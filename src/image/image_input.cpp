@@ -31,44 +31,26 @@ ImageInput::ImageInput(std::unique_ptr<ByteSource> source, const std::string& na
         }
         format_ = &detect_image_format(bytes_);
     }
-    whole_file_format_ = format_->binary ? format_->id != "raw" : false;
+    if (!format_->can_read())
+        throw Error(Errc::usage, "cannot read " + std::string(format_->id) + " images, only write them");
+    reader_ = format_->make_reader();
 }
 
 bool ImageInput::fill() {
     if (ended_) return false;
-    std::size_t had = bytes_.size();
-    bytes_.resize(had + chunk_bytes);
-    std::size_t n = source_->read(std::span(bytes_).subspan(had));
-    bytes_.resize(had + n);
-    bool last = n == 0;
-    if (last) ended_ = true;
-    if (format_->id == "raw") {
-        ahead_.insert(ahead_.end(), bytes_.begin(), bytes_.end());
-        bytes_.clear();
-        return !last || !ahead_.empty();
+    if (!read_buffer_) read_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(chunk_bytes);
+    std::span<const std::uint8_t> chunk = bytes_;  // the bytes format detection looked at come first
+    std::size_t n = 0;
+    if (chunk.empty()) {
+        n = source_->read(std::span(read_buffer_.get(), chunk_bytes));
+        chunk = std::span(read_buffer_.get(), n);
     }
-    if (whole_file_format_) {
-        if (!last) return true;  // keep reading: this format is parsed whole
-        auto frames = format_->read(bytes_);
-        ahead_.insert(ahead_.end(), frames.begin(), frames.end());
-        bytes_.clear();
-        return !ahead_.empty();
-    }
-    // A text format: whole lines are parsed as they come; line numbers in errors count from the start.
-    auto end = last ? bytes_.end() : std::find(bytes_.rbegin(), bytes_.rend(), '\n').base();
-    if (end == bytes_.begin() && !last) return true;
-    std::span<const std::uint8_t> lines(bytes_.data(), static_cast<std::size_t>(end - bytes_.begin()));
-    try {
-        auto frames = format_->read(lines);
-        ahead_.insert(ahead_.end(), frames.begin(), frames.end());
-    } catch (const Error& e) {
-        Position where = e.where();
-        if (where.line) *where.line += lines_before_;
-        throw Error(e.code(), where, e.what());
-    }
-    lines_before_ += static_cast<std::uint64_t>(std::count(lines.begin(), lines.end(), '\n'));
-    bytes_.erase(bytes_.begin(), end);
-    return !last || !ahead_.empty();
+    if (chunk.empty()) ended_ = true;
+    std::size_t had = ahead_.size();
+    if (ended_) reader_->finish(ahead_);
+    else reader_->read(chunk, ahead_);
+    bytes_.clear();
+    return !ended_ || ahead_.size() > had;
 }
 
 std::span<const Frame> ImageInput::next() {
@@ -77,18 +59,16 @@ std::span<const Frame> ImageInput::next() {
         given_.swap(ahead_);
         return given_;
     }
-    if (format_->id == "raw" && bytes_.empty()) {
+    if (format_->bytes_are_frames && bytes_.empty()) {
         // The common case, without a copy: the bytes are the frames.
-        if (!raw_buffer_) raw_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(chunk_bytes);
+        if (!read_buffer_) read_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(chunk_bytes);
         if (ended_) return {};
-        std::size_t n = source_->read(std::span(raw_buffer_.get(), chunk_bytes));
+        std::size_t n = source_->read(std::span(read_buffer_.get(), chunk_bytes));
         if (n == 0) ended_ = true;
-        return std::span<const Frame>(raw_buffer_.get(), n);
+        return std::span<const Frame>(read_buffer_.get(), n);
     }
-    while (ahead_.empty()) {
+    while (ahead_.empty())
         if (!fill()) return {};
-        if (ended_ && ahead_.empty()) return {};
-    }
     given_.swap(ahead_);
     return given_;
 }

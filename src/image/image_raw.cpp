@@ -9,17 +9,34 @@ constexpr std::string_view raw_extensions[] = {".ptp", ".bin", ".tape", ".raw", 
 
 int raw_match(std::span<const std::uint8_t>) { return 1; }  // any bytes are a raw tape
 
-std::vector<Frame> raw_read(std::span<const std::uint8_t> bytes) { return {bytes.begin(), bytes.end()}; }
+class RawReader : public ImageReader {
+public:
+    void read(std::span<const std::uint8_t> bytes, std::vector<Frame>& out) override {
+        out.insert(out.end(), bytes.begin(), bytes.end());
+    }
+    void finish(std::vector<Frame>&) override {}
+};
 
-std::string raw_write(std::span<const Frame> frames, const ImageWriteOptions&) {
-    return {reinterpret_cast<const char*>(frames.data()), frames.size()};
-}
+class RawWriter : public ImageWriter {
+public:
+    void write(std::span<const Frame> frames, std::string& out) override {
+        out.append(reinterpret_cast<const char*>(frames.data()), frames.size());
+    }
+};
 
 }  // namespace
 
 ImageFormat raw_image_format() {
-    return {"raw", "one byte per frame, bit 0 = track 1 (SIMH paper-tape images)", raw_extensions, true,
-            raw_match, raw_read, raw_write};
+    return {.id = "raw",
+            .description = "one byte per frame, bit 0 = track 1 (SIMH paper-tape images)",
+            .extensions = raw_extensions,
+            .binary = true,
+            .bytes_are_frames = true,
+            .match = raw_match,
+            .make_reader = []() -> std::unique_ptr<ImageReader> { return std::make_unique<RawReader>(); },
+            .make_writer = [](const ImageWriteOptions&) -> std::unique_ptr<ImageWriter> {
+                return std::make_unique<RawWriter>();
+            }};
 }
 
 }  // namespace tape

@@ -40,7 +40,7 @@ public:
         if (t_.programs.empty())
             add("no-program", Severity::error, t_.locate(t_.text.size()), 0, "no '%' program start on the tape (§1.4)");
         for (const auto& p : t_.programs) program(p);
-        std::stable_sort(out_.begin(), out_.end(), [](const Finding& a, const Finding& b) { return a.where.offset < b.where.offset; });
+        std::stable_sort(out_.begin(), out_.end(), [](const Finding& a, const Finding& b) { return a.where.byte < b.where.byte; });
         return std::move(out_);
     }
 
@@ -50,7 +50,7 @@ private:
     std::vector<Finding> out_;
 
     void add(std::string_view rule, Severity s, const Location& where, std::uint64_t block, std::string message) {
-        out_.push_back(Finding{rule, s, where, block, std::move(message)});
+        out_.push_back(program_finding(rule, s, where, block, std::move(message)));
     }
 
     void program(const Program& p) {

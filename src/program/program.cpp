@@ -10,13 +10,11 @@
 
 namespace tape {
 
-std::string_view severity_name(Severity s) {
-    switch (s) {
-    case Severity::info: return "info";
-    case Severity::warning: return "warning";
-    case Severity::error: return "error";
-    }
-    return "?";
+Finding program_finding(std::string_view rule, Severity severity, const Location& where, std::uint64_t block,
+                        std::string message) {
+    Position at = where.position();
+    if (block) at.block = block;
+    return Finding{.code = Errc::bad_program, .where = at, .message = std::move(message), .rule = rule, .severity = severity};
 }
 
 std::string Word::digits() const {
@@ -89,28 +87,49 @@ constexpr auto char_class = [] {
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_address(char c) { return c >= 'A' && c <= 'Z'; }
 
+}  // namespace
+
+// The loader behind ProgramLoader: one pass, a line (block) at a time.
 class Loader {
 public:
-    Loader(std::string_view text, std::span<const std::uint64_t> frame_of, ProgramVisitor& v)
-        : text_(text), frame_of_(frame_of), v_(v) {}
+    explicit Loader(ProgramVisitor& v) : v_(v) {}
 
-    void run() {
-        std::size_t b = 0;
-        while (b < text_.size()) {
-            auto nl = text_.find('\n', b);
-            std::size_t e = nl == std::string_view::npos ? text_.size() : nl;
-            begin_line(b, e);
-            line(b, e, nl != std::string_view::npos);
-            b = e + 1;
+    // Whole lines are loaded as they come; the unfinished last one waits for the next piece.
+    void feed(std::string_view text, std::span<const std::uint64_t> frame_of) {
+        if (!frame_of.empty() && frame_of.size() != text.size()) frame_of = {};
+        auto last_nl = text.rfind('\n');
+        if (last_nl == std::string_view::npos) {
+            keep(text, frame_of);
+            return;
         }
+        std::size_t from = 0;
+        if (!pending_.empty()) {
+            from = text.find('\n') + 1;
+            keep(text.substr(0, from), frame_of.empty() ? frame_of : frame_of.first(from));
+            run(pending_, pending_frames_);
+            pending_.clear();
+            pending_frames_.clear();
+        }
+        run(text.substr(from, last_nl + 1 - from),
+            frame_of.empty() ? frame_of : frame_of.subspan(from, last_nl + 1 - from));
+        keep(text.substr(last_nl + 1), frame_of.empty() ? frame_of : frame_of.subspan(last_nl + 1));
+    }
+
+    void finish() {
+        if (!pending_.empty()) run(pending_, pending_frames_);
+        pending_.clear();
+        pending_frames_.clear();
         if (state_ != State::label && state_ != State::after_end) unterminated();
     }
 
 private:
     enum class State { label, program, after_end };
 
-    std::string_view text_;
-    std::span<const std::uint64_t> frame_of_;
+    std::string_view text_;                    // the lines being loaded now
+    std::span<const std::uint64_t> frame_of_;  // their frames, or empty
+    std::uint64_t base_ = 0;                   // offset of text_[0] from the start of the text
+    std::string pending_;                      // an unfinished line, and its frames
+    std::vector<std::uint64_t> pending_frames_;
     ProgramVisitor& v_;
     State state_ = State::label;
     std::uint64_t line_no_ = 0, ordinal_ = 0;
@@ -122,6 +141,26 @@ private:
     std::uint64_t last_block_ordinal_ = 0;
     Block blk_;  // reused: its vectors keep their capacity from block to block
 
+    void keep(std::string_view text, std::span<const std::uint64_t> frame_of) {
+        pending_ += text;
+        pending_frames_.insert(pending_frames_.end(), frame_of.begin(), frame_of.end());
+    }
+
+    // Loads whole lines (the last may lack its LF only at the end of the text).
+    void run(std::string_view text, std::span<const std::uint64_t> frame_of) {
+        text_ = text;
+        frame_of_ = frame_of;
+        std::size_t b = 0;
+        while (b < text_.size()) {
+            auto nl = text_.find('\n', b);
+            std::size_t e = nl == std::string_view::npos ? text_.size() : nl;
+            begin_line(b, e);
+            line(b, e, nl != std::string_view::npos);
+            b = e + 1;
+        }
+        base_ += text_.size();
+    }
+
     void begin_line(std::size_t b, std::size_t e) {
         ++line_no_;
         line_start_ = b;
@@ -130,7 +169,7 @@ private:
 
     Location at(std::size_t offset) const {
         Location l;
-        l.offset = offset;
+        l.offset = base_ + offset;
         if (!frame_of_.empty()) l.frame = frame_of_[std::min(offset, frame_of_.size() - 1)] + 1;
         l.line = line_no_;
         l.column = offset - line_start_ + 1;
@@ -142,7 +181,7 @@ private:
     }
 
     void find(std::string_view rule, Severity s, std::size_t offset, std::uint64_t block, std::string message) {
-        v_.finding(Finding{rule, s, at(offset), block, std::move(message)});
+        v_.finding(program_finding(rule, s, at(offset), block, std::move(message)));
     }
 
     std::size_t skip_blanks(std::size_t i, std::size_t e) const {
@@ -186,8 +225,8 @@ private:
 
     void unterminated() {
         bool blocks = last_block_ordinal_ != 0;
-        v_.finding(Finding{"program-end", Severity::error, blocks ? last_block_where_ : program_start_, last_block_ordinal_,
-                           "the program does not end with M02 or M30 (§1.9)"});
+        v_.finding(program_finding("program-end", Severity::error, blocks ? last_block_where_ : program_start_,
+                                   last_block_ordinal_, "the program does not end with M02 or M30 (§1.9)"));
     }
 
     void start_program(std::size_t pct, std::size_t e) {
@@ -252,9 +291,9 @@ private:
         }
         if (!report) return;
         if (digits == 0)
-            find("no-digits", Severity::error, w.where.offset, block_no, "the word " + w.text + " has no digits (§3.1.1)");
+            find("no-digits", Severity::error, i, block_no, "the word " + w.text + " has no digits (§3.1.1)");
         if (points > 1)
-            find("two-points", Severity::error, w.where.offset, block_no, "the word " + w.text + " has " + std::to_string(points) + " decimal points");
+            find("two-points", Severity::error, i, block_no, "the word " + w.text + " has " + std::to_string(points) + " decimal points");
     }
 
     // The next reused slot of blk_.words, grown only when a block has more words than any before.
@@ -335,6 +374,8 @@ private:
     }
 };
 
+namespace {
+
 // load(): keeps everything the loader streams.
 class Collector : public ProgramVisitor {
 public:
@@ -360,8 +401,17 @@ private:
 
 }  // namespace
 
+ProgramLoader::ProgramLoader(ProgramVisitor& visitor) : loader_(std::make_unique<Loader>(visitor)) {}
+ProgramLoader::~ProgramLoader() = default;
+void ProgramLoader::feed(std::string_view text, std::span<const std::uint64_t> frame_of) {
+    loader_->feed(text, frame_of);
+}
+void ProgramLoader::finish() { loader_->finish(); }
+
 void load_each(std::string_view text, std::span<const std::uint64_t> frame_of, ProgramVisitor& visitor) {
-    Loader(text, frame_of, visitor).run();
+    ProgramLoader loader(visitor);
+    loader.feed(text, frame_of);
+    loader.finish();
 }
 
 LoadedTape load(std::string text, std::vector<std::uint64_t> frame_of) {

@@ -60,13 +60,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     tape::LoadedTape program = tape::load(std::string(text));
     auto findings = tape::lint(program, tape::LintOptions{&*spec});
     for (const auto& f : findings)
-        if (f.where.offset > text.size()) __builtin_trap();
+        if (!f.where.byte || *f.where.byte > text.size()) __builtin_trap();
     for (const auto& p : program.programs)
         for (const auto& b : p.blocks) {
             // Words the loader found malformed (no digits, two points) are not the formatter's to keep.
             bool clean = true;
             for (const auto& f : program.findings)
-                if (f.block == b.ordinal && f.rule != "program-end") clean = false;
+                if (f.where.block == b.ordinal && f.rule != "program-end") clean = false;
             auto put = [&](const tape::Word& w) {
                 std::string out;
                 try {

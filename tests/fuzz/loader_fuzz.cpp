@@ -2,6 +2,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "tape/error.hpp"
 #include "tape/format_spec.hpp"
@@ -18,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const tape::FormatSpec implied = tape::parse_format_spec("N03 G02 X+053 Y+530 Z+53 F031 S04 T04 M02");
     auto findings = tape::lint(t, tape::LintOptions{&spec});
     for (const auto& f : findings)
-        if (f.where.offset > text.size()) __builtin_trap();
+        if (!f.where.byte || *f.where.byte > text.size()) __builtin_trap();
     for (const auto& p : t.programs)
         for (const auto& b : p.blocks) {
             if (b.where.offset >= text.size()) __builtin_trap();
@@ -30,6 +31,24 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 }
             }
         }
+    // The loader fed in three pieces finds the same blocks and findings as on the whole text.
+    struct Count : tape::ProgramVisitor {
+        std::size_t blocks = 0, findings = 0;
+        void block(const tape::Block&) override { ++blocks; }
+        void finding(const tape::Finding&) override { ++findings; }
+    } pieces;
+    {
+        tape::ProgramLoader loader(pieces);
+        std::string_view all(text);
+        std::size_t a = size / 3, b = size - size / 5;
+        loader.feed(all.substr(0, a));
+        loader.feed(all.substr(a, b - a));
+        loader.feed(all.substr(b));
+        loader.finish();
+    }
+    std::size_t blocks = 0;
+    for (const auto& p : t.programs) blocks += p.blocks.size();
+    if (pieces.blocks != blocks || pieces.findings != t.findings.size()) __builtin_trap();
     tape::find_main_block(t, text.size() / 2);
     tape::find_rewind_stop(t, text.size());
     tape::find_numbered_blocks(t, 1);

@@ -1,0 +1,94 @@
+// Opening whatever the user gave: a tape image or a text program, from a file, standard input or any
+// byte source, read a chunk at a time in bounded memory:
+//     bytes -> image format -> frames -> detected code -> text -> programs.
+// The one entry point commands and programs use; nothing here prints or exits.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "tape/decode.hpp"
+#include "tape/detect.hpp"
+#include "tape/file_io.hpp"
+#include "tape/image.hpp"
+#include "tape/image_input.hpp"
+#include "tape/program.hpp"
+#include "tape/utf8_text.hpp"
+
+namespace tape {
+
+enum class InputKind {
+    automatic,  ///< an image by format, extension or content; clean UTF-8 text is a text program
+    text,       ///< a text program
+    image,      ///< a tape image
+};
+
+struct InputOptions {
+    InputKind kind = InputKind::automatic;
+    const ImageFormat* format = nullptr;  ///< given: the input is an image in this format
+    bool detect_code = true;  ///< decide ISO or EIA from the tape (ISO when decode.parity is not even)
+    DecodeOptions decode{};   ///< the code when not detected, parity, charset, positions, limits
+};
+
+class Input {
+public:
+    /// Opens path ("-": standard input). Throws Error(Errc::io) when it cannot be read.
+    Input(const std::string& path, const InputOptions& options);
+    /// The same over any source; name is used for its extension only.
+    Input(std::unique_ptr<ByteSource> source, const std::string& name, const InputOptions& options);
+    ~Input();
+    Input(const Input&) = delete;
+    Input& operator=(const Input&) = delete;
+
+    bool is_image() const { return image_ != nullptr; }
+    /// The image's format, or nullptr for a text program.
+    const ImageFormat* format() const { return image_ ? &image_->format() : nullptr; }
+
+    /// An image's frames, a chunk at a time, valid until the next call; empty at the end.
+    std::span<const Frame> next_frames();
+
+    /// How an image is decoded: decided on first use, detecting the code when asked (the frames read
+    /// for it are given again). Throws Error(Errc::unknown_code) when the tape fits neither code.
+    const DecodeOptions& decode_options();
+    /// How the code was detected, once it was.
+    const std::optional<CodeDetection>& detection() const { return detection_; }
+    /// Detects the code of an image from the frames at its start (read ahead and given again), even
+    /// when the options did not ask for it; never throws for a tape that fits no code.
+    const CodeDetection& detect();
+
+    /// The next piece of program text, appended to out: an image decoded (frame_of counted from the
+    /// start of the tape when decode.positions; out.diagnostics for bad frames), a text program as it
+    /// is. False at the end, or once decoding stopped at a bad frame (out.complete is then false).
+    /// A text program that is not clean UTF-8 throws Error(Errc::bad_text) at the byte.
+    bool next_text(DecodeResult& out);
+    /// The decoder of an image, for the counts of bad frames; nullptr before next_text or for text.
+    const Decoder* decoder() const { return decoder_.get(); }
+
+private:
+    void open(std::unique_ptr<ByteSource> source, const std::string& name);
+
+    InputOptions options_;
+    std::unique_ptr<ImageInput> image_;
+    std::unique_ptr<ByteSource> text_source_;
+    std::vector<std::uint8_t> text_ahead_;  // what the choice of image or text looked at
+    std::unique_ptr<std::uint8_t[]> text_buffer_;
+    TextChecker text_checker_;
+    std::optional<DecodeOptions> decode_;
+    std::optional<CodeDetection> detection_;
+    std::unique_ptr<Decoder> decoder_;
+    bool ended_ = false;
+};
+
+/// Streams the programs of input into visitor, in bounded memory. A bad frame reaches
+/// visitor.finding() as its Diagnostic (Errc::parity, Errc::not_in_code) where it stands among the
+/// loader's findings; unless decode.keep_going, loading stops there and false is returned.
+bool load_each(Input& input, ProgramVisitor& visitor);
+
+/// The whole contents in memory, for the commands that need all of it at once; bad frames are
+/// among tape.findings. Returns false with what was loaded when a bad frame stopped decoding.
+bool load(Input& input, LoadedTape& tape);
+
+}  // namespace tape

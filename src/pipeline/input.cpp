@@ -1,0 +1,192 @@
+#include "tape/input.hpp"
+
+#include <algorithm>
+
+#include "tape/error.hpp"
+
+namespace tape {
+namespace {
+
+constexpr std::size_t text_chunk_bytes = 128 << 10;
+constexpr std::size_t kind_prefix_bytes = 64 << 10;  // what the choice of image or text looks at
+
+Error text_fault_error(const TextFault& fault) {
+    return Error(Errc::bad_text, fault.where, fault.what + ": a text program cannot hold it",
+                 Hint{Hint::Action::read_as_image});
+}
+
+// Bytes already read, then the rest of the source: the image reader sees the file from its start.
+class PrefixedSource : public ByteSource {
+public:
+    PrefixedSource(std::vector<std::uint8_t> prefix, std::unique_ptr<ByteSource> rest)
+        : prefix_(std::move(prefix)), rest_(std::move(rest)) {}
+    std::size_t read(std::span<std::uint8_t> buffer) override {
+        if (given_ < prefix_.size()) {
+            std::size_t n = std::min(buffer.size(), prefix_.size() - given_);
+            std::copy_n(prefix_.begin() + static_cast<std::ptrdiff_t>(given_), n, buffer.begin());
+            given_ += n;
+            return n;
+        }
+        return rest_->read(buffer);
+    }
+
+private:
+    std::vector<std::uint8_t> prefix_;
+    std::size_t given_ = 0;
+    std::unique_ptr<ByteSource> rest_;
+};
+
+std::vector<std::uint8_t> read_prefix(ByteSource& source, std::size_t limit) {
+    std::vector<std::uint8_t> bytes(limit);
+    std::size_t have = 0;
+    while (have < limit) {
+        std::size_t n = source.read(std::span(bytes).subspan(have));
+        if (n == 0) break;
+        have += n;
+    }
+    bytes.resize(have);
+    return bytes;
+}
+
+// The prefix without a character its end cut short, for the UTF-8 test.
+std::span<const std::uint8_t> whole_characters(std::span<const std::uint8_t> bytes) {
+    for (std::size_t back = 1; back <= 3 && back <= bytes.size(); ++back) {
+        std::uint8_t c = bytes[bytes.size() - back];
+        if ((c & 0xC0) == 0x80) continue;
+        std::size_t need = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+        return need > back ? bytes.first(bytes.size() - back) : bytes;
+    }
+    return bytes;
+}
+
+}  // namespace
+
+Input::Input(const std::string& path, const InputOptions& options) : options_(options) {
+    open(std::make_unique<FileSource>(path), path);
+}
+
+Input::Input(std::unique_ptr<ByteSource> source, const std::string& name, const InputOptions& options)
+    : options_(options) {
+    open(std::move(source), name);
+}
+
+Input::~Input() = default;
+
+void Input::open(std::unique_ptr<ByteSource> source, const std::string& name) {
+    bool image = options_.kind == InputKind::image;
+    if (options_.kind == InputKind::automatic) {
+        // An explicit format or an image's own extension decides; otherwise the content does: a holes
+        // picture, clean UTF-8 text (a text program), a text with a stray byte (reported where the
+        // byte is, not read as a strange tape), or anything else (a raw tape).
+        const ImageFormat* by_name = name.empty() || name == "-" ? nullptr : image_format_for_path(name);
+        image = options_.format || (by_name && !extension_is_ambiguous(name));
+        if (!image) {
+            text_ahead_ = read_prefix(*source, kind_prefix_bytes);
+            const ImageFormat& by_content = detect_image_format(text_ahead_);
+            bool picture = !by_content.binary && by_content.match(text_ahead_) >= 60;
+            image = picture || (!is_program_text(whole_characters(text_ahead_)) && !looks_like_damaged_text(text_ahead_));
+        }
+    }
+    if (image) {
+        if (!text_ahead_.empty())
+            source = std::make_unique<PrefixedSource>(std::move(text_ahead_), std::move(source));
+        text_ahead_.clear();
+        image_ = std::make_unique<ImageInput>(std::move(source), name, options_.format);
+        return;
+    }
+    text_source_ = std::move(source);
+}
+
+std::span<const Frame> Input::next_frames() {
+    if (!image_) throw Error(Errc::usage, "a text program has no frames");
+    decode_options();  // detection reads ahead: the frames it read come first
+    return image_->next();
+}
+
+const DecodeOptions& Input::decode_options() {
+    if (decode_) return *decode_;
+    DecodeOptions o = options_.decode;
+    if (image_ && options_.detect_code) {
+        if (o.parity != Parity::even) {
+            o.code = Code::iso;  // only ISO/ASCII tapes have a choice of parity
+        } else {
+            detect();
+            if (!detection_->code) throw Error(Errc::unknown_code, detection_->reason, detection_->hint);
+            o.code = *detection_->code;
+        }
+    }
+    if (o.code == Code::eia && o.parity != Parity::even)
+        throw Error(Errc::usage, "parity is for ISO tapes; EIA parity is always odd on track 5");
+    decode_ = o;
+    return *decode_;
+}
+
+const CodeDetection& Input::detect() {
+    if (!image_) throw Error(Errc::usage, "a text program has no tape code");
+    if (!detection_) detection_ = image_->detect();
+    return *detection_;
+}
+
+bool Input::next_text(DecodeResult& out) {
+    if (ended_) return false;
+    if (image_) {
+        if (!decoder_) decoder_ = std::make_unique<Decoder>(decode_options());
+        auto frames = image_->next();
+        if (frames.empty()) {
+            ended_ = true;
+            return false;
+        }
+        if (!decoder_->feed(frames, out)) {
+            out.complete = false;
+            ended_ = true;
+        }
+        return true;
+    }
+    std::span<const std::uint8_t> piece;
+    if (!text_ahead_.empty()) {
+        piece = text_ahead_;
+    } else {
+        if (!text_buffer_) text_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(text_chunk_bytes);
+        piece = std::span(text_buffer_.get(), text_source_->read(std::span(text_buffer_.get(), text_chunk_bytes)));
+    }
+    if (piece.empty()) {
+        ended_ = true;
+        if (auto fault = text_checker_.finish()) throw text_fault_error(*fault);
+        return false;
+    }
+    if (auto fault = text_checker_.check(piece)) throw text_fault_error(*fault);
+    out.text.append(reinterpret_cast<const char*>(piece.data()), piece.size());
+    text_ahead_.clear();
+    return true;
+}
+
+bool load_each(Input& input, ProgramVisitor& visitor) {
+    ProgramLoader loader(visitor);
+    DecodeResult piece;
+    bool positions = input.is_image() && input.decode_options().positions;
+    while (input.next_text(piece)) {
+        loader.feed(piece.text, positions ? std::span<const std::uint64_t>(piece.frame_of) : std::span<const std::uint64_t>());
+        for (const auto& d : piece.diagnostics) visitor.finding(d);
+        piece.text.clear();
+        piece.frame_of.clear();
+        piece.diagnostics.clear();
+        if (!piece.complete) return false;
+    }
+    loader.finish();
+    return true;
+}
+
+bool load(Input& input, LoadedTape& tape) {
+    DecodeResult all;
+    bool complete = true;
+    while (input.next_text(all))
+        if (!all.complete) {
+            complete = false;
+            break;
+        }
+    tape = load(std::move(all.text), std::move(all.frame_of));
+    tape.findings.insert(tape.findings.begin(), all.diagnostics.begin(), all.diagnostics.end());
+    return complete;
+}
+
+}  // namespace tape
