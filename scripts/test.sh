@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds, then runs every test: units, CLI end-to-end, fuzz corpus replay (build/); the same again
+# Checks the formatting (.clang-format), builds, then runs every test: units, CLI end-to-end, fuzz corpus replay (build/); the same again
 # under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/); then a bounded fuzz run of
 # each target (TAPE_FUZZ_SECONDS, default 30 s each). Every stage runs even when one before it
 # failed; the exit status is 1 when any failed.
@@ -16,6 +16,7 @@ stage() {
 werror=OFF
 [ "${CI:-}" = "true" ] && werror=ON
 
+stage format bash scripts/check-format.sh
 stage build bash scripts/build.sh &&
   stage tests ctest --test-dir build --output-on-failure -j2
 

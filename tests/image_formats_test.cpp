@@ -115,6 +115,31 @@ TEST_P(ImageFormatContract, ReadsAndWritesTheSameHoweverCut) {
     }
 }
 
+// A hex dump (read only) as a hobby reader saves it: pairs of digits, comments, any line length.
+TEST(HexImage, ReadsADumpAndRefusesWhatIsNoDump) {
+    const ImageFormat& hex = format("hex");
+    EXPECT_FALSE(hex.can_write());
+    const std::string dump = "# read 2026-11-23\n00 00 A5 0a\n8D\t0A # end\r\n";
+    EXPECT_EQ(hex.read(bytes_of(dump)), (std::vector<Frame>{0x00, 0x00, 0xA5, 0x0A, 0x8D, 0x0A}));
+    EXPECT_EQ(&detect_image_format(bytes_of(dump)), &hex);
+    EXPECT_EQ(hex.match(bytes_of("%\nN1 G01 X1\n")), 0) << "a program is no dump";
+    for (const char* bad : {"00 0\n", "00 0A5\n", "00\nzz\n"}) {
+        try {
+            hex.read(bytes_of(bad));
+            ADD_FAILURE() << bad;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.code(), Errc::bad_image) << bad;
+            EXPECT_TRUE(e.where().line) << bad;
+        }
+    }
+    try {
+        hex.write({}, ImageWriteOptions{});
+        ADD_FAILURE() << "a read-only format wrote";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), Errc::usage);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryFormat, ImageFormatContract, ::testing::ValuesIn(format_ids()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              std::string name = info.param;

@@ -21,6 +21,7 @@ std::span<const std::uint8_t> bytes_of(const std::string& s) {
 TEST(ImageContract, EveryFormatRoundTripsEveryFrameAndKnowsItsOwnOutput) {
     FrameCode iso = FrameCode::iso();
     for (const auto& format : image_formats()) {
+        if (!format.can_read() || !format.can_write()) continue;  // only reads or only writes
         for (const FrameCode* annotate : {static_cast<const FrameCode*>(nullptr), static_cast<const FrameCode*>(&iso)}) {
             std::string file = format.write(every_frame(), ImageWriteOptions{annotate});
             EXPECT_EQ(format.read(bytes_of(file)), every_frame()) << format.id;

@@ -78,6 +78,7 @@ std::string hint_text(const tape::Hint& hint) {
     case A::use_charset: return "use --charset " + std::string(hint.value);
     case A::use_iso_parity: return "try --code iso --parity " + std::string(hint.value);
     case A::read_as_image: return "if this is a tape image, give --input image";
+    case A::give_source_format: return "give --from SPEC for implied points";
     }
     return "";
 }
@@ -253,6 +254,7 @@ public:
     void block(const tape::Block& block) override { to_.block(block); }
     void after_end(std::string_view text, const tape::Location& where) override { to_.after_end(text, where); }
     void physical_start() override { to_.physical_start(); }
+    void end(const tape::Location& where) override { to_.end(where); }
     void finding(const tape::Finding& f) override {
         if (f.code == tape::Errc::parity || f.code == tape::Errc::not_in_code) {
             say_diagnostic(name_, f, raw_);

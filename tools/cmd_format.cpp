@@ -2,7 +2,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "tape/encode.hpp"
-#include "tape/lint.hpp"
+#include "tape/reformat.hpp"
 
 namespace cli {
 namespace {
@@ -28,39 +28,17 @@ void run(const FormatArgs& a) {
     std::optional<tape::FormatSpec> from;
     if (a.from_option->count() > 0) from = parse_spec(a.from);
     ProgramInput in = load_program_whole(a.input, a.source);
-    const std::string sep = a.spaces ? " " : "";
-    std::string text = in.tape.label;
+    std::vector<tape::Diagnostic> findings;
+    std::string text = tape::reformat(in.tape,
+                                      tape::ReformatOptions{.spec = &spec, .from = from ? &*from : nullptr,
+                                                            .strip_zeros = a.strip_zeros, .spaces = a.spaces},
+                                      findings);
     bool failed = false;
-    for (const auto& p : in.tape.programs) {
-        if (!from && !tape::uses_explicit_points(p))
-            say(in.name, position_text(p.start, in.from_tape) +
-                             ": the program writes no decimal point: its numbers are "
-                             "taken as whole numbers (give --from SPEC for implied points)");
-        text += (in.tape.physical_start && &p == &in.tape.programs.front() ? "%%" : "%") + p.number.value_or("") + "\n";
-        for (const auto& b : p.blocks) {
-            if (b.skip && !spec.block_skip) {
-                // Dropping the '/' would make an optional block mandatory: refuse instead.
-                say(in.name, position_text(b.where, in.from_tape) + ": block " + std::to_string(b.ordinal) +
-                                 ": the controller format has no '/' block skip");
-                failed = true;
-            }
-            std::string line = b.skip ? "/" : "";
-            auto put = [&](const tape::Word& w) {
-                try {
-                    line += (line.empty() || line == "/" ? "" : sep) +
-                            tape::format_word(w, spec, from ? &*from : nullptr, a.strip_zeros);
-                } catch (const tape::Error& e) {
-                    say(in.name, position_text(w.where, in.from_tape) + ": block " + std::to_string(b.ordinal) + ": " +
-                                     e.what());
-                    failed = true;
-                }
-            };
-            if (b.number) put(*b.number);
-            for (const auto& w : b.words) put(w);
-            for (const auto& c : b.comments) line += (line.empty() ? "" : sep) + "(" + c.text + ")";
-            text += line + "\n";
-        }
-        text += p.after_end;
+    for (const auto& f : findings) {
+        std::string block = f.where.block ? ": block " + std::to_string(*f.where.block) : "";
+        std::string hint = hint_text(f.hint);
+        say(in.name, position_text(f.where, in.from_tape) + block + ": " + f.message + (hint.empty() ? "" : " (" + hint + ")"));
+        failed |= f.severity == tape::Severity::error;
     }
     if (failed) throw Exit{bad_data};
     std::string kind = a.out_format;

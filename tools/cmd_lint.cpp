@@ -1,5 +1,4 @@
 // tape lint: check programs against ГОСТ 20999-83 and, with --spec, a controller's format.
-#include <map>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -23,28 +22,24 @@ void run(const LintArgs& a) {
             fail("", e);
         }
     }
-    ProgramInput in = load_program_whole(a.input, a.source);
-    auto findings = tape::lint(in.tape, tape::LintOptions{spec ? &*spec : nullptr});
+    // Streamed: a tape of any length is checked in bounded memory.
+    ProgramInput in;
+    in.name = display_name(a.input);
+    auto input = open_program(a.input, a.source);
+    in.from_tape = input->is_image();
+    tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors});
+    load_program(*input, in.name, linter);
     std::string out;
-    std::size_t errors = 0, warnings = 0;
-    std::map<std::string, std::uint64_t> shown, unlisted;  // by rule, for --max-errors
-    for (const auto& f : findings) {
-        errors += f.severity == tape::Severity::error;
-        warnings += f.severity == tape::Severity::warning;
-        std::string rule(f.id());
-        if (globals().max_errors != 0 && shown[rule] >= globals().max_errors) {
-            ++unlisted[rule];
-            continue;
-        }
-        ++shown[rule];
+    for (const auto& f : linter.findings()) {
         out += in.name + ":" + position_text(f.where, in.from_tape) +
-               (f.where.block ? ":block " + std::to_string(*f.where.block) : "") + ": " + rule + ": " +
+               (f.where.block ? ":block " + std::to_string(*f.where.block) : "") + ": " + std::string(f.id()) + ": " +
                (f.severity == tape::Severity::error ? "" : std::string(tape::severity_name(f.severity)) + ": ") +
                tape::visible(f.message) + "\n";
     }
     write_output("-", out, false, false);
-    for (const auto& [rule, count] : unlisted) say_unlisted(in.name, count, rule + " finding(s)");
-    if (globals().verbosity >= 0 && !findings.empty())
+    for (const auto& [rule, count] : linter.unlisted()) say_unlisted(in.name, count, std::string(rule) + " finding(s)");
+    auto errors = linter.count(tape::Severity::error), warnings = linter.count(tape::Severity::warning);
+    if (globals().verbosity >= 0 && errors + warnings + linter.count(tape::Severity::info) > 0)
         say(in.name, std::to_string(errors) + " error(s), " + std::to_string(warnings) + " warning(s)");
     if (errors) throw Exit{bad_data};
 }

@@ -1,6 +1,11 @@
 // Checks of a loaded tape against ГОСТ 20999-83, and optionally against a controller format.
 #pragma once
 
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "tape/format_spec.hpp"
@@ -10,6 +15,7 @@ namespace tape {
 
 struct LintOptions {
     const FormatSpec* spec = nullptr;  ///< also check every word against this controller format
+    std::size_t max_per_rule = 0;      ///< keep at most this many findings of a rule, count the rest (0: all)
 };
 
 /// Every finding: the loader's syntax findings and the rules below, in tape order.
@@ -17,6 +23,42 @@ struct LintOptions {
 /// word-order (warning), sign-not-allowed, block-number-order (warning), and with a spec
 /// spec-address, spec-sign, spec-point, spec-digits, spec-main, spec-skip.
 std::vector<Finding> lint(const LoadedTape& tape, const LintOptions& options = {});
+
+/// The same checks fed by the loader as it streams (ProgramLoader, load_each): the loader's findings
+/// and the rules, in bounded memory. A program's blocks are held only with a controller format, whose
+/// checks must first know whether the program writes decimal points anywhere.
+class LintVisitor : public ProgramVisitor {
+public:
+    explicit LintVisitor(const LintOptions& options = {});
+    ~LintVisitor() override;
+    void program_start(const Program& header) override;
+    void block(const Block& block) override;
+    void after_end(std::string_view text, const Location& where) override;
+    void finding(const Finding& finding) override;
+    void end(const Location& where) override;
+    /// Every finding so far (up to max_per_rule of each), sorted by position in the text.
+    std::vector<Finding> findings() const;
+    /// Findings beyond max_per_rule, by rule; each severity's total, listed or not.
+    const std::map<std::string_view, std::uint64_t>& unlisted() const { return unlisted_; }
+    std::uint64_t count(Severity s) const { return counts_[static_cast<int>(s)]; }
+
+private:
+    void close_program();
+    void keep(Finding f);
+    void check_block(const Block& b, bool points);
+
+    LintOptions options_;
+    std::function<void(Finding)> sink_;  // keep(), for the checks shared with lint()
+    std::vector<Finding> out_;
+    std::map<std::string_view, std::uint64_t> kept_, unlisted_;
+    std::uint64_t counts_[3] = {};
+    bool any_program_ = false, in_program_ = false, program_points_ = false;
+    Location program_start_{};
+    std::uint64_t program_blocks_ = 0;
+    std::optional<long long> last_number_{};
+    std::optional<Location> after_end_at_{};  // the first text after the end that is not blank
+    std::vector<Block> held_;                 // with a controller format: the program's blocks
+};
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).
 bool uses_explicit_points(const Program& program);

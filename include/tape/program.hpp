@@ -106,6 +106,8 @@ public:
     /// The '%%' physical start mark (§1.8).
     virtual void physical_start() {}
     virtual void finding(const Finding& finding) { (void)finding; }
+    /// The text has ended; where is just past its last character.
+    virtual void end(const Location& where) { (void)where; }
 };
 
 /// The loader fed a piece of text at a time, in bounded memory (a line is held until its LF comes):

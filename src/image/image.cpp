@@ -13,9 +13,9 @@ namespace {
 // In the order content detection tries them; one line per format.
 const ImageFormat formats[] = {
     holes_image_format(),
+    hex_image_format(),
     raw_image_format(),
 };
-const ImageFormat& written_by_default = formats[1];  // raw
 
 std::string lower(std::string_view s) {
     std::string out(s);
@@ -60,7 +60,8 @@ const ImageFormat& detect_image_format(std::span<const std::uint8_t> prefix) {
     return *best;
 }
 
-const ImageFormat& default_image_format() { return written_by_default; }
+// raw: what simulators, punches and other tools take.
+const ImageFormat& default_image_format() { return *find_image_format("raw"); }
 
 std::vector<Frame> ImageFormat::read(std::span<const std::uint8_t> bytes) const {
     if (!make_reader) throw Error(Errc::usage, std::string(id) + " images can only be written");

@@ -7,5 +7,6 @@ namespace tape {
 
 ImageFormat raw_image_format();
 ImageFormat holes_image_format();
+ImageFormat hex_image_format();
 
 }  // namespace tape

@@ -1,6 +1,7 @@
 // Lint: the rules of ГОСТ 20999-83 §1.4-§2.7 over loaded programs.
 #include <algorithm>
 #include <array>
+#include <functional>
 
 #include "tape/functions.hpp"
 #include "tape/lint.hpp"
@@ -31,97 +32,59 @@ bool is_dimension(char a) {
     return dimension_order.find(a) != std::string_view::npos || interpolation_order.find(a) != std::string_view::npos;
 }
 
-class Linter {
-public:
-    Linter(const LoadedTape& t, const LintOptions& o) : t_(t), o_(o) {}
+using Add = const std::function<void(Finding)>&;
 
-    std::vector<Finding> run() {
-        out_ = t_.findings;
-        if (t_.programs.empty())
-            add("no-program", Severity::error, t_.locate(t_.text.size()), 0, "no '%' program start on the tape (§1.4)");
-        for (const auto& p : t_.programs) program(p);
-        std::stable_sort(out_.begin(), out_.end(), [](const Finding& a, const Finding& b) { return a.where.byte < b.where.byte; });
-        return std::move(out_);
-    }
+void add(Add out, std::string_view rule, Severity s, const Location& where, std::uint64_t block, std::string message) {
+    out(program_finding(rule, s, where, block, std::move(message)));
+}
 
-private:
-    const LoadedTape& t_;
-    const LintOptions& o_;
-    std::vector<Finding> out_;
+void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points) {
+    if (b.main && !s.main_block) add(out, "spec-main", Severity::error, b.where, b.ordinal, "the controller format has no ':' main blocks");
+    if (b.skip && !s.block_skip) add(out, "spec-skip", Severity::error, b.where, b.ordinal, "the controller format has no '/' block skip");
+    auto check = [&](const Word& w) {
+        for (auto& [rule, message] : check_word(w, s, points)) add(out, rule, Severity::error, w.where, b.ordinal, message);
+    };
+    if (b.number) check(*b.number);
+    for (const auto& w : b.words) check(w);
+}
 
-    void add(std::string_view rule, Severity s, const Location& where, std::uint64_t block, std::string message) {
-        out_.push_back(program_finding(rule, s, where, block, std::move(message)));
-    }
-
-    void program(const Program& p) {
-        if (p.blocks.empty())
-            add("program-start", Severity::error, p.start, 0, "'%' is not followed by a block (§1.4)");
-        if (p.after_end_at && p.after_end.find_first_not_of(" \t\r\n") != std::string::npos)
-            add("after-end", Severity::info, *p.after_end_at, 0, "text after M02/M30 is not part of the program (§1.9)");
-        bool points = uses_explicit_points(p);
-        std::optional<long long> last_number;
-        for (const auto& b : p.blocks) {
-            block(b, points);
-            if (b.number) {
-                auto n = b.number->integer();
-                if (n && last_number && *n <= *last_number)
-                    add("block-number-order", Severity::warning, b.number->where, b.ordinal,
-                        "block number " + b.number->text + " does not increase (the block before is " + std::to_string(*last_number) + ")");
-                if (n) last_number = n;
-            }
+void word_checks(Add out, const Block& b) {
+    std::array<const Word*, 128> seen{};
+    std::array<const Word*, 128> group{};
+    int max_rank = -1;
+    const Word* max_word = nullptr;
+    const Word* previous = nullptr;
+    for (const auto& w : b.words) {
+        auto a = static_cast<unsigned char>(w.address);
+        if (is_dimension(w.address)) {
+            if (seen[a])
+                add(out, "repeated-dimension", Severity::error, w.where, b.ordinal,
+                    w.text + " repeats " + seen[a]->text + ": a dimension or interpolation word may stand once in a block (§2.4)");
+            else seen[a] = &w;
         }
-    }
-
-    void block(const Block& b, bool points) {
-        std::array<const Word*, 128> seen{};
-        std::array<const Word*, 128> group{};
-        int max_rank = -1;
-        const Word* max_word = nullptr;
-        const Word* previous = nullptr;
-        for (const auto& w : b.words) {
-            auto a = static_cast<unsigned char>(w.address);
-            if (is_dimension(w.address)) {
-                if (seen[a])
-                    add("repeated-dimension", Severity::error, w.where, b.ordinal,
-                        w.text + " repeats " + seen[a]->text + ": a dimension or interpolation word may stand once in a block (§2.4)");
-                else seen[a] = &w;
+        if (w.address == 'G' && w.integer())
+            if (const NcFunction* f = find_nc_function('G', *w.integer()); f && f->group) {
+                auto g = static_cast<unsigned char>(f->group);
+                if (group[g])
+                    add(out, "g-group", Severity::error, w.where, b.ordinal,
+                        w.text + " and " + group[g]->text + " are both of group " + f->group + " (§2.5, table 4)");
+                else group[g] = &w;
             }
-            if (w.address == 'G' && w.integer())
-                if (const NcFunction* f = find_nc_function('G', *w.integer()); f && f->group) {
-                    auto g = static_cast<unsigned char>(f->group);
-                    if (group[g])
-                        add("g-group", Severity::error, w.where, b.ordinal,
-                            w.text + " and " + group[g]->text + " are both of group " + f->group + " (§2.5, table 4)");
-                    else group[g] = &w;
-                }
-            if (w.sign && unsigned_addresses.find(w.address) != std::string_view::npos)
-                add("sign-not-allowed", Severity::error, w.where, b.ordinal, w.text + ": " + w.address + " words have no sign (§3.1.1, §3.3)");
-            int rank = order_rank(w.address);
-            // A feed that follows the dimension word of its own axis may stand there (§2.2).
-            bool axis_feed_before = previous && previous->address == 'F' && max_word == previous;
-            if (rank >= 0 && rank < max_rank && !(axis_feed_before && is_dimension(w.address)))
-                add("word-order", Severity::warning, w.where, b.ordinal,
-                    w.text + " stands after " + max_word->text + "; recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (§2.2)");
-            if (rank > max_rank) {
-                max_rank = rank;
-                max_word = &w;
-            }
-            previous = &w;
+        if (w.sign && unsigned_addresses.find(w.address) != std::string_view::npos)
+            add(out, "sign-not-allowed", Severity::error, w.where, b.ordinal, w.text + ": " + w.address + " words have no sign (§3.1.1, §3.3)");
+        int rank = order_rank(w.address);
+        // A feed that follows the dimension word of its own axis may stand there (§2.2).
+        bool axis_feed_before = previous && previous->address == 'F' && max_word == previous;
+        if (rank >= 0 && rank < max_rank && !(axis_feed_before && is_dimension(w.address)))
+            add(out, "word-order", Severity::warning, w.where, b.ordinal,
+                w.text + " stands after " + max_word->text + "; recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (§2.2)");
+        if (rank > max_rank) {
+            max_rank = rank;
+            max_word = &w;
         }
-        if (o_.spec) spec_checks(b, points);
+        previous = &w;
     }
-
-    void spec_checks(const Block& b, bool points) {
-        const FormatSpec& s = *o_.spec;
-        if (b.main && !s.main_block) add("spec-main", Severity::error, b.where, b.ordinal, "the controller format has no ':' main blocks");
-        if (b.skip && !s.block_skip) add("spec-skip", Severity::error, b.where, b.ordinal, "the controller format has no '/' block skip");
-        auto check = [&](const Word& w) {
-            for (auto& [rule, message] : check_word(w, s, points)) add(rule, Severity::error, w.where, b.ordinal, message);
-        };
-        if (b.number) check(*b.number);
-        for (const auto& w : b.words) check(w);
-    }
-};
+}
 
 }  // namespace
 
@@ -132,6 +95,83 @@ bool uses_explicit_points(const Program& program) {
     return false;
 }
 
-std::vector<Finding> lint(const LoadedTape& tape, const LintOptions& options) { return Linter(tape, options).run(); }
+LintVisitor::LintVisitor(const LintOptions& options)
+    : options_(options), sink_([this](Finding f) { keep(std::move(f)); }) {}
+LintVisitor::~LintVisitor() = default;
+
+void LintVisitor::program_start(const Program& header) {
+    close_program();
+    any_program_ = in_program_ = true;
+    program_points_ = false;
+    program_start_ = header.start;
+    program_blocks_ = 0;
+    last_number_.reset();
+    after_end_at_.reset();
+}
+
+void LintVisitor::block(const Block& b) {
+    ++program_blocks_;
+    for (const auto& w : b.words) program_points_ |= w.has_point();
+    if (b.number) {
+        auto n = b.number->integer();
+        if (n && last_number_ && *n <= *last_number_)
+            add(sink_, "block-number-order", Severity::warning, b.number->where, b.ordinal,
+                "block number " + b.number->text + " does not increase (the block before is " +
+                    std::to_string(*last_number_) + ")");
+        if (n) last_number_ = n;
+    }
+    word_checks(sink_, b);
+    if (options_.spec) held_.push_back(b);
+}
+
+void LintVisitor::after_end(std::string_view text, const Location& where) {
+    if (!after_end_at_ && text.find_first_not_of(" \t\r\n") != std::string_view::npos) after_end_at_ = where;
+}
+
+void LintVisitor::finding(const Finding& f) { keep(f); }
+
+void LintVisitor::keep(Finding f) {
+    ++counts_[static_cast<int>(f.severity)];
+    if (options_.max_per_rule && kept_[f.id()] >= options_.max_per_rule) {
+        ++unlisted_[f.id()];
+        return;
+    }
+    ++kept_[f.id()];
+    out_.push_back(std::move(f));
+}
+
+void LintVisitor::end(const Location& where) {
+    close_program();
+    if (!any_program_) add(sink_, "no-program", Severity::error, where, 0, "no '%' program start on the tape (§1.4)");
+}
+
+void LintVisitor::close_program() {
+    if (!in_program_) return;
+    in_program_ = false;
+    if (program_blocks_ == 0) add(sink_, "program-start", Severity::error, program_start_, 0, "'%' is not followed by a block (§1.4)");
+    if (after_end_at_)
+        add(sink_, "after-end", Severity::info, *after_end_at_, 0, "text after M02/M30 is not part of the program (§1.9)");
+    for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, program_points_);
+    held_.clear();
+}
+
+std::vector<Finding> LintVisitor::findings() const {
+    std::vector<Finding> sorted = out_;
+    std::stable_sort(sorted.begin(), sorted.end(), [](const Finding& a, const Finding& b) { return a.where.byte < b.where.byte; });
+    return sorted;
+}
+
+std::vector<Finding> lint(const LoadedTape& tape, const LintOptions& options) {
+    // The tape loaded whole is given to the streaming checks as the loader would give it.
+    LintVisitor v(options);
+    for (const auto& f : tape.findings) v.finding(f);
+    for (const auto& p : tape.programs) {
+        v.program_start(p);
+        for (const auto& b : p.blocks) v.block(b);
+        if (p.after_end_at) v.after_end(p.after_end, *p.after_end_at);
+    }
+    v.end(tape.locate(tape.text.size()));
+    return v.findings();
+}
 
 }  // namespace tape

@@ -120,6 +120,7 @@ public:
         pending_.clear();
         pending_frames_.clear();
         if (state_ != State::label && state_ != State::after_end) unterminated();
+        v_.end(end_location());
     }
 
 private:
@@ -128,6 +129,9 @@ private:
     std::string_view text_;                    // the lines being loaded now
     std::span<const std::uint64_t> frame_of_;  // their frames, or empty
     std::uint64_t base_ = 0;                   // offset of text_[0] from the start of the text
+    bool ends_with_lf_ = false;                // of the text loaded so far: where its end is
+    std::uint64_t last_line_chars_ = 0;
+    std::optional<std::uint64_t> last_frame_{};
     std::string pending_;                      // an unfinished line, and its frames
     std::vector<std::uint64_t> pending_frames_;
     ProgramVisitor& v_;
@@ -158,7 +162,27 @@ private:
             line(b, e, nl != std::string_view::npos);
             b = e + 1;
         }
+        if (!text_.empty()) {
+            ends_with_lf_ = text_.back() == '\n';
+            if (!ends_with_lf_) {
+                auto start = text_.rfind('\n');
+                std::string_view last = text_.substr(start == std::string_view::npos ? 0 : start + 1);
+                last_line_chars_ = static_cast<std::uint64_t>(
+                    std::count_if(last.begin(), last.end(), [](char c) { return !utf8::is_continuation(c); }));
+            }
+            if (!frame_of_.empty()) last_frame_ = frame_of_.back() + 1;
+        }
         base_ += text_.size();
+    }
+
+    // Just past the last character: the start of the line after a final LF, else the end of the last line.
+    Location end_location() const {
+        Location l;
+        l.offset = base_;
+        l.frame = last_frame_;
+        l.line = ends_with_lf_ || line_no_ == 0 ? line_no_ + 1 : line_no_;
+        l.column = ends_with_lf_ || line_no_ == 0 ? 1 : last_line_chars_ + 1;
+        return l;
     }
 
     void begin_line(std::size_t b, std::size_t e) {
