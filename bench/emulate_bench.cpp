@@ -2,7 +2,6 @@
 // rate, and the 99th-percentile gap between frames as the controller side sees them.
 // Run: build/bin/emulate_bench   (counters: rate_fps, rate_error_pct, gap_p50_ms, gap_p99_ms, gap_max_ms)
 #include <benchmark/benchmark.h>
-
 #include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
@@ -25,7 +24,8 @@ void BM_EmulateIntoPty(benchmark::State& state) {
     const auto seconds = std::chrono::seconds(state.range(1));
     // A tape longer than the run, with no end of program to rewind at.
     std::string text = "%\n";
-    for (int n = 1; text.size() < 40000; ++n) text += "N" + std::to_string(n) + " G01 X+" + std::to_string(n) + ".5 F120\n";
+    for (int n = 1; text.size() < 40000; ++n)
+        text += "N" + std::to_string(n) + " G01 X+" + std::to_string(n) + ".5 F120\n";
     auto tape = tape::encode(text, tape::EncodeOptions{.leader = 0, .trailer = 0});
     for (auto _ : state) {
         int master = -1, slave = -1;
@@ -34,9 +34,11 @@ void BM_EmulateIntoPty(benchmark::State& state) {
             state.SkipWithError("openpty failed");
             return;
         }
-        auto line = tape::open_device(std::string("serial:") + name + "?baud=115200&flow=xonxoff", tape::DeviceUse::both);
+        auto line =
+            tape::open_device(std::string("serial:") + name + "?baud=115200&flow=xonxoff", tape::DeviceUse::both);
         std::atomic<bool> stop{false};
-        std::thread emulator([&] { tape::emulate_reader(*line, tape, tape::EmulatorOptions{.rate = rate, .stop = &stop}); });
+        std::thread emulator(
+            [&] { tape::emulate_reader(*line, tape, tape::EmulatorOptions{.rate = rate, .stop = &stop}); });
         std::uint8_t dc1 = tape::dc1;
         if (::write(master, &dc1, 1) != 1) state.SkipWithError("write failed");
         std::vector<std::chrono::steady_clock::time_point> arrivals;

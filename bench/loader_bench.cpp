@@ -19,11 +19,13 @@ const std::string& generated_program() {
         for (long n = 1; t.size() < size; ++n) {
             int len;
             if (n % 50 == 0)
-                len = std::snprintf(buf, sizeof buf, ":%ld G90 G17 X+%ld.25 Y-%ld.5 Z+2. S1250 T0101 M03\n", n, n % 900, n % 700);
+                len = std::snprintf(buf, sizeof buf, ":%ld G90 G17 X+%ld.25 Y-%ld.5 Z+2. S1250 T0101 M03\n", n, n % 900,
+                                    n % 700);
             else if (n % 17 == 0)
                 len = std::snprintf(buf, sizeof buf, "/N%ld G00 Z+50. (CHECK THE CLAMP)\n", n);
             else
-                len = std::snprintf(buf, sizeof buf, "N%ld G01 X+%ld.125 Y-%ld.5 Z-5.0 F120.5 M08\n", n, n % 1000, n % 800);
+                len = std::snprintf(buf, sizeof buf, "N%ld G01 X+%ld.125 Y-%ld.5 Z-5.0 F120.5 M08\n", n, n % 1000,
+                                    n % 800);
             t.append(buf, static_cast<std::size_t>(len));
         }
         t += "N999999 M02\n";

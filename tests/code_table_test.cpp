@@ -38,7 +38,8 @@ TEST(IsoTable, EverySpecFrameDecodesToItsCharacter) {
 TEST(IsoTable, EveryOddFrameIsAParityError) {
     FrameCode iso = FrameCode::iso();
     for (int f = 0; f < 256; ++f)
-        EXPECT_EQ(iso.kind(static_cast<Frame>(f)) == FrameKind::parity_error, hole_count(static_cast<Frame>(f)) % 2 == 1)
+        EXPECT_EQ(iso.kind(static_cast<Frame>(f)) == FrameKind::parity_error,
+                  hole_count(static_cast<Frame>(f)) % 2 == 1)
             << f;
 }
 
@@ -108,12 +109,12 @@ TEST(EiaTable, MalformedTablesNameTheLine) {
         }
         return std::uint64_t{0};
     };
-    EXPECT_EQ(line_of("LF 8\nA 1,6\n"), 2U);       // even number of holes
+    EXPECT_EQ(line_of("LF 8\nA 1,6\n"), 2U);             // even number of holes
     EXPECT_EQ(line_of("LF 8\nA 1,6,7\nB 1,6,7\n"), 3U);  // frame given twice
-    EXPECT_EQ(line_of("# c\nLF 8\nA 9\n"), 3U);    // no track 9
-    EXPECT_EQ(line_of("LF 8\nAB 1\n"), 2U);        // not a character name
-    EXPECT_EQ(line_of("LF\n"), 1U);                // no tracks
-    EXPECT_EQ(line_of("A 1,6,7\n"), 1U);           // no end of block
+    EXPECT_EQ(line_of("# c\nLF 8\nA 9\n"), 3U);          // no track 9
+    EXPECT_EQ(line_of("LF 8\nAB 1\n"), 2U);              // not a character name
+    EXPECT_EQ(line_of("LF\n"), 1U);                      // no tracks
+    EXPECT_EQ(line_of("A 1,6,7\n"), 1U);                 // no end of block
 }
 
 TEST(Frame, HolesPictureFollowsTheSpecLayout) {

@@ -1,7 +1,8 @@
 // Telling ISO from EIA, and finding the parity convention of a tape.
+#include "tape/detect.hpp"
+
 #include <gtest/gtest.h>
 
-#include "tape/detect.hpp"
 #include "tape/encode.hpp"
 #include "test_util.hpp"
 
@@ -20,9 +21,7 @@ TEST(DetectCode, LabelBeforeTheProgramDoesNotConfuseIt) {
     EXPECT_EQ(detect_code(encode(text, EncodeOptions{.code = Code::eia})).code, Code::eia);
 }
 
-TEST(DetectCode, BlankTapeIsReadAsIso) {
-    EXPECT_EQ(detect_code(std::vector<Frame>(50, 0)).code, Code::iso);
-}
+TEST(DetectCode, BlankTapeIsReadAsIso) { EXPECT_EQ(detect_code(std::vector<Frame>(50, 0)).code, Code::iso); }
 
 TEST(DetectCode, MarkParityTapeIsRecognisedAndExplained) {
     auto t = encode("HELLO WORLD\nSECOND LINE\n", EncodeOptions{.parity = Parity::mark});

@@ -59,7 +59,9 @@ TEST(Encode, NonAsciiIsAnErrorNamingLineAndColumn) {
     Error far = encode_error(std::string(100, 'X') + "\xC3\xA9");  // past the eight-byte fast loop
     EXPECT_EQ(*far.where().column, 101U);
     Error cyr = encode_error("(Д)\n");
-    EXPECT_STREQ(cyr.what(), "'Д' cannot be punched in ISO code (Cyrillic needs --charset koi7)");
+    EXPECT_STREQ(cyr.what(), "'Д' cannot be punched in ISO code; Cyrillic needs the КОИ-7 character set");
+    EXPECT_EQ(cyr.hint().action, Hint::Action::use_charset);
+    EXPECT_EQ(cyr.hint().value, "koi7");
 }
 
 TEST(Encode, EiaCannotCarryColonOrLowerCase) {

@@ -1,8 +1,9 @@
 // Image formats: a contract every registered format keeps, then each format's own rules.
+#include "tape/image.hpp"
+
 #include <gtest/gtest.h>
 
 #include "tape/error.hpp"
-#include "tape/image.hpp"
 #include "test_util.hpp"
 
 using namespace tape;
@@ -22,7 +23,8 @@ TEST(ImageContract, EveryFormatRoundTripsEveryFrameAndKnowsItsOwnOutput) {
     FrameCode iso = FrameCode::iso();
     for (const auto& format : image_formats()) {
         if (!format.can_read() || !format.can_write()) continue;  // only reads or only writes
-        for (const FrameCode* annotate : {static_cast<const FrameCode*>(nullptr), static_cast<const FrameCode*>(&iso)}) {
+        for (const FrameCode* annotate :
+             {static_cast<const FrameCode*>(nullptr), static_cast<const FrameCode*>(&iso)}) {
             std::string file = format.write(every_frame(), ImageWriteOptions{annotate});
             EXPECT_EQ(format.read(bytes_of(file)), every_frame()) << format.id;
             EXPECT_EQ(&detect_image_format(bytes_of(file).first(std::min<std::size_t>(file.size(), 4096))), &format)
@@ -67,9 +69,9 @@ TEST(HolesFormat, BadLinesAreErrorsWithTheirLineNumber) {
         return std::uint64_t{0};
     };
     EXPECT_EQ(line_of("|     .   |\n| x   .   |\n"), 2U);
-    EXPECT_EQ(line_of("# c\n|     o   |\n"), 2U);   // feed hole column
+    EXPECT_EQ(line_of("# c\n|     o   |\n"), 2U);  // feed hole column
     EXPECT_EQ(line_of("|     .  |\n"), 1U);        // too short
-    EXPECT_EQ(line_of("%\nN1\n"), 1U);              // a text program is no picture
+    EXPECT_EQ(line_of("%\nN1\n"), 1U);             // a text program is no picture
 }
 
 TEST(DetectFormat, RawUnlessItIsAPicture) {

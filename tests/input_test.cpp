@@ -1,12 +1,13 @@
 // The library's one entry point for inputs (tape::Input), the streaming loader and survey, and the
 // frames sent for an input: the same results however the input is cut, bounded by chunks.
+#include "tape/input.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 
 #include "tape/encode.hpp"
 #include "tape/feed.hpp"
-#include "tape/input.hpp"
 #include "tape/survey.hpp"
 #include "test_util.hpp"
 
@@ -86,8 +87,8 @@ TEST(ProgramLoader, EverySplitPointGivesTheSameEvents) {
 }
 
 TEST(Input, ATapeReadInAnyPiecesLoadsAsTheWholeTape) {
-    auto frames = encode(program.substr(program.find('%')),
-                         EncodeOptions{.charset = Charset::koi7, .leader = 30, .trailer = 30});
+    auto frames =
+        encode(program.substr(program.find('%')), EncodeOptions{.charset = Charset::koi7, .leader = 30, .trailer = 30});
     std::string bytes(frames.begin(), frames.end());
     InputOptions o;
     o.decode.positions = true;
@@ -120,7 +121,8 @@ TEST(Input, TextOrImageIsDecidedByFormatThenExtensionThenContent) {
     EXPECT_EQ(in.format()->id, "raw");
     auto frames = encode("%\n", EncodeOptions{.leader = 5});
     EXPECT_TRUE(open_bytes(std::string(frames.begin(), frames.end()), "-").is_image()) << "blank leader is no text";
-    const std::string picture = find_image_format("holes")->write(encode("%\n", EncodeOptions{.leader = 0, .trailer = 0}), ImageWriteOptions{.header = false});
+    const std::string picture = find_image_format("holes")->write(
+        encode("%\n", EncodeOptions{.leader = 0, .trailer = 0}), ImageWriteOptions{.header = false});
     auto holes = open_bytes(picture, "part.txt");
     ASSERT_TRUE(holes.is_image());
     EXPECT_EQ(holes.format()->id, "holes");

@@ -1,16 +1,17 @@
 // One test per lint rule, each with a program that breaks it and one that does not.
+#include "tape/lint.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
-#include "tape/lint.hpp"
 
 using namespace tape;
 
 namespace {
 std::size_t count(std::string_view text, std::string_view rule, const FormatSpec* spec = nullptr) {
     auto findings = lint(load(std::string(text)), LintOptions{spec});
-    return static_cast<std::size_t>(std::count_if(findings.begin(), findings.end(), [&](const Finding& f) { return f.rule == rule; }));
+    return static_cast<std::size_t>(
+        std::count_if(findings.begin(), findings.end(), [&](const Finding& f) { return f.rule == rule; }));
 }
 }  // namespace
 
@@ -20,8 +21,8 @@ TEST(Lint, NoProgram) {
 }
 
 TEST(Lint, ProgramStart) {
-    EXPECT_EQ(count("%\n", "program-start"), 1U);            // no block after '%'
-    EXPECT_EQ(count("%X-1\nN1 M02\n", "program-start"), 1U); // not a number
+    EXPECT_EQ(count("%\n", "program-start"), 1U);             // no block after '%'
+    EXPECT_EQ(count("%X-1\nN1 M02\n", "program-start"), 1U);  // not a number
     EXPECT_EQ(count("%1\nN1 M02\n", "program-start"), 0U);
 }
 
@@ -43,9 +44,9 @@ TEST(Lint, RepeatedDimension) {
 }
 
 TEST(Lint, GGroup) {
-    EXPECT_EQ(count("%\nN1 G00 G01 X1\nM02\n", "g-group"), 1U);   // group a
-    EXPECT_EQ(count("%\nN1 G17 G18\nM02\n", "g-group"), 1U);      // group c
-    EXPECT_EQ(count("%\nN1 G90 G91\nM02\n", "g-group"), 1U);      // group j
+    EXPECT_EQ(count("%\nN1 G00 G01 X1\nM02\n", "g-group"), 1U);  // group a
+    EXPECT_EQ(count("%\nN1 G17 G18\nM02\n", "g-group"), 1U);     // group c
+    EXPECT_EQ(count("%\nN1 G90 G91\nM02\n", "g-group"), 1U);     // group j
     EXPECT_EQ(count("%\nN1 G01 G17 G90 G94\nM02\n", "g-group"), 0U);
 }
 
@@ -79,19 +80,19 @@ TEST(Lint, SyntaxFindingsAreIncludedAndSorted) {
 TEST(LintSpec, EveryWordAgainstTheFormat) {
     FormatSpec spec = parse_format_spec("% : / DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*");
     EXPECT_EQ(count("%\n:001 G90 X+12.5 F120.5 S1250 T0101 M03\nN2 M02\n", "spec-digits", &spec), 0U);
-    EXPECT_EQ(count("%\nN1 X123456.5\nM02\n", "spec-digits", &spec), 1U);   // 6 digits before the point
-    EXPECT_EQ(count("%\nN1 X1.2345\nM02\n", "spec-digits", &spec), 1U);     // 4 after
+    EXPECT_EQ(count("%\nN1 X123456.5\nM02\n", "spec-digits", &spec), 1U);  // 6 digits before the point
+    EXPECT_EQ(count("%\nN1 X1.2345\nM02\n", "spec-digits", &spec), 1U);    // 4 after
     EXPECT_EQ(count("%\nN1 S12345\nM02\n", "spec-digits", &spec), 1U);
     EXPECT_EQ(count("%\nN1 H12\nM02\n", "spec-address", &spec), 1U);
     EXPECT_EQ(count("%\nN1 S-12\nM02\n", "spec-sign", &spec), 1U);
     EXPECT_EQ(count("%\nN1 G1.5\nM02\n", "spec-point", &spec), 1U);
     FormatSpec plain = parse_format_spec("N03 G02 X+53 F031 M02");
     EXPECT_EQ(count("%\nN001 X+1.5\nN002 M02\n", "spec-point", &plain), 1U);
-    EXPECT_EQ(count("%\nN001 X+12345\nN002 M02\n", "spec-digits", &plain), 1U);   // needs exactly 8
+    EXPECT_EQ(count("%\nN001 X+12345\nN002 M02\n", "spec-digits", &plain), 1U);  // needs exactly 8
     EXPECT_EQ(count("%\nN001 X+00012500\nN002 M02\n", "spec-digits", &plain), 0U);
     EXPECT_EQ(count("%\n:001 X+00012500\nN002 M02\n", "spec-main", &plain), 1U);
     EXPECT_EQ(count("%\n/N001 X+00012500\nN002 M02\n", "spec-skip", &plain), 1U);
-    EXPECT_EQ(count("%\nN1 M02\n", "spec-digits", &plain), 0U);   // N03: up to three digits, leading zeros omitted
+    EXPECT_EQ(count("%\nN1 M02\n", "spec-digits", &plain), 0U);  // N03: up to three digits, leading zeros omitted
     FormatSpec strict = parse_format_spec("N3 G2 X+53 M2");
     EXPECT_EQ(count("%\nN1 M02\n", "spec-digits", &strict), 1U);  // N3: exactly three digits
     EXPECT_EQ(count("%\nN001 M02\n", "spec-digits", &strict), 0U);

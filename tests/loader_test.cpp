@@ -89,7 +89,8 @@ TEST(Loader, SyntaxFindings) {
     EXPECT_EQ(rules(load("%\nN1 x1\nM02\n")), std::vector<std::string_view>{"unexpected-character"});
     EXPECT_EQ(rules(load("%\nN1 G01 x\nM02\n")), std::vector<std::string_view>{"unexpected-character"});
     EXPECT_EQ(rules(load("%\nN1 X1 #\nM02\n")), std::vector<std::string_view>{"unexpected-character"});
-    EXPECT_EQ(rules(load("%\nN1 (A:B%)\nM02\n")), (std::vector<std::string_view>{"comment-forbidden-char", "comment-forbidden-char"}));
+    EXPECT_EQ(rules(load("%\nN1 (A:B%)\nM02\n")),
+              (std::vector<std::string_view>{"comment-forbidden-char", "comment-forbidden-char"}));
     EXPECT_EQ(rules(load("%\nN1 (OPEN\nM02\n")), std::vector<std::string_view>{"unclosed-comment"});
     EXPECT_EQ(rules(load("%\nN1 G01\n")), std::vector<std::string_view>{"program-end"});
     EXPECT_EQ(rules(load("%PART-1\nN1 M02\n")), std::vector<std::string_view>{"program-start"});
@@ -111,7 +112,7 @@ TEST(Loader, TapePositionsAreFrames) {
     ASSERT_EQ(t.programs.size(), 1U);
     EXPECT_EQ(t.programs[0].start.frame, 101U);  // after 100 frames of leader
     const Block& first = t.programs[0].blocks.at(0);
-    EXPECT_EQ(first.where.frame, 103U);           // '%', LF, then ':'
+    EXPECT_EQ(first.where.frame, 103U);  // '%', LF, then ':'
     EXPECT_EQ(first.where.line, 2U);
     EXPECT_EQ(frames[*first.where.frame - 1], 0x3A);
 }

@@ -1,9 +1,10 @@
 // Searches a tape reader performs: main blocks forward, the rewind stop backward, programs, blocks.
+#include "tape/search.hpp"
+
 #include <gtest/gtest.h>
 
 #include "tape/decode.hpp"
 #include "tape/encode.hpp"
-#include "tape/search.hpp"
 
 using namespace tape;
 

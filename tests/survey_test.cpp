@@ -1,8 +1,9 @@
 // The counts behind `tape info`.
+#include "tape/survey.hpp"
+
 #include <gtest/gtest.h>
 
 #include "tape/encode.hpp"
-#include "tape/survey.hpp"
 
 using namespace tape;
 

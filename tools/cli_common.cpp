@@ -73,12 +73,18 @@ std::string where_text(const tape::Position& where, bool raw_frames) {
 std::string hint_text(const tape::Hint& hint) {
     using A = tape::Hint::Action;
     switch (hint.action) {
-    case A::none: return "";
-    case A::replace_output: return "use --force to replace it";
-    case A::use_charset: return "use --charset " + std::string(hint.value);
-    case A::use_iso_parity: return "try --code iso --parity " + std::string(hint.value);
-    case A::read_as_image: return "if this is a tape image, give --input image";
-    case A::give_source_format: return "give --from SPEC for implied points";
+        case A::none:
+            return "";
+        case A::replace_output:
+            return "use --force to replace it";
+        case A::use_charset:
+            return "use --charset " + std::string(hint.value);
+        case A::use_iso_parity:
+            return "try --code iso --parity " + std::string(hint.value);
+        case A::read_as_image:
+            return "if this is a tape image, give --input image";
+        case A::give_source_format:
+            return "give --from SPEC for implied points";
     }
     return "";
 }
@@ -122,7 +128,9 @@ void report_bad_frames(const std::string& name, const tape::DecodeResult& r, boo
 
 tape::InputOptions input_options(const CodeChoice& choice, const std::string& format_id, const std::string& kind) {
     tape::InputOptions o;
-    o.kind = kind == "text" ? tape::InputKind::text : kind == "image" ? tape::InputKind::image : tape::InputKind::automatic;
+    o.kind = kind == "text"    ? tape::InputKind::text
+             : kind == "image" ? tape::InputKind::image
+                               : tape::InputKind::automatic;
     o.format = format_id.empty() ? nullptr : tape::find_image_format(format_id);
     o.detect_code = choice.code == "auto";
     o.decode.code = choice.code == "eia" ? tape::Code::eia : tape::Code::iso;

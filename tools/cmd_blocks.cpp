@@ -32,8 +32,9 @@ std::string finding_json(const tape::Finding& f) {
     return "{\"rule\": " + json_string(std::string(f.id())) +
            ", \"severity\": " + json_string(std::string(tape::severity_name(f.severity))) +
            ", \"frame\": " + optional_number(f.where.frame) + ", \"line\": " + optional_number(f.where.line) +
-           ", \"column\": " + optional_number(f.where.column) + ", \"block\": " + std::to_string(f.where.block.value_or(0)) +
-           ", \"message\": " + json_string(f.message) + "}";
+           ", \"column\": " + optional_number(f.where.column) +
+           ", \"block\": " + std::to_string(f.where.block.value_or(0)) + ", \"message\": " + json_string(f.message) +
+           "}";
 }
 
 // Blocks are written as the loader gives them, so that a tape of any length lists in bounded memory:
@@ -57,11 +58,13 @@ public:
         ended_ = false;
         blocks_ = 0;
         if (a_.json)
-            out_ += std::string(programs_ ? ", " : "") + "{\"number\": " + (p.number ? json_string(*p.number) : "null") +
-                    ", \"first_frame\": " + optional_number(p.start.frame) + ", \"line\": " + std::to_string(p.start.line) +
-                    ", \"blocks\": [";
+            out_ += std::string(programs_ ? ", " : "") +
+                    "{\"number\": " + (p.number ? json_string(*p.number) : "null") +
+                    ", \"first_frame\": " + optional_number(p.start.frame) +
+                    ", \"line\": " + std::to_string(p.start.line) + ", \"blocks\": [";
         else
-            out_ += "program " + (p.number ? *p.number : "(no number)") + " at " + position_text(p.start, from_tape_) + "\n";
+            out_ += "program " + (p.number ? *p.number : "(no number)") + " at " + position_text(p.start, from_tape_) +
+                    "\n";
         ++programs_;
     }
     void block(const tape::Block& b) override {
@@ -74,7 +77,8 @@ public:
                     ", \"words\": [";
             for (std::size_t w = 0; w < b.words.size(); ++w) out_ += (w ? ", " : "") + json_string(b.words[w].text);
             out_ += "], \"comments\": [";
-            for (std::size_t c = 0; c < b.comments.size(); ++c) out_ += (c ? ", " : "") + json_string(b.comments[c].text);
+            for (std::size_t c = 0; c < b.comments.size(); ++c)
+                out_ += (c ? ", " : "") + json_string(b.comments[c].text);
             out_ += "]}";
         } else {
             std::string pos = position_text(b.where, from_tape_);
@@ -90,7 +94,8 @@ public:
     }
     void after_end(std::string_view text, const tape::Location&) override { after_end_ += text; }
     void finding(const tape::Finding& f) override {
-        say(name_, position_text(f.where, from_tape_) + ": " + std::string(tape::severity_name(f.severity)) + ": " + f.message);
+        say(name_, position_text(f.where, from_tape_) + ": " + std::string(tape::severity_name(f.severity)) + ": " +
+                       f.message);
         if (a_.json) findings_ += std::string(findings_.empty() ? "" : ", ") + finding_json(f);
     }
 
@@ -98,8 +103,9 @@ public:
         close_program();
         flush_label();
         if (a_.json)
-            out_ += "], \"label\": " + json_string(label_) + ", \"physical_start\": " + (physical_start_ ? "true" : "false") +
-                    ", \"diagnostics\": [" + findings_ + "]}\n";
+            out_ += "], \"label\": " + json_string(label_) +
+                    ", \"physical_start\": " + (physical_start_ ? "true" : "false") + ", \"diagnostics\": [" +
+                    findings_ + "]}\n";
         flush();
     }
 
@@ -118,11 +124,13 @@ private:
         if (!in_program_) return;
         in_program_ = false;
         if (a_.json) {
-            out_ += std::string("], \"ended\": ") + (ended_ ? "true" : "false") + ", \"after_end\": " + json_string(after_end_) + "}";
+            out_ += std::string("], \"ended\": ") + (ended_ ? "true" : "false") +
+                    ", \"after_end\": " + json_string(after_end_) + "}";
         } else {
             out_ += ended_ ? "  end of program\n" : "  no end (M02/M30)\n";
             if (after_end_.find_first_not_of(" \t\r\n") != std::string::npos)
-                out_ += "after the end, not part of the program:\n" + after_end_ + (after_end_.back() == '\n' ? "" : "\n");
+                out_ +=
+                    "after the end, not part of the program:\n" + after_end_ + (after_end_.back() == '\n' ? "" : "\n");
         }
         after_end_.clear();
     }
@@ -152,7 +160,9 @@ void add_blocks(CLI::App& app) {
     add_program_source_options(sub, a->source);
     sub->add_flag("--json", a->json, "JSON for other programs (schema in tape(1))");
     sub->add_flag("--explain", a->explain, "Name the G and M functions of each block (ГОСТ 20999-83 tables 4-8)");
-    sub->add_option("--lang", a->lang, "Language of --explain: en or ru")->check(CLI::IsMember({"en", "ru"}))->capture_default_str();
+    sub->add_option("--lang", a->lang, "Language of --explain: en or ru")
+        ->check(CLI::IsMember({"en", "ru"}))
+        ->capture_default_str();
     sub->callback([a] { run(*a); });
 }
 

@@ -29,15 +29,17 @@ void run(const FormatArgs& a) {
     if (a.from_option->count() > 0) from = parse_spec(a.from);
     ProgramInput in = load_program_whole(a.input, a.source);
     std::vector<tape::Diagnostic> findings;
-    std::string text = tape::reformat(in.tape,
-                                      tape::ReformatOptions{.spec = &spec, .from = from ? &*from : nullptr,
-                                                            .strip_zeros = a.strip_zeros, .spaces = a.spaces},
-                                      findings);
+    std::string text = tape::reformat(
+        in.tape,
+        tape::ReformatOptions{
+            .spec = &spec, .from = from ? &*from : nullptr, .strip_zeros = a.strip_zeros, .spaces = a.spaces},
+        findings);
     bool failed = false;
     for (const auto& f : findings) {
         std::string block = f.where.block ? ": block " + std::to_string(*f.where.block) : "";
         std::string hint = hint_text(f.hint);
-        say(in.name, position_text(f.where, in.from_tape) + block + ": " + f.message + (hint.empty() ? "" : " (" + hint + ")"));
+        say(in.name,
+            position_text(f.where, in.from_tape) + block + ": " + f.message + (hint.empty() ? "" : " (" + hint + ")"));
         failed |= f.severity == tape::Severity::error;
     }
     if (failed) throw Exit{bad_data};

@@ -43,15 +43,18 @@ void run(const InfoArgs& a) {
     } catch (const tape::Error& e) {
         fail(name, e);
     }
-    if (!a.parity.empty()) rule = *tape::parse_parity(a.parity);
-    else if (code) rule = tape::Parity::even;
+    if (!a.parity.empty())
+        rule = *tape::parse_parity(a.parity);
+    else if (code)
+        rule = tape::Parity::even;
     // Without a code, errors are counted against the rule the whole tape uses: one survey a rule, in
     // one pass, and the one of the rule found is shown.
-    std::vector<tape::Parity> rules = rule ? std::vector{*rule}
-                                           : std::vector{tape::Parity::even, tape::Parity::odd, tape::Parity::mark,
-                                                         tape::Parity::space};
+    std::vector<tape::Parity> rules =
+        rule ? std::vector{*rule}
+             : std::vector{tape::Parity::even, tape::Parity::odd, tape::Parity::mark, tape::Parity::space};
     std::vector<tape::Surveyor> surveyors;
-    for (auto r : rules) surveyors.emplace_back(tape::FrameCode::make(code.value_or(tape::Code::iso), r, globals().table()));
+    for (auto r : rules)
+        surveyors.emplace_back(tape::FrameCode::make(code.value_or(tape::Code::iso), r, globals().table()));
     try {
         for (auto frames = in->next_frames(); !frames.empty(); frames = in->next_frames())
             for (auto& s : surveyors) s.feed(frames);
@@ -66,8 +69,7 @@ void run(const InfoArgs& a) {
     std::string code_text = code ? std::string(tape::code_name(*code)) : "unknown";
     std::ostringstream out;
     if (a.json) {
-        out << "{\"file\": " << json_string(name)
-            << ", \"format\": " << json_string(std::string(in->format()->id))
+        out << "{\"file\": " << json_string(name) << ", \"format\": " << json_string(std::string(in->format()->id))
             << ", \"code\": " << (code ? json_string(code_text) : "null")
             << ", \"code_reason\": " << json_string(reason) << ", \"parity\": " << json_string(parity_found(counts))
             << ", \"parity_rule\": " << json_string(std::string(tape::parity_name(fc.parity())))

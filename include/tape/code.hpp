@@ -50,11 +50,11 @@ private:
 
 /// What one frame means under a FrameCode.
 enum class FrameKind : std::int8_t {
-    character,    ///< a character to pass on
-    blank,        ///< blank tape (NUL, ПУС): skipped
-    rubout,       ///< DEL (ЗБ): skipped wherever it stands
-    parity_error, ///< the holes fail the code's parity rule
-    not_in_code,  ///< good parity but no character of this code
+    character,     ///< a character to pass on
+    blank,         ///< blank tape (NUL, ПУС): skipped
+    rubout,        ///< DEL (ЗБ): skipped wherever it stands
+    parity_error,  ///< the holes fail the code's parity rule
+    not_in_code,   ///< good parity but no character of this code
 };
 
 /// One frame code with its parity rule, as two lookup tables built once.

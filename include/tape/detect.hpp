@@ -27,8 +27,8 @@ struct ParityCounts {
     std::uint64_t frames = 0;  ///< punched frames (blank tape not counted)
     std::uint64_t even = 0;    ///< an even number of holes
     std::uint64_t odd = 0;
-    std::uint64_t mark = 0;    ///< track 8 punched
-    std::uint64_t space = 0;   ///< track 8 not punched
+    std::uint64_t mark = 0;   ///< track 8 punched
+    std::uint64_t space = 0;  ///< track 8 not punched
 
     /// The convention most frames fit (even, odd, mark, space in that order on a tie), or
     /// nullopt when there are no punched frames or fewer than 90% of them fit any one ("mixed").

@@ -53,6 +53,7 @@ private:
 
     EncodeOptions options_;
     FrameCode code_;
+    bool plain_iso_;  ///< ISO, even parity, ASCII, no CR LF on tape: the one-pass path applies
     bool leader_done_ = false;
     bool cyrillic_ = false;
     std::string held_;                           ///< an unfinished character or CR from the end of the last chunk

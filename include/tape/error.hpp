@@ -54,10 +54,10 @@ struct Position {
 struct Hint {
     enum class Action {
         none,
-        replace_output,   ///< allow the output to be replaced
-        use_charset,      ///< encode with character set `value` ("koi7")
-        use_iso_parity,   ///< read as ISO with parity `value` ("odd", "mark", "space", "none")
-        read_as_image,    ///< read the input as a tape image, not as a text program
+        replace_output,      ///< allow the output to be replaced
+        use_charset,         ///< encode with character set `value` ("koi7")
+        use_iso_parity,      ///< read as ISO with parity `value` ("odd", "mark", "space", "none")
+        read_as_image,       ///< read the input as a tape image, not as a text program
         give_source_format,  ///< say which format the program is written in (for implied points)
     };
     Action action = Action::none;

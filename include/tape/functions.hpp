@@ -14,11 +14,11 @@ enum class Scope {
 };
 
 struct NcFunction {
-    char address;           ///< 'G' or 'M'
-    int code;               ///< 0..99
-    char group;             ///< G: 'a' 'c' 'e' 'f' 'j' 'k' 'l' (table 4), 0 for none
+    char address;  ///< 'G' or 'M'
+    int code;      ///< 0..99
+    char group;    ///< G: 'a' 'c' 'e' 'f' 'j' 'k' 'l' (table 4), 0 for none
     Scope scope;
-    std::string_view ru;    ///< the standard's name
+    std::string_view ru;  ///< the standard's name
     std::string_view en;
 };
 

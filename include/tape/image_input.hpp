@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <span>
 #include <string>
@@ -35,15 +36,17 @@ public:
     CodeDetection detect();
 
 private:
-    bool fill();  // reads the next chunk of bytes into frames_; false at the end
+    bool fill();
+    void allocate_buffer();  // reads the next chunk of bytes into frames_; false at the end
 
     std::unique_ptr<ByteSource> source_;
     const ImageFormat* format_ = nullptr;
     std::unique_ptr<ImageReader> reader_;
-    std::vector<std::uint8_t> bytes_;              // read for format detection, not yet given to reader_
-    std::vector<Frame> ahead_;                     // frames read ahead for detection, given out first
-    std::vector<Frame> given_;                     // what next() returned last (ahead_ swapped in)
-    std::unique_ptr<std::uint8_t[]> read_buffer_;  // chunks are read into it (raw frames straight from it)
+    std::vector<std::uint8_t> bytes_;  // read for format detection, not yet given to reader_
+    std::vector<Frame> ahead_;         // frames read ahead for detection, given out first
+    std::vector<Frame> given_;         // what next() returned last (ahead_ swapped in)
+    // Chunks are read into it (raw frames straight from it); page-aligned, where read() copies fastest.
+    std::unique_ptr<std::uint8_t, void (*)(void*)> read_buffer_{nullptr, std::free};
     bool ended_ = false;
 };
 

@@ -29,8 +29,8 @@ enum class InputKind {
 struct InputOptions {
     InputKind kind = InputKind::automatic;
     const ImageFormat* format = nullptr;  ///< given: the input is an image in this format
-    bool detect_code = true;  ///< decide ISO or EIA from the tape (ISO when decode.parity is not even)
-    DecodeOptions decode{};   ///< the code when not detected, parity, charset, positions, limits
+    bool detect_code = true;              ///< decide ISO or EIA from the tape (ISO when decode.parity is not even)
+    DecodeOptions decode{};               ///< the code when not detected, parity, charset, positions, limits
 };
 
 class Input {

@@ -27,10 +27,10 @@ struct Location {
 
 /// One word: address letter, optional sign, digits, optional explicit decimal point (§3.1).
 struct Word {
-    char address = 0;        ///< 'A'..'Z', or ':' for the number of a main block
-    std::string text;        ///< as written, spaces removed: "X+12.5", "S64"
-    char sign = 0;           ///< '+', '-' or 0
-    int point = -1;          ///< explicit point: digits before it (X.03 -> 0, X1030. -> 4); -1 none
+    char address = 0;  ///< 'A'..'Z', or ':' for the number of a main block
+    std::string text;  ///< as written, spaces removed: "X+12.5", "S64"
+    char sign = 0;     ///< '+', '-' or 0
+    int point = -1;    ///< explicit point: digits before it (X.03 -> 0, X1030. -> 4); -1 none
     Location where;
 
     bool has_point() const { return point >= 0; }
@@ -46,12 +46,12 @@ struct Comment {
 };
 
 struct Block {
-    Location where;               ///< the first character of the block
-    std::uint64_t ordinal = 0;    ///< 1-based count of blocks on the whole tape
-    bool skip = false;            ///< '/' block skip (§2.7)
-    bool main = false;            ///< ':' main block (§2.6)
-    std::optional<Word> number{}; ///< N… or :… (address 'N' or ':')
-    std::vector<Word> words;      ///< the other words, in order
+    Location where;                ///< the first character of the block
+    std::uint64_t ordinal = 0;     ///< 1-based count of blocks on the whole tape
+    bool skip = false;             ///< '/' block skip (§2.7)
+    bool main = false;             ///< ':' main block (§2.6)
+    std::optional<Word> number{};  ///< N… or :… (address 'N' or ':')
+    std::vector<Word> words;       ///< the other words, in order
     std::vector<Comment> comments;
 
     /// "N001", ":005" or "".
@@ -63,11 +63,11 @@ struct Block {
 };
 
 struct Program {
-    Location start;                     ///< the '%' that starts it
-    std::optional<std::string> number{};///< between '%' and LF (§1.6)
+    Location start;                       ///< the '%' that starts it
+    std::optional<std::string> number{};  ///< between '%' and LF (§1.6)
     std::vector<Block> blocks;
-    bool ended = false;                 ///< a block with M02/M30 closes it (§1.9)
-    std::string after_end;              ///< text after the end, up to the next '%': not part of it
+    bool ended = false;     ///< a block with M02/M30 closes it (§1.9)
+    std::string after_end;  ///< text after the end, up to the next '%': not part of it
     std::optional<Location> after_end_at{};
 };
 
@@ -79,11 +79,11 @@ Finding program_finding(std::string_view rule, Severity severity, const Location
 
 /// The contents of a tape: the label section, the programs, and what the loader found wrong.
 struct LoadedTape {
-    std::string label;               ///< before the first '%' (§1.8): kept and shown, never executed
-    bool physical_start = false;     ///< "%%": the physical start of the tape (§1.8)
+    std::string label;            ///< before the first '%' (§1.8): kept and shown, never executed
+    bool physical_start = false;  ///< "%%": the physical start of the tape (§1.8)
     std::vector<Program> programs;
-    std::vector<Finding> findings;   ///< syntax findings, in text order
-    std::string text;                ///< the characters the tape was loaded from
+    std::vector<Finding> findings;        ///< syntax findings, in text order
+    std::string text;                     ///< the characters the tape was loaded from
     std::vector<std::uint64_t> frame_of;  ///< 0-based frame of each byte of text, empty for text input
 
     /// The location of byte offset in text.

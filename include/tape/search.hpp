@@ -21,7 +21,8 @@ struct BlockRef {
 std::uint64_t frame_offset(const LoadedTape& tape, std::uint64_t frame);
 
 /// Forward from offset: the next ':' main block (§2.6), or the next with that number.
-std::optional<BlockRef> find_main_block(const LoadedTape& tape, std::uint64_t from, std::optional<long long> number = {});
+std::optional<BlockRef> find_main_block(const LoadedTape& tape, std::uint64_t from,
+                                        std::optional<long long> number = {});
 
 /// Backward from offset: the last '%' program start before it, where a rewinding reader stops.
 const Program* find_rewind_stop(const LoadedTape& tape, std::uint64_t from);

@@ -11,17 +11,17 @@
 namespace tape {
 
 struct TapeSurvey {
-    std::uint64_t frames = 0;         ///< all frames
-    std::uint64_t leader = 0;         ///< blank frames before the first punched one
-    std::uint64_t trailer = 0;        ///< blank frames after the last punched one
-    std::uint64_t data = 0;           ///< characters between leader and trailer
-    std::uint64_t rubouts = 0;        ///< DEL frames
-    std::uint64_t blank_inside = 0;   ///< blank frames between leader and trailer
-    std::uint64_t parity_errors = 0;  ///< frames failing the code's parity rule
-    std::uint64_t not_in_code = 0;    ///< frames with good parity that are no character of the code
-    std::uint64_t program_starts = 0; ///< '%' marks (a run such as "%%" counts once)
-    std::uint64_t end_of_blocks = 0;  ///< LF (EIA: EOB)
-    ParityCounts parity;              ///< what the punched frames fit
+    std::uint64_t frames = 0;          ///< all frames
+    std::uint64_t leader = 0;          ///< blank frames before the first punched one
+    std::uint64_t trailer = 0;         ///< blank frames after the last punched one
+    std::uint64_t data = 0;            ///< characters between leader and trailer
+    std::uint64_t rubouts = 0;         ///< DEL frames
+    std::uint64_t blank_inside = 0;    ///< blank frames between leader and trailer
+    std::uint64_t parity_errors = 0;   ///< frames failing the code's parity rule
+    std::uint64_t not_in_code = 0;     ///< frames with good parity that are no character of the code
+    std::uint64_t program_starts = 0;  ///< '%' marks (a run such as "%%" counts once)
+    std::uint64_t end_of_blocks = 0;   ///< LF (EIA: EOB)
+    ParityCounts parity;               ///< what the punched frames fit
 };
 
 /// The same counts a chunk at a time, in bounded memory; the result is the same however the tape is cut.

@@ -1,9 +1,10 @@
 // Code tables as data, and the frame code lookup tables built from them.
+#include "tape/code.hpp"
+
 #include <charconv>
 #include <sstream>
 #include <vector>
 
-#include "tape/code.hpp"
 #include "tape/error.hpp"
 
 namespace tape {
@@ -59,7 +60,7 @@ std::optional<Frame> parse_tracks(std::string_view token) {
 }
 
 constexpr std::string_view ascii_control_names[32] = {
-    "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS", "HT", "LF",  "VT",  "FF", "CR", "SO", "SI",
+    "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS",  "HT", "LF",  "VT",  "FF", "CR", "SO", "SI",
     "DLE", "DC1", "DC2", "DC3", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC", "FS", "GS", "RS", "US"};
 
 }  // namespace
@@ -68,11 +69,16 @@ std::string_view code_name(Code c) { return c == Code::iso ? "iso" : "eia"; }
 
 std::string_view parity_name(Parity p) {
     switch (p) {
-    case Parity::even: return "even";
-    case Parity::odd: return "odd";
-    case Parity::mark: return "mark";
-    case Parity::space: return "space";
-    case Parity::none: return "none";
+        case Parity::even:
+            return "even";
+        case Parity::odd:
+            return "odd";
+        case Parity::mark:
+            return "mark";
+        case Parity::space:
+            return "space";
+        case Parity::none:
+            return "none";
     }
     return "?";
 }
@@ -104,9 +110,7 @@ CodeTable CodeTable::parse(std::string_view text) {
     std::istringstream in{std::string(text)};
     std::string line;
     std::uint64_t line_no = 0;
-    auto fail = [&](const std::string& why) {
-        throw Error(Errc::bad_table, Position{.line = line_no}, why);
-    };
+    auto fail = [&](const std::string& why) { throw Error(Errc::bad_table, Position{.line = line_no}, why); };
     while (std::getline(in, line)) {
         ++line_no;
         std::istringstream fields(line);
@@ -156,17 +160,29 @@ FrameCode FrameCode::iso(Parity parity) {
         bool track8 = (f & 0x80) != 0;
         bool good = true;
         switch (parity) {
-        case Parity::even: good = !odd_holes; break;
-        case Parity::odd: good = odd_holes; break;
-        case Parity::mark: good = track8; break;
-        case Parity::space: good = !track8; break;
-        case Parity::none: break;
+            case Parity::even:
+                good = !odd_holes;
+                break;
+            case Parity::odd:
+                good = odd_holes;
+                break;
+            case Parity::mark:
+                good = track8;
+                break;
+            case Parity::space:
+                good = !track8;
+                break;
+            case Parity::none:
+                break;
         }
         int c = f & 0x7F;
         FrameKind k = FrameKind::character;
-        if (f == 0 || (good && c == 0)) k = FrameKind::blank;  // unpunched tape is blank under any rule
-        else if (!good) k = FrameKind::parity_error;
-        else if (c == 0x7F) k = FrameKind::rubout;
+        if (f == 0 || (good && c == 0))
+            k = FrameKind::blank;  // unpunched tape is blank under any rule
+        else if (!good)
+            k = FrameKind::parity_error;
+        else if (c == 0x7F)
+            k = FrameKind::rubout;
         fc.kind_[f] = static_cast<std::int8_t>(k);
         fc.char_[f] = static_cast<std::uint8_t>(c);
     }
@@ -174,11 +190,18 @@ FrameCode FrameCode::iso(Parity parity) {
         bool odd7 = hole_count(static_cast<Frame>(c)) % 2 != 0;
         bool track8 = false;
         switch (parity) {
-        case Parity::even: track8 = odd7; break;
-        case Parity::odd: track8 = !odd7; break;
-        case Parity::mark: track8 = true; break;
-        case Parity::space:
-        case Parity::none: break;
+            case Parity::even:
+                track8 = odd7;
+                break;
+            case Parity::odd:
+                track8 = !odd7;
+                break;
+            case Parity::mark:
+                track8 = true;
+                break;
+            case Parity::space:
+            case Parity::none:
+                break;
         }
         fc.frame_[c] = static_cast<std::int16_t>(c | (track8 ? 0x80 : 0));
     }
@@ -194,11 +217,16 @@ FrameCode FrameCode::eia(const CodeTable& table) {
     for (int f = 0; f < 256; ++f) {
         auto frame = static_cast<Frame>(f);
         FrameKind k;
-        if (f == 0) k = FrameKind::blank;
-        else if (del && frame == *del) k = FrameKind::rubout;
-        else if (hole_count(frame) % 2 == 0) k = FrameKind::parity_error;
-        else if (table.char_for(frame)) k = FrameKind::character;
-        else k = FrameKind::not_in_code;
+        if (f == 0)
+            k = FrameKind::blank;
+        else if (del && frame == *del)
+            k = FrameKind::rubout;
+        else if (hole_count(frame) % 2 == 0)
+            k = FrameKind::parity_error;
+        else if (table.char_for(frame))
+            k = FrameKind::character;
+        else
+            k = FrameKind::not_in_code;
         fc.kind_[f] = static_cast<std::int8_t>(k);
         fc.char_[f] = static_cast<std::uint8_t>(table.char_for(frame).value_or(0));
     }
@@ -221,11 +249,16 @@ std::optional<Frame> FrameCode::frame_for(unsigned char c) const {
 
 std::string FrameCode::label(Frame f) const {
     switch (kind(f)) {
-    case FrameKind::character: return char_label(character(f));
-    case FrameKind::blank: return "NUL";
-    case FrameKind::rubout: return "DEL";
-    case FrameKind::parity_error: return "parity error";
-    case FrameKind::not_in_code: return code_ == Code::eia ? "not an EIA character" : "not an ISO character";
+        case FrameKind::character:
+            return char_label(character(f));
+        case FrameKind::blank:
+            return "NUL";
+        case FrameKind::rubout:
+            return "DEL";
+        case FrameKind::parity_error:
+            return "parity error";
+        case FrameKind::not_in_code:
+            return code_ == Code::eia ? "not an EIA character" : "not an ISO character";
     }
     return "?";
 }

@@ -9,9 +9,7 @@ constexpr std::size_t look_limit = 4096;  // significant frames looked at when n
 
 bool significant(Frame f) { return f != 0x00 && f != 0xFF && f != 0x7F; }
 
-std::string count_text(std::uint64_t n, const char* what) {
-    return std::to_string(n) + " " + what;
-}
+std::string count_text(std::uint64_t n, const char* what) { return std::to_string(n) + " " + what; }
 
 }  // namespace
 
@@ -34,8 +32,8 @@ CodeDetection detect_code(std::span<const Frame> frames) {
     if (seen == 0) return {Code::iso, "no punched frames: blank tape, read as ISO"};
     std::uint64_t odd = seen - even;
     std::string where = end_of_block ? "before the first end of block" : "at the start of the tape";
-    std::string counts = count_text(even, "even") + ", " + count_text(odd, "odd") + " of " +
-                         count_text(seen, "frames") + " " + where;
+    std::string counts =
+        count_text(even, "even") + ", " + count_text(odd, "odd") + " of " + count_text(seen, "frames") + " " + where;
     bool mostly_even = even * 10 >= seen * 9, mostly_odd = odd * 10 >= seen * 9;
     if (end_of_block == iso_lf && mostly_even) return {Code::iso, "ISO: end of block LF, " + counts};
     if (end_of_block == eia_eob && mostly_odd) return {Code::eia, "EIA: end of block on track 8, " + counts};
@@ -65,11 +63,16 @@ ParityCounts count_parity(std::span<const Frame> frames) {
 
 std::uint64_t ParityCounts::misfits(Parity p) const {
     switch (p) {
-    case Parity::even: return frames - even;
-    case Parity::odd: return frames - odd;
-    case Parity::mark: return frames - mark;
-    case Parity::space: return frames - space;
-    case Parity::none: return 0;
+        case Parity::even:
+            return frames - even;
+        case Parity::odd:
+            return frames - odd;
+        case Parity::mark:
+            return frames - mark;
+        case Parity::space:
+            return frames - space;
+        case Parity::none:
+            return 0;
     }
     return frames;
 }

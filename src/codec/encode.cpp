@@ -13,24 +13,153 @@
 namespace tape {
 namespace {
 
-// 64 characters a step while all are 7-bit: track 8 is the parity of the other seven.
-std::size_t iso_even_run(const char* in, std::size_t n, Frame* out) {
+// ISO with even parity: track 8 is the parity of the other seven. The vector loops take whole blocks
+// of 7-bit characters and stop before the first block with a byte they leave to the caller: above 0x7F,
+// and with `plain` (the Encoder's one pass over ASCII text) also NUL, CR and DEL, counting the newlines
+// (for messages) on the way. NUL and DEL are caught by the byte minimum and maximum of the block.
+using IsoEvenRun = std::size_t (*)(const char* in, std::size_t n, Frame* out, std::size_t* newlines);
+
+// Adds up the bytes of a vector of per-byte newline counts (each at most 252).
+std::size_t byte_sum(swar::bytes16 counts) {
+    std::uint64_t w[2];
+    std::memcpy(w, &counts, sizeof w);
+    std::size_t sum = 0;
+    for (std::uint64_t x : w) {
+        x = (x & 0x00FF00FF00FF00FFULL) + ((x >> 8) & 0x00FF00FF00FF00FFULL);  // four sums, each < 2^16
+        sum += static_cast<std::size_t>((x * 0x0001000100010001ULL) >> 48);
+    }
+    return sum;
+}
+
+template <bool plain>
+std::size_t iso_even_sse2(const char* in, std::size_t n, Frame* out, std::size_t* newlines) {
     constexpr std::size_t step = 64;
     std::size_t i = 0;
-    for (; i + step <= n; i += step) {
-        swar::bytes16 high{}, v[4];
-        for (int k = 0; k < 4; ++k) {
-            v[k] = swar::load16(in + i + 16 * k);
-            high |= v[k] & 0x80;
+    for (bool go = true; go && i + step <= n;) {
+        swar::bytes16 lines{};  // per byte: newlines in these blocks, 4 a block: 63 blocks fit a byte
+        for (int blocks = 0; blocks < 63 && i + step <= n; ++blocks, i += step) {
+            swar::bytes16 v[4], low = ~swar::bytes16{}, high{}, cr{}, nl{};
+            for (int k = 0; k < 4; ++k) {
+                v[k] = swar::load16(in + i + 16 * k);
+                high = v[k] > high ? v[k] : high;
+                if constexpr (plain) {
+                    low = v[k] < low ? v[k] : low;
+                    cr |= reinterpret_cast<swar::bytes16>(v[k] == '\r');
+                    nl -= reinterpret_cast<swar::bytes16>(v[k] == '\n');
+                }
+            }
+            swar::bytes16 stop = high & 0x80;
+            if constexpr (plain) stop |= (low == 0) | reinterpret_cast<swar::bytes16>(high == 0x7F) | cr;
+            if (swar::any16(stop)) {
+                go = false;
+                break;
+            }
+            for (int k = 0; k < 4; ++k) swar::store16(out + i + 16 * k, v[k] | swar::parity_track16(v[k]));
+            lines += nl;
         }
-        if (swar::any16(high)) break;
-        for (int k = 0; k < 4; ++k) swar::store16(out + i + 16 * k, v[k] | swar::parity_track16(v[k]));
+        if constexpr (plain) *newlines += byte_sum(lines);
     }
-    for (; i < n; ++i) {
-        auto c = static_cast<unsigned char>(in[i]);
-        if (c >= 0x80) return i;
-        out[i] = static_cast<Frame>(c | ((hole_count(c) & 1) << 7));
+    return i;
+}
+
+#ifdef TAPE_SWAR_AVX2
+template <bool plain>
+__attribute__((target("avx2"))) std::size_t iso_even_avx2(const char* in, std::size_t n, Frame* out,
+                                                          std::size_t* newlines) {
+    constexpr std::size_t step = 128;
+    const __m256i track8 = _mm256_load_si256(reinterpret_cast<const __m256i*>(swar::nibble_parity<0x80>.table));
+    const __m256i nibble = _mm256_set1_epi8(0x0F), del = _mm256_set1_epi8(0x7F);
+    const __m256i cr_byte = _mm256_set1_epi8('\r'), lf_byte = _mm256_set1_epi8('\n');
+    const __m256i zero = _mm256_setzero_si256(), ones = _mm256_set1_epi8(-1);
+    std::size_t i = 0, count = 0;
+    for (bool go = true; go && i + step <= n;) {
+        __m256i lines = zero;  // per byte: newlines in these blocks, 4 a block: 63 blocks fit a byte
+        for (int blocks = 0; blocks < 63 && i + step <= n; ++blocks, i += step) {
+            __m256i v[4], low = ones, high = zero, cr = zero, nl = zero;
+            for (int k = 0; k < 4; ++k) {
+                v[k] = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(in + i + 32 * k));
+                high = _mm256_max_epu8(high, v[k]);
+                if constexpr (plain) {
+                    low = _mm256_min_epu8(low, v[k]);
+                    cr = _mm256_or_si256(cr, _mm256_cmpeq_epi8(v[k], cr_byte));
+                    nl = _mm256_sub_epi8(nl, _mm256_cmpeq_epi8(v[k], lf_byte));
+                }
+            }
+            __m256i stop = high;  // bit 7 of the maximum: a byte above 0x7F
+            if constexpr (plain)  // the maximum at least DEL, the minimum NUL, or a CR
+                stop = _mm256_or_si256(_mm256_cmpeq_epi8(_mm256_max_epu8(high, del), high),
+                                       _mm256_or_si256(_mm256_cmpeq_epi8(low, zero), cr));
+            if (!_mm256_testz_si256(stop, plain ? ones : _mm256_set1_epi8(-128))) {
+                go = false;
+                break;
+            }
+            for (int k = 0; k < 4; ++k) {
+                // Bit 7 is clear in every byte here, so v indexes the low-nibble table as it is.
+                __m256i hi = _mm256_and_si256(_mm256_srli_epi16(v[k], 4), nibble);
+                __m256i parity = _mm256_xor_si256(_mm256_shuffle_epi8(track8, v[k]), _mm256_shuffle_epi8(track8, hi));
+                _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i + 32 * k), _mm256_or_si256(v[k], parity));
+            }
+            lines = _mm256_add_epi8(lines, nl);
+        }
+        if constexpr (plain) {
+            __m256i sums = _mm256_sad_epu8(lines, zero);  // four 64-bit sums
+            count += static_cast<std::size_t>(_mm256_extract_epi64(sums, 0) + _mm256_extract_epi64(sums, 1) +
+                                              _mm256_extract_epi64(sums, 2) + _mm256_extract_epi64(sums, 3));
+        }
     }
+    if constexpr (plain) *newlines += count;
+    return i;
+}
+#endif
+
+template <bool plain>
+IsoEvenRun pick_iso_even() {
+#ifdef TAPE_SWAR_AVX2
+    if (swar::has_avx2()) return iso_even_avx2<plain>;
+#endif
+    return iso_even_sse2<plain>;
+}
+
+constexpr std::size_t scalar_step = 64;  // bytes taken one by one after a block the vector loop left
+
+std::size_t iso_even_run(const char* in, std::size_t n, Frame* out) {
+    static const IsoEvenRun vector_run = pick_iso_even<false>();
+    std::size_t i = 0;
+    while (i < n) {
+        i += vector_run(in + i, n - i, out + i, nullptr);
+        for (std::size_t end = i + scalar_step < n ? i + scalar_step : n; i < end; ++i) {
+            auto c = static_cast<unsigned char>(in[i]);
+            if (c >= 0x80) return i;
+            out[i] = static_cast<Frame>(c | ((hole_count(c) & 1) << 7));
+        }
+    }
+    return n;
+}
+
+// Encodes the plain start of text (see above) into out: CR LF as LF, a lone CR as CR. Stops at the
+// first NUL, DEL or non-ASCII byte, which the general path then reports or converts. Returns the bytes
+// of text taken; *frames = frames stored (fewer by the CRs dropped), *newlines = LFs among the bytes.
+std::size_t iso_even_plain(std::string_view text, Frame* out, std::size_t* frames, std::size_t* newlines) {
+    static const IsoEvenRun vector_run = pick_iso_even<true>();
+    const char* in = text.data();
+    std::size_t n = text.size(), i = 0, w = 0;
+    *newlines = 0;
+    while (i < n) {
+        std::size_t got = vector_run(in + i, n - i, out + w, newlines);
+        i += got;
+        w += got;
+        for (std::size_t end = i + scalar_step < n ? i + scalar_step : n; i < end; ++i) {
+            auto c = static_cast<unsigned char>(in[i]);
+            if (c == '\r' && i + 1 < n && in[i + 1] == '\n') continue;
+            if (c == 0x00 || c >= 0x7F) {
+                *frames = w;
+                return i;
+            }
+            *newlines += c == '\n';
+            out[w++] = static_cast<Frame>(c | ((hole_count(c) & 1) << 7));
+        }
+    }
+    *frames = w;
     return n;
 }
 
@@ -72,16 +201,18 @@ Position advance(Position p, std::string_view text, std::size_t newlines) {
     std::string why = shown + " cannot be punched in " + (code == Code::iso ? "ISO" : "EIA") + " code";
     if (first == 0x00) why = "a NUL byte in the text: on tape it would be blank tape, so it cannot be punched";
     if (first == 0x7F) why = "a DEL in the text: on tape it is a rubout that readers skip, so it cannot be punched";
+    Hint hint;
     if (first >= 0x80) {
         auto cp = utf8::decode(ch);
-        if (charset == Charset::ascii && cp && koi7_position(*cp))
-            why += " (Cyrillic needs --charset koi7)";
-        else if (cp && (*cp == U'Ё' || *cp == U'ё'))
+        if (charset == Charset::ascii && cp && koi7_position(*cp)) {
+            why += "; Cyrillic needs the КОИ-7 character set";
+            hint = Hint{Hint::Action::use_charset, "koi7"};
+        } else if (cp && (*cp == U'Ё' || *cp == U'ё'))
             why += " (КОИ-7 has no Ё: write Е)";
         else if (cp && *cp == U'Ъ')
             why += " (КОИ-7 has no capital Ъ: write ъ)";
     }
-    throw Error(Errc::bad_text, where, why);
+    throw Error(Errc::bad_text, where, why, hint);
 }
 
 // How many bytes at the end of text to hold back for the next chunk: a CR that may be half of CR LF,
@@ -110,7 +241,10 @@ std::size_t encode_run(const FrameCode& code, std::string_view chars, Frame* out
 }
 
 Encoder::Encoder(const EncodeOptions& options)
-    : options_(options), code_(FrameCode::make(options.code, options.parity, options.eia_table)) {
+    : options_(options),
+      code_(FrameCode::make(options.code, options.parity, options.eia_table)),
+      plain_iso_(options.code == Code::iso && options.parity == Parity::even && options.charset == Charset::ascii &&
+                 !options.crlf) {
     if (options.leader > max_blank_frames || options.trailer > max_blank_frames)
         throw Error(Errc::usage,
                     "a leader or trailer is at most " + std::to_string(max_blank_frames) + " blank frames");
@@ -163,6 +297,17 @@ void Encoder::encode_piece(std::string_view text, std::vector<Frame>& out) {
         out.insert(out.end(), options_.leader, blank_frame);
         leader_done_ = true;
     }
+    if (plain_iso_) {
+        // The plain start in one pass; the rest (an error, or text from the first NUL, DEL or non-ASCII
+        // byte on) goes the general way below, from the position reached.
+        std::size_t at = out.size(), frames = 0, newlines = 0;
+        out.resize(at + text.size());
+        std::size_t took = iso_even_plain(text, out.data() + at, &frames, &newlines);
+        out.resize(at + frames);
+        position_ = advance(position_, text.substr(0, took), newlines);
+        text.remove_prefix(took);
+        if (text.empty()) return;
+    }
     swar::TextScan scan = swar::scan_text(text.data(), text.size());
     // NUL and DEL would encode, but read back as blank tape and a rubout: the program would lose them.
     if (scan.special)
@@ -201,10 +346,10 @@ void Encoder::finish(std::vector<Frame>& out) {
     held_.clear();
     encode_piece(rest, out);  // a lone CR at the very end is the CR character; a cut UTF-8 character an error
     if (cyrillic_) {
-        converted_ = "\x0F";
+        static constexpr char shift_in = '\x0F';
         std::size_t at = out.size();
         out.resize(at + 1);
-        encode_run(code_, converted_, out.data() + at);
+        encode_run(code_, std::string_view(&shift_in, 1), out.data() + at);
         cyrillic_ = false;
     }
     out.insert(out.end(), options_.trailer, blank_frame);

@@ -20,11 +20,20 @@ void Surveyor::feed(std::span<const Frame> frames) {
         blank_run_ = 0;
         punched_ = true;
         switch (code_.kind(f)) {
-        case FrameKind::blank: ++s_.blank_inside; continue;
-        case FrameKind::rubout: ++s_.rubouts; continue;
-        case FrameKind::parity_error: ++s_.parity_errors; continue;
-        case FrameKind::not_in_code: ++s_.not_in_code; continue;
-        case FrameKind::character: break;
+            case FrameKind::blank:
+                ++s_.blank_inside;
+                continue;
+            case FrameKind::rubout:
+                ++s_.rubouts;
+                continue;
+            case FrameKind::parity_error:
+                ++s_.parity_errors;
+                continue;
+            case FrameKind::not_in_code:
+                ++s_.not_in_code;
+                continue;
+            case FrameKind::character:
+                break;
         }
         ++s_.data;
         char c = code_.character(f);

@@ -6,7 +6,44 @@
 #include <cstdint>
 #include <cstring>
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && \
+    !defined(TAPE_NO_AVX2)  // -DTAPE_NO_AVX2 tests the rest
+#include <cpuid.h>
+#include <immintrin.h>
+#define TAPE_SWAR_AVX2 1
+#endif
+
 namespace tape::swar {
+
+#ifdef TAPE_SWAR_AVX2
+/// The hot loops have an AVX2 twin (32 frames an instruction, nibble tables for parity), taken when the
+/// CPU and the OS have it: the build stays plain x86-64, and the SSE2 loops below serve the rest. Asked
+/// here, on first use, rather than through __builtin_cpu_supports, whose libgcc constructor would run
+/// its CPUID probes (slow in a virtual machine) at the start of every command.
+inline bool has_avx2() {
+    static const bool yes = [] {
+        unsigned a = 0, b = 0, c = 0, d = 0;
+        if (!__get_cpuid(1, &a, &b, &c, &d) || !(c & bit_OSXSAVE) || !(c & bit_AVX)) return false;
+        unsigned xcr0 = 0, high = 0;
+        __asm__("xgetbv" : "=a"(xcr0), "=d"(high) : "c"(0));
+        if ((xcr0 & 6) != 6) return false;  // the OS saves the XMM and YMM registers
+        return __get_cpuid_count(7, 0, &a, &b, &c, &d) && (b & bit_AVX2);
+    }();
+    return yes;
+}
+#endif
+
+/// Per nibble value 0..15: `odd` where it has an odd number of set bits, else 0; twice, for the two
+/// 128-bit lanes of a vpshufb lookup.
+template <std::uint8_t odd>
+struct NibbleParity {
+    alignas(32) std::uint8_t table[32];
+    constexpr NibbleParity() : table{} {
+        for (int i = 0; i < 32; ++i) table[i] = (__builtin_popcount(i & 15) & 1) ? odd : 0;
+    }
+};
+template <std::uint8_t odd>
+inline constexpr NibbleParity<odd> nibble_parity{};
 
 /// Sixteen frames in a vector register.
 typedef std::uint8_t bytes16 __attribute__((vector_size(16)));

@@ -22,7 +22,8 @@ inline std::optional<char32_t> decode(std::string_view ch) {
     auto b = [&](std::size_t i) { return static_cast<unsigned char>(ch[i]); };
     if (ch.size() == 1 && b(0) < 0x80) return b(0);
     if (ch.size() == 2 && (b(0) & 0xE0) == 0xC0) return char32_t((b(0) & 0x1F) << 6 | (b(1) & 0x3F));
-    if (ch.size() == 3 && (b(0) & 0xF0) == 0xE0) return char32_t((b(0) & 0x0F) << 12 | (b(1) & 0x3F) << 6 | (b(2) & 0x3F));
+    if (ch.size() == 3 && (b(0) & 0xF0) == 0xE0)
+        return char32_t((b(0) & 0x0F) << 12 | (b(1) & 0x3F) << 6 | (b(2) & 0x3F));
     if (ch.size() == 4 && (b(0) & 0xF8) == 0xF0)
         return char32_t((b(0) & 0x07) << 18 | (b(1) & 0x3F) << 12 | (b(2) & 0x3F) << 6 | (b(3) & 0x3F));
     return std::nullopt;

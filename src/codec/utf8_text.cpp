@@ -97,7 +97,8 @@ std::optional<TextFault> TextChecker::check_whole(std::span<const std::uint8_t> 
     std::string_view s(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     auto last_nl = s.rfind('\n');
     std::string_view tail = last_nl == std::string_view::npos ? s : s.substr(last_nl + 1);
-    auto chars = static_cast<std::uint64_t>(std::count_if(tail.begin(), tail.end(), [](char c) { return !utf8::is_continuation(c); }));
+    auto chars = static_cast<std::uint64_t>(
+        std::count_if(tail.begin(), tail.end(), [](char c) { return !utf8::is_continuation(c); }));
     lines_before_ += static_cast<std::uint64_t>(std::count(s.begin(), s.end(), '\n'));
     columns_before_ = last_nl == std::string_view::npos ? columns_before_ + chars : chars;
     bytes_before_ += bytes.size();

@@ -4,16 +4,26 @@ namespace tape {
 
 std::string_view errc_name(Errc code) {
     switch (code) {
-    case Errc::parity: return "parity";
-    case Errc::not_in_code: return "not-in-code";
-    case Errc::unknown_code: return "unknown-code";
-    case Errc::bad_image: return "bad-image";
-    case Errc::bad_text: return "bad-text";
-    case Errc::bad_table: return "bad-table";
-    case Errc::bad_program: return "bad-program";
-    case Errc::exists: return "exists";
-    case Errc::io: return "io";
-    case Errc::usage: return "usage";
+        case Errc::parity:
+            return "parity";
+        case Errc::not_in_code:
+            return "not-in-code";
+        case Errc::unknown_code:
+            return "unknown-code";
+        case Errc::bad_image:
+            return "bad-image";
+        case Errc::bad_text:
+            return "bad-text";
+        case Errc::bad_table:
+            return "bad-table";
+        case Errc::bad_program:
+            return "bad-program";
+        case Errc::exists:
+            return "exists";
+        case Errc::io:
+            return "io";
+        case Errc::usage:
+            return "usage";
     }
     return "unknown";
 }
@@ -22,9 +32,12 @@ bool is_data_error(Errc code) { return code != Errc::io && code != Errc::usage &
 
 std::string_view severity_name(Severity s) {
     switch (s) {
-    case Severity::info: return "info";
-    case Severity::warning: return "warning";
-    case Severity::error: return "error";
+        case Severity::info:
+            return "info";
+        case Severity::warning:
+            return "warning";
+        case Severity::error:
+            return "error";
     }
     return "error";
 }

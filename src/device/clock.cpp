@@ -1,6 +1,6 @@
-#include <thread>
-
 #include "tape/clock.hpp"
+
+#include <thread>
 
 namespace tape {
 namespace {

@@ -13,7 +13,8 @@ namespace tape {
 FrameFileWriter::FrameFileWriter(const std::string& path, const ImageFormat& format, const FrameCode* annotate,
                                  bool replace)
     : last_sync_(std::chrono::steady_clock::now()) {
-    if (!format.can_write()) throw Error(Errc::usage, "cannot write " + std::string(format.id) + " images, only read them");
+    if (!format.can_write())
+        throw Error(Errc::usage, "cannot write " + std::string(format.id) + " images, only read them");
     writer_ = format.make_writer(ImageWriteOptions{annotate, 1, true});
     fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : O_EXCL), 0666);
     if (fd_ < 0) {

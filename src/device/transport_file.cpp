@@ -11,8 +11,8 @@
 #include "tape/error.hpp"
 #include "tape/file_io.hpp"
 #include "tape/frame_file_writer.hpp"
-#include "tape/image_input.hpp"
 #include "tape/image.hpp"
+#include "tape/image_input.hpp"
 
 namespace tape {
 namespace {

@@ -66,8 +66,10 @@ private:
         if (digits_ == 1) fail("a frame needs two hex digits");
         if (digits_ == 2) out.push_back(static_cast<Frame>(value_));
         digits_ = value_ = 0;
-        if (c == '#') comment_ = true;
-        else if (c == '\n') ++line_;
+        if (c == '#')
+            comment_ = true;
+        else if (c == '\n')
+            ++line_;
         else if (c != ' ' && c != '\t' && c != '\r')
             fail(std::string("'") + static_cast<char>(c) + "' is no hex digit");
     }

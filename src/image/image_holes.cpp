@@ -31,7 +31,8 @@ std::optional<Frame> parse_picture(std::string_view line, std::string* why) {
     for (int col = 1; col <= 9; ++col) {
         if (col == 6) continue;
         char c = line[col];
-        if (is_hole(c)) f |= static_cast<Frame>(1U << (track_of_column[col] - 1));
+        if (is_hole(c))
+            f |= static_cast<Frame>(1U << (track_of_column[col] - 1));
         else if (c != ' ') {
             *why = std::string("'") + c + "' in track " + std::to_string(track_of_column[col]) +
                    " is neither a hole 'o' nor a space";
@@ -66,8 +67,10 @@ int holes_match(std::span<const std::uint8_t> prefix) {
     int score = 0;
     for_each_line(prefix, [&](std::string_view line, std::uint64_t, bool last) {
         std::string why;
-        if (parse_picture(line, &why)) score = 100;
-        else if (last && line[0] == '|') score = 60;  // a line cut off by the end of the prefix
+        if (parse_picture(line, &why))
+            score = 100;
+        else if (last && line[0] == '|')
+            score = 60;  // a line cut off by the end of the prefix
         return false;
     });
     return score;

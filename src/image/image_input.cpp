@@ -1,6 +1,7 @@
 #include "tape/image_input.hpp"
 
 #include <algorithm>
+#include <new>
 
 #include "tape/error.hpp"
 
@@ -36,9 +37,14 @@ ImageInput::ImageInput(std::unique_ptr<ByteSource> source, const std::string& na
     reader_ = format_->make_reader();
 }
 
+void ImageInput::allocate_buffer() {
+    read_buffer_.reset(static_cast<std::uint8_t*>(std::aligned_alloc(4096, chunk_bytes)));
+    if (!read_buffer_) throw std::bad_alloc();
+}
+
 bool ImageInput::fill() {
     if (ended_) return false;
-    if (!read_buffer_) read_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(chunk_bytes);
+    if (!read_buffer_) allocate_buffer();
     std::span<const std::uint8_t> chunk = bytes_;  // the bytes format detection looked at come first
     std::size_t n = 0;
     if (chunk.empty()) {
@@ -47,8 +53,10 @@ bool ImageInput::fill() {
     }
     if (chunk.empty()) ended_ = true;
     std::size_t had = ahead_.size();
-    if (ended_) reader_->finish(ahead_);
-    else reader_->read(chunk, ahead_);
+    if (ended_)
+        reader_->finish(ahead_);
+    else
+        reader_->read(chunk, ahead_);
     bytes_.clear();
     return !ended_ || ahead_.size() > had;
 }
@@ -61,7 +69,7 @@ std::span<const Frame> ImageInput::next() {
     }
     if (format_->bytes_are_frames && bytes_.empty()) {
         // The common case, without a copy: the bytes are the frames.
-        if (!read_buffer_) read_buffer_ = std::make_unique_for_overwrite<std::uint8_t[]>(chunk_bytes);
+        if (!read_buffer_) allocate_buffer();
         if (ended_) return {};
         std::size_t n = source_->read(std::span(read_buffer_.get(), chunk_bytes));
         if (n == 0) ended_ = true;

@@ -11,8 +11,9 @@ std::vector<Frame> image_frames(Input& input, const FeedOptions& o) {
         frames.insert(frames.end(), chunk.begin(), chunk.end());
     if (!o.replace_leader && !o.replace_trailer) return frames;
     auto first = std::find_if(frames.begin(), frames.end(), [](Frame f) { return f != blank_frame; });
-    auto last = std::find_if(frames.rbegin(), std::make_reverse_iterator(first), [](Frame f) { return f != blank_frame; })
-                    .base();
+    auto last = std::find_if(frames.rbegin(), std::make_reverse_iterator(first), [](Frame f) {
+                    return f != blank_frame;
+                }).base();
     std::size_t lead = o.replace_leader ? o.encode.leader : static_cast<std::size_t>(first - frames.begin());
     std::size_t trail = o.replace_trailer ? o.encode.trailer : static_cast<std::size_t>(frames.end() - last);
     std::vector<Frame> out(lead, blank_frame);

@@ -84,12 +84,12 @@ void Input::open(std::unique_ptr<ByteSource> source, const std::string& name) {
             text_ahead_ = read_prefix(*source, kind_prefix_bytes);
             const ImageFormat& by_content = detect_image_format(text_ahead_);
             bool picture = !by_content.binary && by_content.match(text_ahead_) >= 60;
-            image = picture || (!is_program_text(whole_characters(text_ahead_)) && !looks_like_damaged_text(text_ahead_));
+            image =
+                picture || (!is_program_text(whole_characters(text_ahead_)) && !looks_like_damaged_text(text_ahead_));
         }
     }
     if (image) {
-        if (!text_ahead_.empty())
-            source = std::make_unique<PrefixedSource>(std::move(text_ahead_), std::move(source));
+        if (!text_ahead_.empty()) source = std::make_unique<PrefixedSource>(std::move(text_ahead_), std::move(source));
         text_ahead_.clear();
         image_ = std::make_unique<ImageInput>(std::move(source), name, options_.format);
         return;
@@ -165,7 +165,8 @@ bool load_each(Input& input, ProgramVisitor& visitor) {
     DecodeResult piece;
     bool positions = input.is_image() && input.decode_options().positions;
     while (input.next_text(piece)) {
-        loader.feed(piece.text, positions ? std::span<const std::uint64_t>(piece.frame_of) : std::span<const std::uint64_t>());
+        loader.feed(piece.text,
+                    positions ? std::span<const std::uint64_t>(piece.frame_of) : std::span<const std::uint64_t>());
         for (const auto& d : piece.diagnostics) visitor.finding(d);
         piece.text.clear();
         piece.frame_of.clear();

@@ -1,10 +1,11 @@
 // Lint: the rules of ГОСТ 20999-83 §1.4-§2.7 over loaded programs.
+#include "tape/lint.hpp"
+
 #include <algorithm>
 #include <array>
 #include <functional>
 
 #include "tape/functions.hpp"
-#include "tape/lint.hpp"
 
 namespace tape {
 namespace {
@@ -20,11 +21,16 @@ int order_rank(char a) {
     if (auto p = dimension_order.find(a); p != std::string_view::npos) return 10 + static_cast<int>(p);
     if (auto p = interpolation_order.find(a); p != std::string_view::npos) return 30 + static_cast<int>(p);
     switch (a) {
-    case 'F': return 40;
-    case 'S': return 50;
-    case 'T': return 60;
-    case 'M': return 70;
-    default: return -1;
+        case 'F':
+            return 40;
+        case 'S':
+            return 50;
+        case 'T':
+            return 60;
+        case 'M':
+            return 70;
+        default:
+            return -1;
     }
 }
 
@@ -39,10 +45,13 @@ void add(Add out, std::string_view rule, Severity s, const Location& where, std:
 }
 
 void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points) {
-    if (b.main && !s.main_block) add(out, "spec-main", Severity::error, b.where, b.ordinal, "the controller format has no ':' main blocks");
-    if (b.skip && !s.block_skip) add(out, "spec-skip", Severity::error, b.where, b.ordinal, "the controller format has no '/' block skip");
+    if (b.main && !s.main_block)
+        add(out, "spec-main", Severity::error, b.where, b.ordinal, "the controller format has no ':' main blocks");
+    if (b.skip && !s.block_skip)
+        add(out, "spec-skip", Severity::error, b.where, b.ordinal, "the controller format has no '/' block skip");
     auto check = [&](const Word& w) {
-        for (auto& [rule, message] : check_word(w, s, points)) add(out, rule, Severity::error, w.where, b.ordinal, message);
+        for (auto& [rule, message] : check_word(w, s, points))
+            add(out, rule, Severity::error, w.where, b.ordinal, message);
     };
     if (b.number) check(*b.number);
     for (const auto& w : b.words) check(w);
@@ -59,8 +68,10 @@ void word_checks(Add out, const Block& b) {
         if (is_dimension(w.address)) {
             if (seen[a])
                 add(out, "repeated-dimension", Severity::error, w.where, b.ordinal,
-                    w.text + " repeats " + seen[a]->text + ": a dimension or interpolation word may stand once in a block (§2.4)");
-            else seen[a] = &w;
+                    w.text + " repeats " + seen[a]->text +
+                        ": a dimension or interpolation word may stand once in a block (§2.4)");
+            else
+                seen[a] = &w;
         }
         if (w.address == 'G' && w.integer())
             if (const NcFunction* f = find_nc_function('G', *w.integer()); f && f->group) {
@@ -68,16 +79,19 @@ void word_checks(Add out, const Block& b) {
                 if (group[g])
                     add(out, "g-group", Severity::error, w.where, b.ordinal,
                         w.text + " and " + group[g]->text + " are both of group " + f->group + " (§2.5, table 4)");
-                else group[g] = &w;
+                else
+                    group[g] = &w;
             }
         if (w.sign && unsigned_addresses.find(w.address) != std::string_view::npos)
-            add(out, "sign-not-allowed", Severity::error, w.where, b.ordinal, w.text + ": " + w.address + " words have no sign (§3.1.1, §3.3)");
+            add(out, "sign-not-allowed", Severity::error, w.where, b.ordinal,
+                w.text + ": " + w.address + " words have no sign (§3.1.1, §3.3)");
         int rank = order_rank(w.address);
         // A feed that follows the dimension word of its own axis may stand there (§2.2).
         bool axis_feed_before = previous && previous->address == 'F' && max_word == previous;
         if (rank >= 0 && rank < max_rank && !(axis_feed_before && is_dimension(w.address)))
             add(out, "word-order", Severity::warning, w.where, b.ordinal,
-                w.text + " stands after " + max_word->text + "; recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (§2.2)");
+                w.text + " stands after " + max_word->text +
+                    "; recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (§2.2)");
         if (rank > max_rank) {
             max_rank = rank;
             max_word = &w;
@@ -148,16 +162,19 @@ void LintVisitor::end(const Location& where) {
 void LintVisitor::close_program() {
     if (!in_program_) return;
     in_program_ = false;
-    if (program_blocks_ == 0) add(sink_, "program-start", Severity::error, program_start_, 0, "'%' is not followed by a block (§1.4)");
+    if (program_blocks_ == 0)
+        add(sink_, "program-start", Severity::error, program_start_, 0, "'%' is not followed by a block (§1.4)");
     if (after_end_at_)
-        add(sink_, "after-end", Severity::info, *after_end_at_, 0, "text after M02/M30 is not part of the program (§1.9)");
+        add(sink_, "after-end", Severity::info, *after_end_at_, 0,
+            "text after M02/M30 is not part of the program (§1.9)");
     for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, program_points_);
     held_.clear();
 }
 
 std::vector<Finding> LintVisitor::findings() const {
     std::vector<Finding> sorted = out_;
-    std::stable_sort(sorted.begin(), sorted.end(), [](const Finding& a, const Finding& b) { return a.where.byte < b.where.byte; });
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [](const Finding& a, const Finding& b) { return a.where.byte < b.where.byte; });
     return sorted;
 }
 

@@ -1,11 +1,12 @@
 // Loader: characters -> label, programs, blocks, words (ГОСТ 20999-83 §1-§3).
 // One pass over the text, a line (block) at a time; problems become findings, never exceptions.
+#include "tape/program.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstring>
 
 #include "codec/swar.hpp"
-#include "tape/program.hpp"
 #include "codec/utf8.hpp"
 
 namespace tape {
@@ -14,7 +15,8 @@ Finding program_finding(std::string_view rule, Severity severity, const Location
                         std::string message) {
     Position at = where.position();
     if (block) at.block = block;
-    return Finding{.code = Errc::bad_program, .where = at, .message = std::move(message), .rule = rule, .severity = severity};
+    return Finding{
+        .code = Errc::bad_program, .where = at, .message = std::move(message), .rule = rule, .severity = severity};
 }
 
 std::string Word::digits() const {
@@ -132,7 +134,7 @@ private:
     bool ends_with_lf_ = false;                // of the text loaded so far: where its end is
     std::uint64_t last_line_chars_ = 0;
     std::optional<std::uint64_t> last_frame_{};
-    std::string pending_;                      // an unfinished line, and its frames
+    std::string pending_;  // an unfinished line, and its frames
     std::vector<std::uint64_t> pending_frames_;
     ProgramVisitor& v_;
     State state_ = State::label;
@@ -198,9 +200,10 @@ private:
         l.line = line_no_;
         l.column = offset - line_start_ + 1;
         if (!line_ascii_)
-            l.column = 1 + static_cast<std::uint64_t>(std::count_if(text_.begin() + static_cast<std::ptrdiff_t>(line_start_),
-                                                                    text_.begin() + static_cast<std::ptrdiff_t>(offset),
-                                                                    [](char c) { return !utf8::is_continuation(c); }));
+            l.column =
+                1 + static_cast<std::uint64_t>(std::count_if(text_.begin() + static_cast<std::ptrdiff_t>(line_start_),
+                                                             text_.begin() + static_cast<std::ptrdiff_t>(offset),
+                                                             [](char c) { return !utf8::is_continuation(c); }));
         return l;
     }
 
@@ -216,34 +219,34 @@ private:
     void line(std::size_t b, std::size_t e, bool has_lf) {
         std::size_t first = skip_blanks(b, e);
         switch (state_) {
-        case State::label: {
-            auto pct = text_.find('%', b);
-            if (pct == std::string_view::npos || pct >= e) {
-                v_.label(text_.substr(b, e - b + (has_lf ? 1 : 0)));
+            case State::label: {
+                auto pct = text_.find('%', b);
+                if (pct == std::string_view::npos || pct >= e) {
+                    v_.label(text_.substr(b, e - b + (has_lf ? 1 : 0)));
+                    return;
+                }
+                if (pct > b) v_.label(text_.substr(b, pct - b));
+                start_program(pct, e);
                 return;
             }
-            if (pct > b) v_.label(text_.substr(b, pct - b));
-            start_program(pct, e);
-            return;
-        }
-        case State::after_end:
-            if (first < e && text_[first] == '%') {
-                start_program(first, e);
+            case State::after_end:
+                if (first < e && text_[first] == '%') {
+                    start_program(first, e);
+                    return;
+                }
+                if (first < e || after_end_started_) {
+                    after_end_started_ = true;
+                    v_.after_end(text_.substr(b, e - b + (has_lf ? 1 : 0)), at(b));
+                }
                 return;
-            }
-            if (first < e || after_end_started_) {
-                after_end_started_ = true;
-                v_.after_end(text_.substr(b, e - b + (has_lf ? 1 : 0)), at(b));
-            }
-            return;
-        case State::program:
-            if (first < e && text_[first] == '%') {
-                unterminated();
-                start_program(first, e);
+            case State::program:
+                if (first < e && text_[first] == '%') {
+                    unterminated();
+                    start_program(first, e);
+                    return;
+                }
+                block(first, e);
                 return;
-            }
-            block(first, e);
-            return;
         }
     }
 
@@ -258,8 +261,11 @@ private:
         p.start = at(pct);
         std::size_t i = skip_blanks(pct + 1, e);
         if (i < e && text_[i] == '%') {
-            if (!any_program_) v_.physical_start();
-            else find("program-start", Severity::error, i, 0, "'%%' marks the physical start of the tape only before the first program (§1.8)");
+            if (!any_program_)
+                v_.physical_start();
+            else
+                find("program-start", Severity::error, i, 0,
+                     "'%%' marks the physical start of the tape only before the first program (§1.8)");
             i = skip_blanks(i + 1, e);
         }
         std::string number;
@@ -293,14 +299,17 @@ private:
         for (; j < e; ++j) {
             char c = text_[j];
             CharClass k = char_class[static_cast<unsigned char>(c)];
-            if (k == CharClass::digit) ++digits;
+            if (k == CharClass::digit)
+                ++digits;
             else if (k == CharClass::point) {
                 if (++points == 1) w.point = digits;
-            } else if (k == CharClass::sign && !w.sign && digits == 0 && points == 0) w.sign = c;
+            } else if (k == CharClass::sign && !w.sign && digits == 0 && points == 0)
+                w.sign = c;
             else if (k == CharClass::blank) {
                 if (first_blank == std::string_view::npos) first_blank = j;
                 continue;
-            } else break;
+            } else
+                break;
             end = j + 1;
         }
         *next = j;
@@ -317,7 +326,8 @@ private:
         if (digits == 0)
             find("no-digits", Severity::error, i, block_no, "the word " + w.text + " has no digits (§3.1.1)");
         if (points > 1)
-            find("two-points", Severity::error, i, block_no, "the word " + w.text + " has " + std::to_string(points) + " decimal points");
+            find("two-points", Severity::error, i, block_no,
+                 "the word " + w.text + " has " + std::to_string(points) + " decimal points");
     }
 
     // The next reused slot of blk_.words, grown only when a block has more words than any before.
@@ -378,7 +388,9 @@ private:
             if (text_[k] == '%' || text_[k] == ':')
                 find("comment-forbidden-char", Severity::error, k, blk_.ordinal,
                      std::string("'") + text_[k] + "' must not stand inside a comment (§1.5)");
-        if (!closed) find("unclosed-comment", Severity::error, open, blk_.ordinal, "the comment is not closed with ')' before the end of block");
+        if (!closed)
+            find("unclosed-comment", Severity::error, open, blk_.ordinal,
+                 "the comment is not closed with ')' before the end of block");
         return closed ? close + 1 : e;
     }
 
@@ -386,15 +398,19 @@ private:
         char c = text_[i];
         std::string shown(utf8::char_at(text_.substr(0, e), i));
         if (c == '/')
-            find("skip-position", Severity::error, i, block_no, "'/' (block skip) may stand only at the start of a block, before N or ':' (§2.7)");
+            find("skip-position", Severity::error, i, block_no,
+                 "'/' (block skip) may stand only at the start of a block, before N or ':' (§2.7)");
         else if (c == ':')
-            find("main-position", Severity::error, i, block_no, "':' (main block) may stand only at the start of a block, in place of N (§2.6)");
+            find("main-position", Severity::error, i, block_no,
+                 "':' (main block) may stand only at the start of a block, in place of N (§2.6)");
         else if (c == '%')
             find("percent-in-block", Severity::error, i, block_no, "'%' (program start) inside a block");
         else if (c >= 'a' && c <= 'z')
-            find("unexpected-character", Severity::error, i, block_no, "'" + shown + "' is no address: table 1 has the capital letters A-Z");
+            find("unexpected-character", Severity::error, i, block_no,
+                 "'" + shown + "' is no address: table 1 has the capital letters A-Z");
         else
-            find("unexpected-character", Severity::error, i, block_no, "'" + shown + "' is no character of an NC program outside comments (tables 1-3)");
+            find("unexpected-character", Severity::error, i, block_no,
+                 "'" + shown + "' is no character of an NC program outside comments (tables 1-3)");
     }
 };
 

@@ -1,6 +1,6 @@
-#include <algorithm>
-
 #include "tape/search.hpp"
+
+#include <algorithm>
 
 namespace tape {
 namespace {

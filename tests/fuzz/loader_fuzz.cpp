@@ -15,7 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (std::size_t i = 0; i < frames.size(); ++i) frames[i] = i * 2 + 100;  // a tape with gaps
     bool with_frames = size % 2 == 0;
     tape::LoadedTape t = tape::load(text, with_frames ? frames : std::vector<std::uint64_t>{});
-    static const tape::FormatSpec spec = tape::parse_format_spec("% : / DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*");
+    static const tape::FormatSpec spec =
+        tape::parse_format_spec("% : / DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*");
     static const tape::FormatSpec implied = tape::parse_format_spec("N03 G02 X+053 Y+530 Z+53 F031 S04 T04 M02");
     auto findings = tape::lint(t, tape::LintOptions{&spec});
     for (const auto& f : findings)
