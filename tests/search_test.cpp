@@ -61,3 +61,38 @@ TEST(Search, TextInputCountsLines) {
     EXPECT_EQ(frame_offset(t, 3), 11U);  // line 3 starts at "N2"
     EXPECT_EQ(find_main_block(t, frame_offset(t, 3))->block->number_text(), ":3");
 }
+
+// The streaming search, fed by the loader, finds what the searches over the whole tape find, from
+// every frame of the tape.
+TEST(Searcher, FindsWhatTheWholeTapeSearchesFindFromEveryFrame) {
+    LoadedTape t = tape_of(two_programs);
+    auto run = [&](SearchQuery q) {
+        Searcher s(q);
+        load_each(t.text, t.frame_of, s);
+        std::vector<std::uint64_t> offsets;
+        for (const auto& h : s.hits()) offsets.push_back(h.where.offset);
+        return offsets;
+    };
+    std::uint64_t last_frame = t.frame_of.back() + 2;
+    for (std::uint64_t frame = 0; frame <= last_frame; ++frame) {
+        SCOPED_TRACE("from frame " + std::to_string(frame));
+        std::uint64_t from = frame_offset(t, frame);
+        for (std::optional<long long> number : {std::optional<long long>{}, std::optional<long long>{5}}) {
+            std::vector<std::uint64_t> whole;
+            for (auto r = find_main_block(t, from, number); r;
+                 r = find_main_block(t, r->block->where.offset + 1, number))
+                whole.push_back(r->block->where.offset);
+            EXPECT_EQ(run(SearchQuery{
+                          .kind = SearchQuery::Kind::main_block, .number = number, .from = frame, .from_tape = true}),
+                      whole);
+        }
+        const Program* stop = find_rewind_stop(t, from);
+        auto rewind = run(SearchQuery{.kind = SearchQuery::Kind::rewind_stop, .from = frame, .from_tape = true});
+        EXPECT_EQ(rewind, stop ? std::vector<std::uint64_t>{stop->start.offset} : std::vector<std::uint64_t>{});
+    }
+    EXPECT_EQ(run(SearchQuery{.kind = SearchQuery::Kind::program, .program = "020"}),
+              std::vector<std::uint64_t>{find_program(t, "20")->start.offset});
+    std::vector<std::uint64_t> numbered;
+    for (auto r : find_numbered_blocks(t, 1)) numbered.push_back(r.block->where.offset);
+    EXPECT_EQ(run(SearchQuery{.kind = SearchQuery::Kind::numbered_block, .number = 1}), numbered);
+}

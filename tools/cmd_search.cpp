@@ -54,29 +54,42 @@ void run(SearchArgs a, const CLI::App& sub) {
             fail("", tape::Errc::usage, "--main takes a block number, not '" + *a.main_value + "'");
         }
     }
-    ProgramInput in = load_program_whole(a.input, a.source);
-    std::uint64_t from = tape::frame_offset(in.tape, a.from);
-    std::string out;
-    std::string where = std::string(in.from_tape ? "frame " : "line ") + std::to_string(a.from);
+    // Streamed: the loader feeds the search, so a tape of any length is searched in bounded memory.
+    ProgramInput in;
+    in.name = display_name(a.input);
+    auto input = open_program(a.input, a.source);
+    in.from_tape = input->is_image();
+    using Kind = tape::SearchQuery::Kind;
+    tape::SearchQuery q;
+    q.from = a.from;
+    q.from_tape = in.from_tape;
     if (sub.count("--main")) {
-        auto first = tape::find_main_block(in.tape, from, main_number);
-        for (auto r = first; r; r = tape::find_main_block(in.tape, r->block->where.offset + 1, main_number))
-            out += hit(in, r->block->where, r->block->text());
-        if (out.empty())
-            fail(in.name, tape::Errc::not_in_code,
-                 std::string("no main block") + (main_number ? " :" + std::to_string(*main_number) : "") + " from " +
-                     where);
+        q.kind = Kind::main_block;
+        q.number = main_number;
     } else if (a.rewind) {
-        const tape::Program* p = tape::find_rewind_stop(in.tape, from == 0 ? 0 : from);
-        if (!p) fail(in.name, tape::Errc::not_in_code, "no '%' before " + where);
-        out += hit(in, p->start, "%" + p->number.value_or(""));
+        q.kind = Kind::rewind_stop;
     } else if (!a.program.empty()) {
-        const tape::Program* p = tape::find_program(in.tape, a.program);
-        if (!p) fail(in.name, tape::Errc::not_in_code, "no program " + a.program);
-        out += hit(in, p->start, "%" + p->number.value_or(""));
+        q.kind = Kind::program;
+        q.program = a.program;
     } else if (a.block) {
-        for (auto r : tape::find_numbered_blocks(in.tape, *a.block)) out += hit(in, r.block->where, r.block->text());
-        if (out.empty()) fail(in.name, tape::Errc::not_in_code, "no block numbered " + std::to_string(*a.block));
+        q.kind = Kind::numbered_block;
+        q.number = a.block;
+    } else {
+        return;
+    }
+    tape::Searcher searcher(q);
+    load_program(*input, in.name, searcher);
+    std::string out;
+    for (const auto& h : searcher.hits()) out += hit(in, h.where, h.text);
+    std::string where = std::string(in.from_tape ? "frame " : "line ") + std::to_string(a.from);
+    if (out.empty()) {
+        std::string what = q.kind == Kind::main_block
+                               ? std::string("no main block") +
+                                     (main_number ? " :" + std::to_string(*main_number) : "") + " from " + where
+                           : q.kind == Kind::rewind_stop ? "no '%' before " + where
+                           : q.kind == Kind::program     ? "no program " + a.program
+                                                         : "no block numbered " + std::to_string(*a.block);
+        fail(in.name, tape::Errc::not_in_code, what);
     }
     write_output("-", out, false, false);
 }

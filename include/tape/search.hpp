@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -35,5 +36,35 @@ std::vector<BlockRef> find_numbered_blocks(const LoadedTape& tape, long long num
 
 /// Every main block, in tape order.
 std::vector<BlockRef> main_blocks(const LoadedTape& tape);
+
+/// One search, as a reader does it, fed by the loader as it streams: a tape of any length is searched
+/// in bounded memory. from is a frame for tapes, a line for text programs (0 or 1: the start).
+struct SearchQuery {
+    enum class Kind { main_block, rewind_stop, program, numbered_block } kind = Kind::main_block;
+    std::optional<long long> number{};  ///< main block (optional) or block number
+    std::string program{};              ///< program number, for Kind::program
+    std::uint64_t from = 1;
+    bool from_tape = false;  ///< from counts frames (else lines)
+};
+
+struct SearchHit {
+    Location where;
+    std::string text;  ///< the block as written, or "%41" for a program start
+};
+
+class Searcher : public ProgramVisitor {
+public:
+    explicit Searcher(SearchQuery query) : query_(std::move(query)) {}
+    void program_start(const Program& header) override;
+    void block(const Block& block) override;
+    /// The hits in tape order (the rewind stop: the one last before from).
+    const std::vector<SearchHit>& hits() const { return hits_; }
+
+private:
+    bool at_or_after_from(const Location& where) const;
+
+    SearchQuery query_;
+    std::vector<SearchHit> hits_;
+};
 
 }  // namespace tape

@@ -71,4 +71,27 @@ std::vector<BlockRef> main_blocks(const LoadedTape& t) {
     return hits;
 }
 
+bool Searcher::at_or_after_from(const Location& where) const {
+    if (query_.from <= 1) return true;
+    return query_.from_tape ? where.frame.value_or(0) >= query_.from : where.line >= query_.from;
+}
+
+void Searcher::program_start(const Program& p) {
+    using Kind = SearchQuery::Kind;
+    std::string text = "%" + p.number.value_or("");
+    if (query_.kind == Kind::rewind_stop && !at_or_after_from(p.start)) hits_.assign(1, SearchHit{p.start, text});
+    if (query_.kind == Kind::program && hits_.empty() && p.number &&
+        without_leading_zeros(*p.number) == without_leading_zeros(query_.program))
+        hits_.push_back(SearchHit{p.start, text});
+}
+
+void Searcher::block(const Block& b) {
+    using Kind = SearchQuery::Kind;
+    bool numbered = query_.number && b.number && b.number->integer() == query_.number;
+    if (query_.kind == Kind::main_block && b.main && at_or_after_from(b.where) &&
+        (!query_.number || !b.number || numbered))
+        hits_.push_back(SearchHit{b.where, b.text()});
+    if (query_.kind == Kind::numbered_block && numbered) hits_.push_back(SearchHit{b.where, b.text()});
+}
+
 }  // namespace tape
