@@ -46,7 +46,7 @@ public:
             rethrow_named(e);
         }
         std::size_t n = std::min(buffer.size(), chunk_.size() - pos_);
-        std::memcpy(buffer.data(), chunk_.data() + pos_, n);
+        if (n) std::memcpy(buffer.data(), chunk_.data() + pos_, n);  // an ended image has no chunk at all
         pos_ += n;
         return {n, ended_};
     }
