@@ -89,12 +89,10 @@ std::string hint_text(const tape::Hint& hint) {
     return "";
 }
 
-namespace {
 std::string with_hint(std::string message, const tape::Hint& hint) {
     std::string h = hint_text(hint);
     return h.empty() ? message : message + " (" + h + ")";
 }
-}  // namespace
 
 void say_diagnostic(const std::string& name, const tape::Diagnostic& d, bool raw_frames) {
     std::string where = where_text(d.where, raw_frames);
@@ -119,11 +117,6 @@ void say_unlisted(const std::string& name, std::uint64_t count, const std::strin
 void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std::uint64_t>& unlisted) {
     for (const auto& [code, count] : unlisted)
         say_unlisted(name, count, code == tape::Errc::parity ? "parity error(s)" : "frame(s) that are no character");
-}
-
-void report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames) {
-    for (const auto& d : r.diagnostics) say_diagnostic(name, d, raw_frames);
-    say_unlisted_frames(name, r.unlisted);
 }
 
 tape::InputOptions input_options(const CodeChoice& choice, const std::string& format_id, const std::string& kind) {
@@ -197,14 +190,12 @@ void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
         ->capture_default_str();
 }
 
-namespace {
 std::vector<std::string> format_ids(bool for_writing) {
     std::vector<std::string> ids;
     for (const auto& f : tape::image_formats())
         if (for_writing ? f.can_write() : f.can_read()) ids.emplace_back(f.id);
     return ids;
 }
-}  // namespace
 
 std::string format_choices(bool for_writing) {
     auto ids = format_ids(for_writing);
@@ -246,10 +237,15 @@ void add_program_source_options(CLI::App* sub, ProgramSource& source) {
         ->capture_default_str();
 }
 
-std::unique_ptr<tape::Input> open_program(const std::string& path, const ProgramSource& source) {
+ProgramInput open_program(const std::string& path, const ProgramSource& source) {
     tape::InputOptions o = input_options(source.choice, source.format, source.kind);
     o.decode.positions = true;
-    return open_input(path, o);
+    ProgramInput in;
+    in.name = display_name(path);
+    in.input = open_input(path, o);
+    in.from_tape = in.input->is_image();
+    if (in.from_tape) decide_code(*in.input, in.name);
+    return in;
 }
 
 namespace {
@@ -264,7 +260,7 @@ public:
     void physical_start() override { to_.physical_start(); }
     void end(const tape::Location& where) override { to_.end(where); }
     void finding(const tape::Finding& f) override {
-        if (f.code == tape::Errc::parity || f.code == tape::Errc::not_in_code) {
+        if (tape::is_bad_frame(f.code)) {
             say_diagnostic(name_, f, raw_);
             bad_ = true;
             return;
@@ -281,36 +277,33 @@ private:
 };
 }  // namespace
 
-void load_program(tape::Input& input, const std::string& name, tape::ProgramVisitor& visitor) {
-    if (input.is_image()) decide_code(input, name);
-    BadFramesFail guard(visitor, name, input.format() && input.format()->bytes_are_frames);
+namespace {
+bool raw_frames(const ProgramInput& in) { return in.from_tape && in.input->format()->bytes_are_frames; }
+}  // namespace
+
+void load_program(ProgramInput& in, tape::ProgramVisitor& visitor) {
+    BadFramesFail guard(visitor, in.name, raw_frames(in));
     try {
-        tape::load_each(input, guard);
+        tape::load_each(*in.input, guard);
     } catch (const tape::Error& e) {
-        fail(name, e);
+        fail(in.name, e);
     }
     if (guard.bad()) throw Exit{bad_data};
 }
 
-ProgramInput load_program_whole(const std::string& path, const ProgramSource& source) {
-    ProgramInput in;
-    in.name = display_name(path);
-    auto input = open_program(path, source);
-    in.from_tape = input->is_image();
-    if (input->is_image()) decide_code(*input, in.name);
+void load_program_whole(ProgramInput& in) {
     try {
-        tape::load(*input, in.tape);
+        tape::load(*in.input, in.tape);
     } catch (const tape::Error& e) {
         fail(in.name, e);
     }
     bool bad = false;
     for (const auto& f : in.tape.findings)
-        if (f.code == tape::Errc::parity || f.code == tape::Errc::not_in_code) {
-            say_diagnostic(in.name, f, input->format()->bytes_are_frames);
+        if (tape::is_bad_frame(f.code)) {
+            say_diagnostic(in.name, f, raw_frames(in));
             bad = true;
         }
     if (bad) throw Exit{bad_data};
-    return in;
 }
 
 std::string json_string(const std::string& s) {

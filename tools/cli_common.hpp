@@ -64,18 +64,17 @@ struct TapeInput {
     std::string name;  ///< as given, "-" for stdin; "stdin" in messages
     const tape::ImageFormat* format = nullptr;
     std::vector<tape::Frame> frames;
-    bool raw() const { return format && format->bytes_are_frames; }
 };
 /// Prints one diagnostic: "tape: FILE: frame 12 (byte 0xB): message (hint)".
 void say_diagnostic(const std::string& name, const tape::Diagnostic& d, bool raw_frames);
-/// Prints the bad frames a decoding kept, then how many more of each kind were only counted.
-void report_bad_frames(const std::string& name, const tape::DecodeResult& r, bool raw_frames);
 /// One such line for each kind of bad frame beyond the limit.
 void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std::uint64_t>& unlisted);
 /// "12345 more parity error(s) not shown (--max-errors 100)".
 void say_unlisted(const std::string& name, std::uint64_t count, const std::string& what);
 /// What the command line offers for a hint: "use --force to replace it"; "" for none.
 std::string hint_text(const tape::Hint& hint);
+/// message, then the hint in brackets when there is one.
+std::string with_hint(std::string message, const tape::Hint& hint);
 
 /// IN ("-" = stdin) opened by the library's one entry point: an image by --format, extension or
 /// content, or a text program. Failure ends the program.
@@ -93,6 +92,7 @@ void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto);
 /// The image formats of the table that can be read (or written): "raw or holes", and a CLI11 check
 /// that accepts exactly their ids. The CLI's --format choices come from here, never from a list of its own.
 std::string format_choices(bool for_writing);
+std::vector<std::string> format_ids(bool for_writing);
 CLI::Validator format_check(bool for_writing);
 
 /// Fails (usage) when a binary image would go to standard output on a terminal without --force.
@@ -111,18 +111,18 @@ struct ProgramSource {
 void add_program_source_options(CLI::App* sub, ProgramSource& source);
 /// IN opened for the loader: an image (by --format, extension, or content) decoded with positions,
 /// or a text program.
-std::unique_ptr<tape::Input> open_program(const std::string& path, const ProgramSource& source);
-/// Streams IN's programs into visitor. A bad frame is printed and ends the program with exit 1, as
-/// decode does; so does a text program that is not clean text.
-void load_program(tape::Input& input, const std::string& name, tape::ProgramVisitor& visitor);
-/// A program read whole for the loader.
 struct ProgramInput {
     std::string name;  ///< for messages
     bool from_tape = false;
-    tape::LoadedTape tape;
+    std::unique_ptr<tape::Input> input;
+    tape::LoadedTape tape;  ///< filled by load_program_whole only
 };
-/// The whole of IN's programs in memory, for the commands that need all of it at once.
-ProgramInput load_program_whole(const std::string& path, const ProgramSource& source);
+ProgramInput open_program(const std::string& path, const ProgramSource& source);
+/// Streams IN's programs into visitor. A bad frame is printed and ends the program with exit 1, as
+/// decode does; so does a text program that is not clean text.
+void load_program(ProgramInput& in, tape::ProgramVisitor& visitor);
+/// The whole of IN's programs into in.tape, for the commands that need all of it at once.
+void load_program_whole(ProgramInput& in);
 
 /// A JSON string literal for s (UTF-8 passed through, controls escaped).
 std::string json_string(const std::string& s);

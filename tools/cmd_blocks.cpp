@@ -144,10 +144,9 @@ private:
 };
 
 void run(const BlocksArgs& a) {
-    std::string name = display_name(a.input);
-    auto in = open_program(a.input, a.source);
-    Lister lister(a, name, in->is_image());
-    load_program(*in, name, lister);
+    ProgramInput in = open_program(a.input, a.source);
+    Lister lister(a, in.name, in.from_tape);
+    load_program(in, lister);
     lister.finish();
 }
 

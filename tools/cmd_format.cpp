@@ -27,7 +27,8 @@ void run(const FormatArgs& a) {
     tape::FormatSpec spec = parse_spec(a.spec);
     std::optional<tape::FormatSpec> from;
     if (a.from_option->count() > 0) from = parse_spec(a.from);
-    ProgramInput in = load_program_whole(a.input, a.source);
+    ProgramInput in = open_program(a.input, a.source);
+    load_program_whole(in);
     std::vector<tape::Diagnostic> findings;
     std::string text = tape::reformat(
         in.tape,
@@ -37,17 +38,14 @@ void run(const FormatArgs& a) {
     bool failed = false;
     for (const auto& f : findings) {
         std::string block = f.where.block ? ": block " + std::to_string(*f.where.block) : "";
-        std::string hint = hint_text(f.hint);
-        say(in.name,
-            position_text(f.where, in.from_tape) + block + ": " + f.message + (hint.empty() ? "" : " (" + hint + ")"));
+        say(in.name, position_text(f.where, in.from_tape) + block + ": " + with_hint(f.message, f.hint));
         failed |= f.severity == tape::Severity::error;
     }
     if (failed) throw Exit{bad_data};
     std::string kind = a.out_format;
     if (kind.empty()) {
         const tape::ImageFormat* f = a.output == "-" ? nullptr : tape::image_format_for_path(a.output);
-        bool text_name = a.output.size() >= 4 && a.output.compare(a.output.size() - 4, 4, ".txt") == 0;
-        kind = f && !text_name ? std::string(f->id) : "text";
+        kind = f && !tape::extension_is_ambiguous(a.output) ? std::string(f->id) : "text";
     }
     if (kind == "text") {
         write_output(a.output, text, false, a.force);
@@ -76,8 +74,12 @@ void add_format(CLI::App& app) {
     a->from_option =
         sub->add_option("--from", a->from, "The format the program is written in, for words with an implied point");
     sub->add_option("-o,--output", a->output, "Where to write: text, or a tape image when OUT has an image extension");
-    sub->add_option("--to", a->out_format, "Output: text, raw or holes (default: by the extension of OUT, else text)")
-        ->check(CLI::IsMember({"text", "raw", "holes"}));
+    std::vector<std::string> outputs = format_ids(true);
+    outputs.insert(outputs.begin(), "text");
+    sub->add_option(
+           "--to", a->out_format,
+           "Output: text, or a tape image: " + format_choices(true) + " (default: by the extension of OUT, else text)")
+        ->check(CLI::IsMember(outputs));
     sub->add_option("--to-code", a->out_code, "Code of an image output: iso or eia")
         ->check(CLI::IsMember({"iso", "eia"}))
         ->capture_default_str();

@@ -35,7 +35,7 @@ void run(const InfoArgs& a) {
             const auto& d = in->detect();
             code = d.code;
             reason = d.reason;
-            if (d.hint) reason += " (" + hint_text(d.hint) + ")";
+            reason = with_hint(reason, d.hint);
         } else {
             code = tape::parse_code(a.code);
             reason = "given with --code";

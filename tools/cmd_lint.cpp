@@ -23,12 +23,9 @@ void run(const LintArgs& a) {
         }
     }
     // Streamed: a tape of any length is checked in bounded memory.
-    ProgramInput in;
-    in.name = display_name(a.input);
-    auto input = open_program(a.input, a.source);
-    in.from_tape = input->is_image();
+    ProgramInput in = open_program(a.input, a.source);
     tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors});
-    load_program(*input, in.name, linter);
+    load_program(in, linter);
     std::string out;
     for (const auto& f : linter.findings()) {
         out += in.name + ":" + position_text(f.where, in.from_tape) +

@@ -55,10 +55,7 @@ void run(SearchArgs a, const CLI::App& sub) {
         }
     }
     // Streamed: the loader feeds the search, so a tape of any length is searched in bounded memory.
-    ProgramInput in;
-    in.name = display_name(a.input);
-    auto input = open_program(a.input, a.source);
-    in.from_tape = input->is_image();
+    ProgramInput in = open_program(a.input, a.source);
     using Kind = tape::SearchQuery::Kind;
     tape::SearchQuery q;
     q.from = a.from;
@@ -78,7 +75,7 @@ void run(SearchArgs a, const CLI::App& sub) {
         return;
     }
     tape::Searcher searcher(q);
-    load_program(*input, in.name, searcher);
+    load_program(in, searcher);
     std::string out;
     for (const auto& h : searcher.hits()) out += hit(in, h.where, h.text);
     std::string where = std::string(in.from_tape ? "frame " : "line ") + std::to_string(a.from);

@@ -30,6 +30,8 @@ std::string_view errc_name(Errc code);
 
 /// True for the kinds that mean "bad data in the input" (as opposed to I/O or usage).
 bool is_data_error(Errc code);
+/// True for the kinds of a bad frame on tape (parity, not in the code).
+bool is_bad_frame(Errc code);
 
 enum class Severity { info, warning, error };
 /// "info", "warning", "error".

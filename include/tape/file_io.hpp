@@ -55,6 +55,8 @@ public:
     virtual ~ByteSource() = default;
     /// Up to buffer.size() bytes; 0 only at the end. May wait (a pipe, a terminal).
     virtual std::size_t read(std::span<std::uint8_t> buffer) = 0;
+    /// Reads until buffer is full or the source ends; how many bytes came.
+    std::size_t read_full(std::span<std::uint8_t> buffer);
 };
 
 /// Bytes already in memory, as a source.

@@ -15,6 +15,18 @@ inline std::size_t length(std::string_view s, std::size_t offset) {
     return n;
 }
 
+/// How many bytes of s end with a whole character: a lead byte whose sequence runs past the end of
+/// s is left out (for text read in pieces, where the rest comes with the next piece).
+inline std::size_t whole_prefix(std::string_view s) {
+    for (std::size_t back = 1; back <= 3 && back <= s.size(); ++back) {
+        auto c = static_cast<unsigned char>(s[s.size() - back]);
+        if ((c & 0xC0) == 0x80) continue;  // a continuation byte: look further back
+        std::size_t need = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+        return need > back ? s.size() - back : s.size();
+    }
+    return s.size();
+}
+
 inline std::string_view char_at(std::string_view s, std::size_t offset) { return s.substr(offset, length(s, offset)); }
 
 /// Code point of one whole UTF-8 character, or nullopt when malformed.

@@ -68,15 +68,8 @@ std::optional<TextFault> TextChecker::check(std::span<const std::uint8_t> piece)
         joined.insert(joined.end(), piece.begin(), piece.end());
         piece = joined;
     }
-    // Hold back a UTF-8 lead byte whose sequence runs past the end of the piece.
-    std::size_t cut = piece.size();
-    for (std::size_t back = 1; back <= 3 && back <= piece.size(); ++back) {
-        std::uint8_t c = piece[piece.size() - back];
-        if ((c & 0xC0) == 0x80) continue;  // a continuation byte: look further back
-        std::size_t need = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
-        if (need > back) cut = piece.size() - back;
-        break;
-    }
+    // A character cut by the piece's end is checked with the next piece.
+    std::size_t cut = utf8::whole_prefix({reinterpret_cast<const char*>(piece.data()), piece.size()});
     carry_.assign(piece.begin() + static_cast<std::ptrdiff_t>(cut), piece.end());
     return check_whole(piece.first(cut));
 }

@@ -30,6 +30,8 @@ std::string_view errc_name(Errc code) {
 
 bool is_data_error(Errc code) { return code != Errc::io && code != Errc::usage && code != Errc::exists; }
 
+bool is_bad_frame(Errc code) { return code == Errc::parity || code == Errc::not_in_code; }
+
 std::string_view severity_name(Severity s) {
     switch (s) {
         case Severity::info:

@@ -203,6 +203,16 @@ void write_file_atomic(const std::string& path, std::string_view data, bool over
     out.commit();
 }
 
+std::size_t ByteSource::read_full(std::span<std::uint8_t> buffer) {
+    std::size_t have = 0;
+    while (have < buffer.size()) {
+        std::size_t n = read(buffer.subspan(have));
+        if (n == 0) break;
+        have += n;
+    }
+    return have;
+}
+
 std::size_t MemorySource::read(std::span<std::uint8_t> buffer) {
     std::size_t n = std::min(buffer.size(), bytes_.size());
     std::copy_n(bytes_.begin(), n, buffer.begin());

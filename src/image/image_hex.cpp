@@ -43,10 +43,7 @@ public:
     void read(std::span<const std::uint8_t> bytes, std::vector<Frame>& out) override {
         for (std::uint8_t c : bytes) take(c, out);
     }
-    void finish(std::vector<Frame>& out) override {
-        take('\n', out);
-        if (comment_) comment_ = false;
-    }
+    void finish(std::vector<Frame>& out) override { take('\n', out); }  // the last line may lack its LF
 
 private:
     void take(std::uint8_t c, std::vector<Frame>& out) {

@@ -24,12 +24,8 @@ ImageInput::ImageInput(std::unique_ptr<ByteSource> source, const std::string& na
     // caller or named by a format's own extension (".holes") is never overridden by the content.
     bool content_decides = !format_ || (!format && extension_is_ambiguous(name));
     if (content_decides) {
-        std::uint8_t buf[prefix_bytes];
-        while (bytes_.size() < prefix_bytes) {
-            std::size_t n = source_->read(std::span(buf, prefix_bytes - bytes_.size()));
-            if (n == 0) break;
-            bytes_.insert(bytes_.end(), buf, buf + n);
-        }
+        bytes_.resize(prefix_bytes);
+        bytes_.resize(source_->read_full(bytes_));
         format_ = &detect_image_format(bytes_);
     }
     if (!format_->can_read())

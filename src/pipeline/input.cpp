@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "codec/utf8.hpp"
 #include "tape/error.hpp"
 
 namespace tape {
@@ -36,29 +37,6 @@ private:
     std::unique_ptr<ByteSource> rest_;
 };
 
-std::vector<std::uint8_t> read_prefix(ByteSource& source, std::size_t limit) {
-    std::vector<std::uint8_t> bytes(limit);
-    std::size_t have = 0;
-    while (have < limit) {
-        std::size_t n = source.read(std::span(bytes).subspan(have));
-        if (n == 0) break;
-        have += n;
-    }
-    bytes.resize(have);
-    return bytes;
-}
-
-// The prefix without a character its end cut short, for the UTF-8 test.
-std::span<const std::uint8_t> whole_characters(std::span<const std::uint8_t> bytes) {
-    for (std::size_t back = 1; back <= 3 && back <= bytes.size(); ++back) {
-        std::uint8_t c = bytes[bytes.size() - back];
-        if ((c & 0xC0) == 0x80) continue;
-        std::size_t need = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
-        return need > back ? bytes.first(bytes.size() - back) : bytes;
-    }
-    return bytes;
-}
-
 }  // namespace
 
 Input::Input(const std::string& path, const InputOptions& options) : options_(options) {
@@ -81,11 +59,15 @@ void Input::open(std::unique_ptr<ByteSource> source, const std::string& name) {
         const ImageFormat* by_name = name.empty() || name == "-" ? nullptr : image_format_for_path(name);
         image = options_.format || (by_name && !extension_is_ambiguous(name));
         if (!image) {
-            text_ahead_ = read_prefix(*source, kind_prefix_bytes);
+            text_ahead_.resize(kind_prefix_bytes);
+            text_ahead_.resize(source->read_full(text_ahead_));
             const ImageFormat& by_content = detect_image_format(text_ahead_);
             bool picture = !by_content.binary && by_content.match(text_ahead_) >= 60;
-            image =
-                picture || (!is_program_text(whole_characters(text_ahead_)) && !looks_like_damaged_text(text_ahead_));
+            image = picture ||
+                    (!is_program_text(std::span(text_ahead_)
+                                          .first(utf8::whole_prefix({reinterpret_cast<const char*>(text_ahead_.data()),
+                                                                     text_ahead_.size()}))) &&
+                     !looks_like_damaged_text(text_ahead_));
         }
     }
     if (image) {
