@@ -226,3 +226,26 @@ TEST(Decode, EverySplitPointGivesTheSameResult) {
         }
     }
 }
+
+TEST(Decode, BadFrameNamesItsLineAndBlock) {
+    auto t = encode("%\nN1 G01\nN2 X10\n", EncodeOptions{.leader = 3});
+    t[3 + 2 + 8 + 1] ^= 0x80;  // the X of line 3
+    for (bool positions : {false, true}) {
+        auto r = decode(t, DecodeOptions{.positions = positions});
+        ASSERT_EQ(r.diagnostics.size(), 1U);
+        EXPECT_EQ(r.diagnostics[0].where.frame, 15U);
+        EXPECT_EQ(r.diagnostics[0].where.line, 3U);
+        EXPECT_EQ(r.diagnostics[0].where.block, 3U);
+    }
+    // Counted across chunks, and past the point where the vector loops take whole blocks.
+    std::string long_text;
+    for (int i = 0; i < 500; ++i) long_text += "N" + std::to_string(i) + " G01 X1\n";
+    auto l = encode(long_text, EncodeOptions{.leader = 0, .trailer = 0});
+    l[l.size() - 3] ^= 0x80;  // in the last line
+    Decoder decoder(DecodeOptions{.keep_going = true});
+    DecodeResult out;
+    for (std::size_t i = 0; i < l.size(); i += 1000)
+        decoder.feed(std::span(l).subspan(i, std::min<std::size_t>(1000, l.size() - i)), out);
+    ASSERT_EQ(out.diagnostics.size(), 1U);
+    EXPECT_EQ(out.diagnostics[0].where.line, 500U);
+}

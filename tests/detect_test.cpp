@@ -39,6 +39,115 @@ TEST(DetectCode, NoiseFitsNeither) {
     auto d = detect_code(noise);
     EXPECT_FALSE(d.code);
     EXPECT_NE(d.reason.find("neither ISO nor EIA"), std::string::npos);
+    EXPECT_FALSE(d.hint) << "no advice that would not read the tape cleanly";
+}
+
+TEST(DetectCode, EveryVerdictGivesItsEvidence) {
+    auto d = detect_code(read_frames(sample_path("gost-20999-format-example.iso.ptp")));
+    EXPECT_EQ(d.kind, TapeKind::iso);
+    EXPECT_TRUE(d.clean);
+    EXPECT_EQ(d.evidence.frames, 392U);
+    EXPECT_EQ(d.evidence.punched, 192U);
+    EXPECT_EQ(d.evidence.iso_lf, 11U);
+    EXPECT_EQ(d.evidence.fits[0].bad_frames, 0U);
+    EXPECT_EQ(d.evidence.fits[0].end_of_blocks, 11U);
+    EXPECT_EQ(d.evidence.fits[1].bad_frames, 192U) << "every ISO frame fails EIA's odd parity";
+    EXPECT_NE(d.reason.find("192 of 192 punched frames"), std::string::npos) << d.reason;
+}
+
+TEST(DetectCode, DecidesFromTheWholeTapeNotTheFirstBlock) {
+    // A label of EIA-looking frames before the first end of block, then a long ISO program: the whole
+    // tape says ISO.
+    std::vector<Frame> t = {0x0B, 0x13, 0x15};
+    std::string program = "%\n";
+    for (int i = 1; i < 50; ++i) program += "N" + std::to_string(i) + " G01 X" + std::to_string(i * 7) + "\n";
+    auto iso = encode(program, EncodeOptions{.leader = 0});
+    t.insert(t.end(), iso.begin(), iso.end());
+    auto d = detect_code(t);
+    EXPECT_EQ(d.code, Code::iso) << d.reason;
+    EXPECT_EQ(d.evidence.fits[0].bad_frames, 3U);
+}
+
+TEST(DetectCode, MarkParityAdviceOnlyWhenItReadsCleanly) {
+    std::string text;
+    for (int i = 0; i < 40; ++i) text += "LINE " + std::to_string(i) + " OF AN ASR-33 TAPE\n";
+    auto t = encode(text, EncodeOptions{.parity = Parity::mark});
+    auto d = detect_code(t);
+    EXPECT_EQ(d.kind, TapeKind::ascii);
+    EXPECT_EQ(d.reading, (Reading{Code::iso, Parity::mark}));
+    EXPECT_TRUE(d.clean);
+    EXPECT_EQ(d.hint.action, Hint::Action::use_iso_parity);
+    // Damage beyond one frame in a thousand: still an ASCII tape with mark parity, but no advice.
+    for (std::size_t i = 120; i < 140; i += 2) t[i] &= 0x7F;
+    d = detect_code(t);
+    EXPECT_EQ(d.kind, TapeKind::ascii) << d.reason;
+    EXPECT_FALSE(d.clean);
+    EXPECT_FALSE(d.hint) << d.reason;
+    EXPECT_NE(d.reason.find("frame(s) fail"), std::string::npos) << d.reason;
+}
+
+TEST(DetectCode, FiveTrackTape) {
+    std::vector<Frame> t(20, 0);
+    for (int i = 0; i < 200; ++i) t.push_back(static_cast<Frame>(1 + (i * 7) % 31));
+    auto d = detect_code(t);
+    EXPECT_EQ(d.kind, TapeKind::five_track) << d.reason;
+    EXPECT_FALSE(d.code);
+    EXPECT_EQ(d.hint.action, Hint::Action::use_five_track_code);
+    EXPECT_NE(d.reason.find("5-track tape"), std::string::npos);
+    EXPECT_EQ(d.reason.find("--"), std::string::npos) << d.reason;
+    EXPECT_EQ(detect_code(read_frames(sample_path("bad/ita2-5-track.ptp"))).kind, TapeKind::five_track);
+}
+
+TEST(DetectCode, DecBinaryTape) {
+    auto d = detect_code(read_frames(sample_path("bad/pdp8-bin-loader.bin")));
+    EXPECT_EQ(d.kind, TapeKind::binary) << d.reason;
+    EXPECT_FALSE(d.code);
+    EXPECT_FALSE(d.hint);
+    EXPECT_EQ(d.reason.rfind("binary tape, not a character code", 0), 0U) << d.reason;
+    EXPECT_EQ(d.evidence.longest_0x80_run, 60U);
+}
+
+TEST(DetectCode, RandomFramesAreBinary) {
+    std::vector<Frame> t;
+    std::uint32_t x = 12345;
+    for (int i = 0; i < 4000; ++i) {
+        x = x * 1103515245 + 12345;
+        t.push_back(static_cast<Frame>(x >> 16));
+    }
+    auto d = detect_code(t);
+    EXPECT_EQ(d.kind, TapeKind::binary) << d.reason;
+}
+
+TEST(DetectCode, TextFileGivenAsAnImage) {
+    std::string text = "%\nN1 G01 X10\nN2 M02\n";
+    std::vector<Frame> t(text.begin(), text.end());
+    auto d = detect_code(t);
+    EXPECT_EQ(d.kind, TapeKind::text) << d.reason;
+    EXPECT_EQ(d.hint.action, Hint::Action::encode_text);
+    Detector holes(nullptr, false);  // frames from a holes picture are no file's bytes
+    holes.feed(t);
+    EXPECT_NE(holes.result().kind, TapeKind::text);
+}
+
+TEST(DetectCode, SameVerdictHoweverCut) {
+    auto t = read_frames(sample_path("16k20f3s5-turning.eia.ptp"));
+    Detector d;
+    for (std::size_t i = 0; i < t.size(); i += 7)
+        d.feed(std::span(t).subspan(i, std::min<std::size_t>(7, t.size() - i)));
+    EXPECT_EQ(d.result().reason, detect_code(t).reason);
+}
+
+TEST(OtherReading, ForcedWrongCodeIsToldTheCleanOne) {
+    auto d = detect_code(read_frames(sample_path("16k20f3s5-turning.iso.ptp")));
+    auto note = other_reading(d, Reading{Code::eia, Parity::odd});
+    ASSERT_TRUE(note);
+    EXPECT_NE(note->message.find("reads cleanly as ISO"), std::string::npos) << note->message;
+    EXPECT_EQ(note->hint.action, Hint::Action::use_code);
+    EXPECT_EQ(note->hint.value, "iso");
+    note = other_reading(d, Reading{Code::iso, Parity::mark});
+    ASSERT_TRUE(note);
+    EXPECT_EQ(note->hint.action, Hint::Action::use_iso_parity);
+    EXPECT_FALSE(other_reading(d, Reading{Code::iso, Parity::even}));
 }
 
 TEST(ParityCounts, FindsEachConvention) {

@@ -5,6 +5,7 @@
 
 #include "tape/decode.hpp"
 #include "tape/error.hpp"
+#include "tape/utf8_text.hpp"
 #include "test_util.hpp"
 
 using namespace tape;
@@ -198,5 +199,27 @@ TEST(Encode, ErrorPositionsAreTheSameInPieces) {
         } catch (const Error& e) {
             ASSERT_EQ(e.where().describe(), "line 3, column 5") << "cut at byte " << k;
         }
+    }
+}
+
+TEST(Encode, SkipsAByteOrderMarkAtTheStart) {
+    EncodeOptions o{.leader = 0, .trailer = 0};
+    std::string text = "%\nN1 G01\n";
+    for (std::size_t cut = 0; cut <= 4; ++cut) {
+        std::string with_bom = std::string(utf8_bom) + text;
+        Encoder e(o);
+        std::vector<Frame> frames;
+        e.feed(std::string_view(with_bom).substr(0, cut), frames);
+        e.feed(std::string_view(with_bom).substr(cut), frames);
+        e.finish(frames);
+        EXPECT_EQ(frames, encode(text, o)) << "cut at " << cut;
+        EXPECT_TRUE(e.skipped_byte_order_mark());
+    }
+    // Anywhere else it is a character ISO cannot carry, named visibly.
+    try {
+        encode("%\n" + std::string(utf8_bom) + "N1\n", o);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("U+FEFF"), std::string::npos) << e.what();
     }
 }

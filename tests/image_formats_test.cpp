@@ -26,8 +26,9 @@ const ImageFormat& format(const std::string& id) {
     return *f;
 }
 
-std::vector<Frame> every_frame_value() {
-    std::vector<Frame> frames(256);
+// Every frame the format holds: all 256 bytes, or the 32 frames of 5-track tape.
+std::vector<Frame> every_frame_value(const ImageFormat& f) {
+    std::vector<Frame> frames(std::size_t{1} << f.tracks);
     std::iota(frames.begin(), frames.end(), 0);
     return frames;
 }
@@ -60,9 +61,10 @@ TEST_P(ImageFormatContract, DescribesItselfInTheTable) {
 TEST_P(ImageFormatContract, WritesAndReadsBackEveryFrameValue) {
     const ImageFormat& f = format(GetParam());
     if (!f.can_read() || !f.can_write()) GTEST_SKIP() << f.id << " only reads or only writes";
-    const auto frames = every_frame_value();
-    const FrameCode iso = FrameCode::iso(), eia = FrameCode::eia();
-    for (const FrameCode* annotate : {static_cast<const FrameCode*>(nullptr), &iso, &eia}) {
+    const auto frames = every_frame_value(f);
+    const FrameCode iso = FrameCode::iso(), eia = FrameCode::eia(), ita2 = FrameCode::five_track(Code::ita2),
+                    mtk2 = FrameCode::five_track(Code::mtk2);
+    for (const FrameCode* annotate : {static_cast<const FrameCode*>(nullptr), &iso, &eia, &ita2, &mtk2}) {
         SCOPED_TRACE(annotate ? std::string(code_name(annotate->code())) : "no annotation");
         std::string file = f.write(frames, ImageWriteOptions{.annotate = annotate});
         std::vector<Frame> back;
@@ -76,7 +78,7 @@ TEST_P(ImageFormatContract, WritesAndReadsBackEveryFrameValue) {
 TEST_P(ImageFormatContract, DetectionPicksItOrAMoreGeneralOne) {
     const ImageFormat& f = format(GetParam());
     if (!f.can_read() || !f.can_write()) GTEST_SKIP() << f.id << " only reads or only writes";
-    const auto frames = every_frame_value();
+    const auto frames = every_frame_value(f);
     std::string file = f.write(frames, ImageWriteOptions{});
     auto bytes = bytes_of(file);
     auto prefix = bytes.first(std::min(bytes.size(), detection_prefix));
@@ -94,7 +96,7 @@ TEST_P(ImageFormatContract, DetectionPicksItOrAMoreGeneralOne) {
 TEST_P(ImageFormatContract, ReadsAndWritesTheSameHoweverCut) {
     const ImageFormat& f = format(GetParam());
     if (!f.can_read() || !f.can_write()) GTEST_SKIP() << f.id << " only reads or only writes";
-    const auto frames = every_frame_value();
+    const auto frames = every_frame_value(f);
     const FrameCode iso = FrameCode::iso();
     const std::string whole = f.write(frames, ImageWriteOptions{.annotate = &iso});
     for (std::size_t piece : {std::size_t{1}, std::size_t{3}, std::size_t{7}, std::size_t{100}, std::size_t{4096}}) {
@@ -137,6 +139,66 @@ TEST(HexImage, ReadsADumpAndRefusesWhatIsNoDump) {
         ADD_FAILURE() << "a read-only format wrote";
     } catch (const Error& e) {
         EXPECT_EQ(e.code(), Errc::usage);
+    }
+}
+
+// A 5-track format holds frames of tracks 1-5 only: writing a frame with tracks 6-8 is refused (the
+// tape would lose holes), and so is reading one.
+TEST_P(ImageFormatContract, FiveTrackFormatsHoldOnlyFiveTrackFrames) {
+    const ImageFormat& f = format(GetParam());
+    EXPECT_TRUE(f.tracks == 8 || f.tracks == 5) << f.id;
+    if (f.tracks != 5) return;
+    if (f.can_write()) {
+        try {
+            f.write(std::vector<Frame>{0x1F, 0x20}, ImageWriteOptions{});
+            ADD_FAILURE() << f.id << " wrote a frame with track 6";
+        } catch (const Error& e) {
+            EXPECT_EQ(e.where().frame, 2U);
+        }
+    }
+    if (f.can_read() && find_image_format("hex8") && find_image_format("hex8")->can_write()) {
+        std::string eight = find_image_format("hex8")->write(std::vector<Frame>{0x1F, 0xA5}, ImageWriteOptions{});
+        EXPECT_THROW(f.read(bytes_of(eight)), Error) << f.id << " read a frame with tracks 6-8";
+    }
+}
+
+// hex8 and hex5: one frame a line, comments and blank lines, a comment after a frame.
+TEST(HexLinesImage, ReadsOneFrameALineWithComments) {
+    const std::string file = "# tape from the attic\n\n1f\n 03 # A\r\n\t00\n#\n1B";
+    const std::vector<Frame> frames{0x1F, 0x03, 0x00, 0x1B};
+    EXPECT_EQ(format("hex8").read(bytes_of(file)), frames);
+    EXPECT_EQ(format("hex5").read(bytes_of(file)), frames);
+    EXPECT_EQ(format("hex8").read(bytes_of("A5\nff\n")), (std::vector<Frame>{0xA5, 0xFF}));
+    EXPECT_EQ(&detect_image_format(bytes_of("A5\n0A\nFF\n8D\n")), &format("hex8"));
+    EXPECT_EQ(&detect_image_format(bytes_of("00\n1F\n0A\n15\n04\n1B\n")), &format("hex5"));
+    EXPECT_EQ(&detect_image_format(bytes_of("00\n00\n00\n00\n00\n")), &format("hex8"))
+        << "a blank leader alone does not say 5-track";
+    EXPECT_EQ(&detect_image_format(bytes_of("A5 0A FF 8D\n")), &format("hex")) << "several a line: hex";
+}
+
+// A bad line is reported with its number, counted from the start of the file however it is cut.
+TEST(HexLinesImage, BadLinesAreErrorsWithTheirLineNumber) {
+    struct Case {
+        std::string id, file;
+        std::uint64_t line;
+    };
+    for (const Case& c : {Case{"hex5", "# c\n1F\n\n03\n41\n", 5}, Case{"hex5", "1F\n1\n", 2},
+                          Case{"hex8", "1F\nA5 0A\n", 2}, Case{"hex8", "# c\n\n1FF\n", 3}, Case{"hex8", "zz", 1}}) {
+        for (std::size_t piece : {std::size_t{1}, std::size_t{2}, std::size_t{100}}) {
+            SCOPED_TRACE(c.id + " " + c.file + " in pieces of " + std::to_string(piece));
+            auto reader = format(c.id).make_reader();
+            std::vector<Frame> out;
+            auto bytes = bytes_of(c.file);
+            try {
+                for (std::size_t i = 0; i < bytes.size(); i += piece)
+                    reader->read(bytes.subspan(i, std::min(piece, bytes.size() - i)), out);
+                reader->finish(out);
+                ADD_FAILURE() << "read";
+            } catch (const Error& e) {
+                EXPECT_EQ(e.code(), Errc::bad_image);
+                EXPECT_EQ(e.where().line, c.line);
+            }
+        }
     }
 }
 

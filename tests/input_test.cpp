@@ -229,3 +229,47 @@ TEST(FramesToSend, ATextProgramIsEncodedWithPercentBlocks) {
     auto sent = frames_to_send(in, o);
     EXPECT_EQ(sent, encode("%\nN1 M30\n%", o.encode));
 }
+
+TEST(Input, AByteOrderMarkIsSkippedWithANote) {
+    std::string program = "%\nN1 G01 X10\n";
+    for (InputKind kind : {InputKind::automatic, InputKind::text}) {
+        for (std::size_t piece : {1, 2, 1 << 20}) {
+            auto in = open_bytes(std::string(utf8_bom) + program, "p.txt", InputOptions{.kind = kind}, piece);
+            ASSERT_FALSE(in.is_image());
+            EXPECT_EQ(text_of(in), program);
+            ASSERT_EQ(in.notes().size(), 1U);
+            EXPECT_EQ(in.notes()[0].where.line, 1U);
+            EXPECT_NE(in.notes()[0].message.find("U+FEFF"), std::string::npos);
+        }
+    }
+    auto plain = open_bytes(program, "p.txt");
+    EXPECT_TRUE(plain.notes().empty());
+}
+
+TEST(Input, ATextFileGivenAsARawImageIsRefusedAsText) {
+    auto in = open_bytes("%\nN1 G01 X10\nN2 M02\n", "p.ptp");
+    ASSERT_TRUE(in.is_image());
+    try {
+        in.decode_options();
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), Errc::unknown_code);
+        EXPECT_NE(std::string(e.what()).find("text program"), std::string::npos) << e.what();
+        EXPECT_EQ(e.hint().action, Hint::Action::encode_text);
+    }
+}
+
+TEST(Input, DetectionReadsAheadABoundedAmount) {
+    // Longer than the read-ahead: the verdict says it saw the start only, and every frame comes back.
+    std::string text;
+    for (int i = 0; i < 40000; ++i) text += "N" + std::to_string(i) + " G01 X1\n";
+    auto frames = encode(text, {});
+    std::string bytes(frames.begin(), frames.end());
+    auto in = open_bytes(bytes, "t.ptp", {}, 4096);
+    EXPECT_EQ(in.decode_options().code, Code::iso);
+    EXPECT_FALSE(in.detection()->evidence.whole_tape);
+    EXPECT_LE(in.detection()->evidence.frames, 300000U);
+    std::size_t back = 0;
+    for (auto f = in.next_frames(); !f.empty(); f = in.next_frames()) back += f.size();
+    EXPECT_EQ(back, frames.size());
+}

@@ -86,9 +86,10 @@ TEST(Loader, SyntaxFindings) {
     EXPECT_EQ(rules(load("%\nN1 X1.2.3\nM02\n")), std::vector<std::string_view>{"two-points"});
     EXPECT_EQ(rules(load("%\nN1 G01 /X1\nM02\n")), std::vector<std::string_view>{"skip-position"});
     EXPECT_EQ(rules(load("%\nN1 G01 :2\nM02\n")), std::vector<std::string_view>{"main-position"});
-    EXPECT_EQ(rules(load("%\nN1 x1\nM02\n")), std::vector<std::string_view>{"unexpected-character"});
-    EXPECT_EQ(rules(load("%\nN1 G01 x\nM02\n")), std::vector<std::string_view>{"unexpected-character"});
-    EXPECT_EQ(rules(load("%\nN1 X1 #\nM02\n")), std::vector<std::string_view>{"unexpected-character"});
+    EXPECT_EQ(rules(load("%\nN1 x1\nM02\n")), std::vector<std::string_view>{"unknown-word"});
+    EXPECT_EQ(rules(load("%\nN1 G01 x\nM02\n")), std::vector<std::string_view>{"unknown-word"});
+    EXPECT_EQ(rules(load("%\nN1 X1 #\nM02\n")), std::vector<std::string_view>{"unknown-word"});
+    EXPECT_EQ(rules(load("%\nN1 X1 $&\nM02\n")), std::vector<std::string_view>{"unexpected-character"});
     EXPECT_EQ(rules(load("%\nN1 (A:B%)\nM02\n")),
               (std::vector<std::string_view>{"comment-forbidden-char", "comment-forbidden-char"}));
     EXPECT_EQ(rules(load("%\nN1 (OPEN\nM02\n")), std::vector<std::string_view>{"unclosed-comment"});

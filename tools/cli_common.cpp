@@ -61,13 +61,21 @@ void say(const std::string& file, const std::string& message) {
 }
 
 std::string where_text(const tape::Position& where, bool raw_frames) {
-    std::string s = where.describe();
-    if (raw_frames && where.frame) {
+    if (!where.frame) return where.describe();
+    // A frame first (what a tape has), then what helps to find it: the byte of a raw file, the line of the text.
+    std::string more;
+    if (raw_frames) {
         char buf[32];
-        std::snprintf(buf, sizeof buf, " (byte 0x%llX)", static_cast<unsigned long long>(*where.frame - 1));
-        s += buf;
+        std::snprintf(buf, sizeof buf, "byte 0x%llX", static_cast<unsigned long long>(*where.frame - 1));
+        more = buf;
     }
-    return s;
+    if (where.line) more += (more.empty() ? "line " : ", line ") + std::to_string(*where.line);
+    return "frame " + std::to_string(*where.frame) + (more.empty() ? "" : " (" + more + ")");
+}
+
+void say_note(const std::string& name, const tape::Diagnostic& d) {
+    std::string where = d.where.describe();
+    say(name, (where.empty() ? "" : where + ": ") + "note: " + with_hint(d.message, d.hint));
 }
 
 std::string hint_text(const tape::Hint& hint) {
@@ -85,6 +93,12 @@ std::string hint_text(const tape::Hint& hint) {
             return "if this is a tape image, give --input image";
         case A::give_source_format:
             return "give --from SPEC for implied points";
+        case A::use_code:
+            return "try --code " + std::string(hint.value);
+        case A::use_five_track_code:
+            return "try --code ita2 or --code mtk2";
+        case A::encode_text:
+            return "use `tape encode` to punch it";
     }
     return "";
 }
@@ -126,7 +140,7 @@ tape::InputOptions input_options(const CodeChoice& choice, const std::string& fo
                                : tape::InputKind::automatic;
     o.format = format_id.empty() ? nullptr : tape::find_image_format(format_id);
     o.detect_code = choice.code == "auto";
-    o.decode.code = choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
+    o.decode.code = tape::parse_code(choice.code).value_or(tape::Code::iso);
     o.decode.parity = *tape::parse_parity(choice.parity);
     o.decode.charset = *tape::parse_charset(choice.charset);
     o.decode.eia_table = globals().table();
@@ -137,17 +151,23 @@ tape::InputOptions input_options(const CodeChoice& choice, const std::string& fo
 std::unique_ptr<tape::Input> open_input(const std::string& path, const tape::InputOptions& options) {
     if (!options.detect_code && options.decode.code == tape::Code::eia && options.decode.parity != tape::Parity::even)
         fail(display_name(path), tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
+    std::unique_ptr<tape::Input> input;
     try {
-        return std::make_unique<tape::Input>(path.empty() ? "-" : path, options);
+        input = std::make_unique<tape::Input>(path.empty() ? "-" : path, options);
     } catch (const tape::Error& e) {
         fail(display_name(path), e);
     }
+    for (const auto& note : input->notes()) say_note(display_name(path), note);
+    return input;
 }
 
 const tape::DecodeOptions& decide_code(tape::Input& input, const std::string& name) {
     try {
         const tape::DecodeOptions& o = input.decode_options();
         if (globals().verbosity > 0 && input.detection()) say(name, "code " + input.detection()->reason);
+        // A code or parity given by hand is taken as given; the verdict is still drawn (from the
+        // read-ahead), so that a tape failing the given code can be said to read cleanly another way.
+        if (!input.detection()) input.detect();
         return o;
     } catch (const tape::Error& e) {
         fail(name, e);
@@ -170,17 +190,20 @@ TapeInput read_tape(const std::string& path, const std::string& format_id) {
     return in;
 }
 
-void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto) {
+void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto, bool five_track) {
     std::vector<std::string> codes = {"iso", "eia"};
+    if (five_track) codes.insert(codes.end(), {"ita2", "mtk2"});
     if (with_auto)
         codes.insert(codes.begin(), "auto");
     else
         choice.code = "iso";
-    sub->add_option("--code,-c", choice.code,
-                    with_auto ? "Tape code: auto (detect ISO or EIA from the first block), iso or eia"
-                              : "Tape code: iso (ISO 7-bit, even parity on track 8) or eia (EIA RS-244)")
-        ->check(CLI::IsMember(codes))
-        ->capture_default_str();
+    std::string help = with_auto ? "Tape code: auto (detect ISO or EIA from the first block), iso or eia"
+                                 : "Tape code: iso (ISO 7-bit, even parity on track 8) or eia (EIA RS-244)";
+    if (five_track)
+        help +=
+            "; 5-track telegraph tape: ita2 (ITA2 Baudot-Murray, letters/figures shifts) or mtk2 (МТК-2, "
+            "with the Russian register); these are never detected";
+    sub->add_option("--code,-c", choice.code, help)->check(CLI::IsMember(codes))->capture_default_str();
     sub->add_option("--parity,-p", choice.parity,
                     "Track 8 rule for ISO/ASCII tapes: even (NC tapes), odd, mark (DEC-era ASCII), space, none")
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}))
@@ -288,7 +311,19 @@ void load_program(ProgramInput& in, tape::ProgramVisitor& visitor) {
     } catch (const tape::Error& e) {
         fail(in.name, e);
     }
-    if (guard.bad()) throw Exit{bad_data};
+    if (guard.bad()) {
+        say_other_reading(*in.input, in.name);
+        throw Exit{bad_data};
+    }
+}
+
+void say_other_reading(tape::Input& input, const std::string& name) {
+    if (!input.is_image() || !input.detection()) return;
+    const tape::DecodeOptions& o = input.decode_options();
+    // The verdict weighs 8-track readings only: a 5-track code given by hand is not second-guessed.
+    if (o.code == tape::Code::ita2 || o.code == tape::Code::mtk2) return;
+    tape::Reading forced{o.code, o.code == tape::Code::eia ? tape::Parity::odd : o.parity};
+    if (auto note = tape::other_reading(*input.detection(), forced)) say(name, with_hint(note->message, note->hint));
 }
 
 void load_program_whole(ProgramInput& in) {
@@ -303,7 +338,10 @@ void load_program_whole(ProgramInput& in) {
             say_diagnostic(in.name, f, raw_frames(in));
             bad = true;
         }
-    if (bad) throw Exit{bad_data};
+    if (bad) {
+        say_other_reading(*in.input, in.name);
+        throw Exit{bad_data};
+    }
 }
 
 std::string json_string(const std::string& s) {

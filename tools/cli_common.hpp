@@ -50,7 +50,8 @@ void say(const std::string& file, const std::string& message);
 [[noreturn]] void fail(const std::string& file, const tape::Error& e, bool raw_frames = false);
 [[noreturn]] void fail(const std::string& file, tape::Errc code, const std::string& message);
 
-/// "frame 137 (byte 0x88)" for raw images, where frame N is byte N-1.
+/// "frame 137 (byte 0x88, line 11)": the byte for raw images, where frame N is byte N-1, and the
+/// line of the decoded text when known.
 std::string where_text(const tape::Position& where, bool raw_frames);
 
 /// The code chosen for a decoding run: --code auto detects and explains itself with -v.
@@ -67,6 +68,11 @@ struct TapeInput {
 };
 /// Prints one diagnostic: "tape: FILE: frame 12 (byte 0xB): message (hint)".
 void say_diagnostic(const std::string& name, const tape::Diagnostic& d, bool raw_frames);
+/// "tape: FILE: line 1: note: message" for a finding that is no fault.
+void say_note(const std::string& name, const tape::Diagnostic& d);
+/// After bad frames of a tape read with a code or parity given by hand: says when it reads cleanly
+/// another way (or is a 5-track, binary or text file), with the hint to read it so.
+void say_other_reading(tape::Input& input, const std::string& name);
 /// One such line for each kind of bad frame beyond the limit.
 void say_unlisted_frames(const std::string& name, const std::map<tape::Errc, std::uint64_t>& unlisted);
 /// "12345 more parity error(s) not shown (--max-errors 100)".
@@ -88,7 +94,8 @@ const tape::DecodeOptions& decide_code(tape::Input& input, const std::string& na
 TapeInput read_tape(const std::string& path, const std::string& format_id);
 std::string display_name(const std::string& path);
 
-void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto);
+/// --code (with auto for reading; with the 5-track codes where the command handles them), --parity, --charset.
+void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto, bool five_track = false);
 /// The image formats of the table that can be read (or written): "raw or holes", and a CLI11 check
 /// that accepts exactly their ids. The CLI's --format choices come from here, never from a list of its own.
 std::string format_choices(bool for_writing);

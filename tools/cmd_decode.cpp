@@ -34,7 +34,10 @@ void run(const DecodeArgs& a) {
         while (in->next_text(piece)) {
             for (const auto& d : piece.diagnostics) say_diagnostic(name, d, raw);
             piece.diagnostics.clear();
-            if (!piece.complete) throw Exit{bad_data};  // nothing written: the program would be cut short
+            if (!piece.complete) {  // nothing written: the program would be cut short
+                say_other_reading(*in, name);
+                throw Exit{bad_data};
+            }
             if (!out) open_output();
             try {
                 out->write(piece.text);
@@ -52,6 +55,7 @@ void run(const DecodeArgs& a) {
         }
         if (std::uint64_t bad = in->decoder() ? in->decoder()->bad_frames() : 0) {
             say(name, std::to_string(bad) + " bad frame(s), each marked \xEF\xBF\xBD in the text");
+            say_other_reading(*in, name);
             throw Exit{bad_data};
         }
     } catch (const tape::Error& e) {
@@ -66,7 +70,7 @@ void add_decode(CLI::App& app) {
     auto* sub = app.add_subcommand("decode", "Read a tape image back into the text program");
     sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
     sub->add_option("-o,--output", a->output, "Text file to write; - for stdout");
-    add_code_options(sub, a->choice, true);
+    add_code_options(sub, a->choice, true, true);
     sub->add_option("--format,-f", a->format,
                     "Image format of IN: " + format_choices(false) + " (default: by extension, else by content)")
         ->check(format_check(false));

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "tape/encode.hpp"
 #include "tape/file_io.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 namespace {
@@ -31,6 +32,8 @@ void run(const EncodeArgs& a) {
     o.eia_table = globals().table();
     if (o.code == tape::Code::eia && o.parity != tape::Parity::even)
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
+    if (tape::is_five_track(o.code) && o.parity != tape::Parity::even)
+        fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; 5-track codes carry none");
     const tape::ImageFormat* format = a.format.empty() ? nullptr : tape::find_image_format(a.format);
     if (!format && a.output != "-") format = tape::image_format_for_path(a.output);
     if (!format) format = &tape::default_image_format();
@@ -74,8 +77,14 @@ void run(const EncodeArgs& a) {
         }
     };
     std::vector<tape::Frame> frames;
+    tape::Encoder encoder(o);
+    bool noted = false;
+    auto note_bom = [&] {
+        if (noted || !encoder.skipped_byte_order_mark()) return;
+        say_note(in_name, tape::byte_order_mark_note());
+        noted = true;
+    };
     try {
-        tape::Encoder encoder(o);
         // Page-aligned: read() copies into it faster than into malloc's page + 16 bytes.
         constexpr std::size_t chunk = 128 << 10;
         std::unique_ptr<std::uint8_t, decltype(&std::free)> storage(
@@ -84,12 +93,14 @@ void run(const EncodeArgs& a) {
         std::span<std::uint8_t> buffer(storage.get(), chunk);
         for (std::size_t n; (n = source->read(buffer)) > 0;) {
             encoder.feed(std::string_view(reinterpret_cast<const char*>(buffer.data()), n), frames);
+            note_bom();
             if (!frames.empty()) emit(frames, false);
             frames.clear();
         }
         encoder.finish(frames);
     } catch (const tape::Error& e) {
         if (out) out->discard();
+        note_bom();
         fail(in_name, e);
     }
     emit(frames, true);
@@ -109,7 +120,7 @@ void add_encode(CLI::App& app) {
     auto* sub = app.add_subcommand("encode", "Punch a text program into a tape image (each line a block)");
     sub->add_option("input", a->input, "Text program; - or nothing for stdin");
     sub->add_option("-o,--output", a->output, "Tape image to write; - for stdout (raw refuses a terminal)");
-    add_code_options(sub, a->choice, false);
+    add_code_options(sub, a->choice, false, true);
     sub->add_option("--leader", a->leader, "Blank frames before the program (10 frames = 25.4 mm)")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str();

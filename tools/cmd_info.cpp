@@ -22,67 +22,98 @@ std::string parity_found(const tape::ParityCounts& p) {
     return std::string(tape::parity_name(*d));
 }
 
+// The evidence of the verdict, one reading a line: what decoding the tape that way gives.
+std::string fit_text(const tape::ReadingFit& f) {
+    return std::to_string(f.bad_frames) + " bad frames, " + std::to_string(f.controls) + " stray controls, " +
+           std::to_string(f.end_of_blocks) + " end of blocks";
+}
+
+std::string evidence_json(const tape::TapeEvidence& e) {
+    std::ostringstream o;
+    o << "{\"frames\": " << e.frames << ", \"punched\": " << e.punched << ", \"even\": " << e.parity.even
+      << ", \"odd\": " << e.parity.odd << ", \"track8\": " << e.parity.mark << ", \"five_track\": " << e.five_track
+      << ", \"iso_lf\": " << e.iso_lf << ", \"eia_eob\": " << e.eia_eob
+      << ", \"longest_track8_run\": " << e.longest_0x80_run << ", \"text\": " << (e.text ? "true" : "false")
+      << ", \"readings\": [";
+    for (std::size_t i = 0; i < e.fits.size(); ++i) {
+        const auto& f = e.fits[i];
+        o << (i ? ", " : "") << "{\"reading\": " << json_string(tape::reading_name(f.reading))
+          << ", \"bad_frames\": " << f.bad_frames << ", \"controls\": " << f.controls
+          << ", \"end_of_blocks\": " << f.end_of_blocks << "}";
+    }
+    o << "]}";
+    return o.str();
+}
+
 void run(const InfoArgs& a) {
     std::string name = display_name(a.input);
     tape::InputOptions io = input_options(CodeChoice{}, a.format, "image");
     io.detect_code = false;
     auto in = open_input(a.input, io);
-    std::optional<tape::Code> code;
-    std::string reason;
-    std::optional<tape::Parity> rule;  // the parity rule errors are counted against, once it is known
+    // The verdict is drawn from the whole tape: every frame goes through the detector, which decodes
+    // it each way at once, and (for a rule it does not try) through one surveyor more.
+    tape::Detector detector(globals().table(), in->format()->bytes_are_frames);
+    std::optional<tape::Parity> given_rule;
+    if (!a.parity.empty()) given_rule = *tape::parse_parity(a.parity);
+    const bool given_code = a.code != "auto";
+    const tape::Code code_given = a.code == "eia" ? tape::Code::eia : tape::Code::iso;
+    std::optional<tape::Surveyor> extra;
+    if (given_rule) extra.emplace(tape::FrameCode::make(code_given, *given_rule, globals().table()));
     try {
-        if (a.code == "auto") {
-            const auto& d = in->detect();
-            code = d.code;
-            reason = d.reason;
-            reason = with_hint(reason, d.hint);
-        } else {
-            code = tape::parse_code(a.code);
-            reason = "given with --code";
+        for (auto frames = in->next_frames(); !frames.empty(); frames = in->next_frames()) {
+            detector.feed(frames);
+            if (extra) extra->feed(frames);
         }
     } catch (const tape::Error& e) {
         fail(name, e);
     }
-    if (!a.parity.empty())
-        rule = *tape::parse_parity(a.parity);
-    else if (code)
-        rule = tape::Parity::even;
-    // Without a code, errors are counted against the rule the whole tape uses: one survey a rule, in
-    // one pass, and the one of the rule found is shown.
-    std::vector<tape::Parity> rules =
-        rule ? std::vector{*rule}
-             : std::vector{tape::Parity::even, tape::Parity::odd, tape::Parity::mark, tape::Parity::space};
-    std::vector<tape::Surveyor> surveyors;
-    for (auto r : rules)
-        surveyors.emplace_back(tape::FrameCode::make(code.value_or(tape::Code::iso), r, globals().table()));
-    try {
-        for (auto frames = in->next_frames(); !frames.empty(); frames = in->next_frames())
-            for (auto& s : surveyors) s.feed(frames);
-    } catch (const tape::Error& e) {
-        fail(name, e);
-    }
-    auto counts = surveyors.front().result().parity;
-    if (!rule) rule = counts.dominant().value_or(tape::Parity::even);
-    auto chosen = static_cast<std::size_t>(std::find(rules.begin(), rules.end(), *rule) - rules.begin());
-    tape::FrameCode fc = tape::FrameCode::make(code.value_or(tape::Code::iso), *rule, globals().table());
-    tape::TapeSurvey s = surveyors[chosen].result();
+    tape::CodeDetection d = detector.result();
+    std::optional<tape::Code> code = given_code ? std::optional(code_given) : d.code;
+    std::string reason = given_code ? "given with --code" : d.reason;
+    // Errors are counted against the rule given, else the one of the code, else the one the tape fits.
+    tape::Parity rule = given_rule  ? *given_rule
+                        : code      ? tape::Parity::even
+                        : d.reading ? d.reading->parity
+                                    : d.evidence.parity.dominant().value_or(tape::Parity::even);
+    tape::Reading reading{code.value_or(tape::Code::iso), code == tape::Code::eia ? tape::Parity::odd : rule};
+    tape::TapeSurvey s = extra ? extra->result() : detector.survey(reading);
+    auto counts = d.evidence.parity;
     std::string code_text = code ? std::string(tape::code_name(*code)) : "unknown";
+    std::optional<tape::Diagnostic> other;
+    if (given_code || given_rule) other = tape::other_reading(d, reading);
+    std::string advice = hint_text(d.hint);
     std::ostringstream out;
     if (a.json) {
         out << "{\"file\": " << json_string(name) << ", \"format\": " << json_string(std::string(in->format()->id))
             << ", \"code\": " << (code ? json_string(code_text) : "null")
-            << ", \"code_reason\": " << json_string(reason) << ", \"parity\": " << json_string(parity_found(counts))
-            << ", \"parity_rule\": " << json_string(std::string(tape::parity_name(fc.parity())))
+            << ", \"code_reason\": " << json_string(reason)
+            << ", \"kind\": " << json_string(std::string(tape::tape_kind_name(d.kind)))
+            << ", \"verdict\": " << json_string(d.reason)
+            << ", \"advice\": " << (advice.empty() ? "null" : json_string(advice))
+            << ", \"other_reading\": " << (other ? json_string(with_hint(other->message, other->hint)) : "null")
+            << ", \"evidence\": " << evidence_json(d.evidence) << ", \"parity\": " << json_string(parity_found(counts))
+            << ", \"parity_rule\": " << json_string(std::string(tape::parity_name(rule)))
             << ", \"frames\": {\"total\": " << s.frames << ", \"leader\": " << s.leader << ", \"data\": " << s.data
             << ", \"del\": " << s.rubouts << ", \"blank_inside\": " << s.blank_inside << ", \"trailer\": " << s.trailer
             << ", \"parity_errors\": " << s.parity_errors << ", \"not_in_code\": " << s.not_in_code
             << "}, \"program_starts\": " << s.program_starts << ", \"end_of_blocks\": " << s.end_of_blocks << "}\n";
     } else {
+        const auto& e = d.evidence;
         auto misfit = counts.dominant() ? counts.misfits(*counts.dominant()) : 0;
         out << "file:           " << name << "\n"
             << "format:         " << in->format()->id << "\n"
-            << "code:           " << code_text << " (" << reason << ")\n"
-            << "parity found:   " << parity_found(counts) << " (" << counts.frames << " punched frames, " << counts.even
+            << "code:           " << code_text << (given_code ? " (given with --code)" : "") << "\n"
+            << "tape:           " << d.reason << "\n";
+        if (!advice.empty()) out << "advice:         " << advice << "\n";
+        if (other) out << "note:           " << with_hint(other->message, other->hint) << "\n";
+        out << "evidence:       " << e.punched << " punched of " << e.frames << " frames, " << e.five_track
+            << " with tracks 6-8 clear, " << e.iso_lf << " LF (ISO end of block), " << e.eia_eob
+            << " track 8 alone (EIA end of block), longest run of those " << e.longest_0x80_run << "\n";
+        for (const auto& f : e.fits) {
+            std::string label = "  as " + tape::reading_name(f.reading) + ":";
+            out << label << std::string(label.size() < 30 ? 30 - label.size() : 1, ' ') << fit_text(f) << "\n";
+        }
+        out << "parity found:   " << parity_found(counts) << " (" << counts.frames << " punched frames, " << counts.even
             << " even, " << counts.odd << " odd, " << counts.mark << " with track 8"
             << (misfit ? ", " + std::to_string(misfit) + " do not fit" : "") << ")\n"
             << "frames:         " << s.frames << "\n"
@@ -91,7 +122,7 @@ void run(const InfoArgs& a) {
             << "  DEL:          " << s.rubouts << "\n"
             << "  blank inside: " << s.blank_inside << "\n"
             << "  trailer:      " << s.trailer << "\n"
-            << "  parity errors:" << ' ' << s.parity_errors << " (" << tape::parity_name(fc.parity()) << " rule)\n";
+            << "  parity errors:" << ' ' << s.parity_errors << " (" << tape::parity_name(rule) << " rule)\n";
         if (s.not_in_code) out << "  not in code:  " << s.not_in_code << "\n";
         out << "program starts: " << s.program_starts << "\n"
             << "end of blocks:  " << s.end_of_blocks << "\n";

@@ -36,7 +36,7 @@ void run(const LintArgs& a) {
     write_output("-", out, false, false);
     for (const auto& [rule, count] : linter.unlisted()) say_unlisted(in.name, count, std::string(rule) + " finding(s)");
     auto errors = linter.count(tape::Severity::error), warnings = linter.count(tape::Severity::warning);
-    if (globals().verbosity >= 0 && errors + warnings + linter.count(tape::Severity::info) > 0)
+    if (globals().verbosity >= 0 && errors + warnings + linter.count(tape::Severity::note) > 0)
         say(in.name, std::to_string(errors) + " error(s), " + std::to_string(warnings) + " warning(s)");
     if (errors) throw Exit{bad_data};
 }

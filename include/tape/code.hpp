@@ -1,4 +1,5 @@
-// Frame codes: how frames on tape stand for characters (ISO 7-bit with a parity track, EIA RS-244).
+// Frame codes: how frames on tape stand for characters (ISO 7-bit with a parity track, EIA RS-244; the
+// 5-track telegraph codes ITA2 and МТК-2, whose shifts tape/five_track.hpp follows).
 #pragma once
 
 #include <array>
@@ -11,7 +12,17 @@
 
 namespace tape {
 
-enum class Code { iso, eia };
+enum class Code {
+    iso,   ///< ISO 7-bit, parity on track 8
+    eia,   ///< EIA RS-244, odd parity on track 5
+    ita2,  ///< 5-track ITA2 (CCITT No. 2): letters and figures registers
+    mtk2,  ///< 5-track МТК-2: ITA2 with a Russian register
+};
+
+class FiveTrackTable;
+
+/// True for the 5-track telegraph codes: a frame is 5 bits, and what it means depends on the last shift.
+constexpr bool is_five_track(Code c) { return c == Code::ita2 || c == Code::mtk2; }
 
 /// The rule for track 8 of an ISO/ASCII tape. NC tapes use even; DEC-era ASCII tapes often mark.
 enum class Parity {
@@ -24,6 +35,7 @@ enum class Parity {
 
 std::string_view code_name(Code c);
 std::string_view parity_name(Parity p);
+/// "iso", "eia", "ita2", "mtk2".
 std::optional<Code> parse_code(std::string_view name);
 std::optional<Parity> parse_parity(std::string_view name);
 
@@ -65,9 +77,15 @@ public:
     static FrameCode iso(Parity parity = Parity::even);
     /// EIA RS-244 from a table (the built-in one unless a corrected copy is given).
     static FrameCode eia(const CodeTable& table = CodeTable::builtin_eia());
+    /// A 5-track code: every frame of tracks 1-5 is a character (blank tape too in МТК-2, where it is the
+    /// Russian shift), frames with tracks 6-8 are not_in_code. character() is the letters register's
+    /// (CR, LF and SP are the same in all): the text comes from the Decoder, which follows the shifts.
+    static FrameCode five_track(Code code);
     static FrameCode make(Code code, Parity parity, const CodeTable* eia_table = nullptr);
 
     Code code() const { return code_; }
+    /// The table of a 5-track code, nullptr for ISO and EIA.
+    const FiveTrackTable* five_track_table() const { return five_track_; }
     Parity parity() const { return parity_; }
 
     FrameKind kind(Frame f) const { return static_cast<FrameKind>(kind_[f]); }
@@ -76,7 +94,8 @@ public:
     /// The frame that carries ISO character c, or nullopt when this code cannot carry it.
     std::optional<Frame> frame_for(unsigned char c) const;
 
-    /// Short label for listings: "%", "LF", "NUL", "DEL", "SP", "parity error", "not EIA".
+    /// Short label for listings: "%", "LF", "NUL", "DEL", "SP", "parity error", "not EIA"; for a 5-track
+    /// frame its meaning in every register ("A/-"): FiveTrackLabeler follows the shifts instead.
     std::string label(Frame f) const;
 
 private:
@@ -85,6 +104,7 @@ private:
     std::array<std::int8_t, 256> kind_{};
     std::array<std::uint8_t, 256> char_{};
     std::array<std::int16_t, 128> frame_{};
+    const FiveTrackTable* five_track_ = nullptr;
 };
 
 /// Name of an ISO control character ("LF", "NUL"...) or the character itself.

@@ -21,8 +21,8 @@ inline constexpr std::string_view bad_frame_marker = "\xEF\xBF\xBD";
 
 struct DecodeOptions {
     Code code = Code::iso;
-    Parity parity = Parity::even;  ///< ISO only; EIA parity is fixed (odd, track 5)
-    Charset charset = Charset::ascii;
+    Parity parity = Parity::even;          ///< ISO only; EIA parity is fixed (odd, track 5), 5-track has none
+    Charset charset = Charset::ascii;      ///< ISO only: МТК-2 has its own Russian register
     bool keep_going = false;               ///< report every bad frame instead of stopping at the first
     bool positions = false;                ///< fill DecodeResult::frame_of
     std::size_t max_diagnostics = 0;       ///< keep at most this many of each kind, count the rest (0: all)
@@ -40,20 +40,29 @@ struct DecodeResult {
 };
 
 /// Decodes a whole tape. Blank frames and DEL are skipped; each frame that fails the parity rule
-/// or is no character of the code gives a Diagnostic (Errc::parity / Errc::not_in_code) and stops
+/// or is no character of the code gives a Diagnostic (Errc::parity / Errc::not_in_code) with its
+/// frame and its line (= block: LFs decoded before it, plus one) and stops
 /// the decoding unless keep_going, in which case the frame is marked in the text.
+/// 5-track codes follow their shifts (the letters register first): CR LF (CR CR LF) reads as one LF,
+/// any other CR as CR; a frame with tracks 6-8 punched, or one with no agreed character in its
+/// register (ITA2's national figures), is Errc::not_in_code. Throws Error(Errc::usage) for a parity
+/// or character set given with a 5-track code.
 DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options);
 
-/// The same, a chunk at a time, in bounded memory: frame numbers, the КОИ-7 shift and the message
-/// limit carry over between chunks, so the result is the same however the tape is cut.
+/// The same, a chunk at a time, in bounded memory: frame numbers, the КОИ-7 shift, the 5-track
+/// register and the message limit carry over between chunks, so the result is the same however the tape
+/// is cut. Call finish() after the last frames.
 class Decoder {
 public:
+    /// Throws Error(Errc::usage) for options that do not go together (a parity with a 5-track code).
     explicit Decoder(const DecodeOptions& options);
 
     /// Decodes the next frames, appending to out.text (and out.frame_of with positions, counted from
     /// the start of the tape) and out.diagnostics. The caller may empty out between calls. Returns
     /// false once decoding has stopped at a bad frame (without keep_going); later calls take nothing.
     bool feed(std::span<const Frame> frames, DecodeResult& out);
+    /// The tape has ended: appends what was held back (a 5-track CR that an LF might have followed).
+    void finish(DecodeResult& out);
 
     std::uint64_t frames_seen() const { return next_index_; }
     /// Bad frames in all, listed or not.
@@ -62,15 +71,20 @@ public:
     std::map<Errc, std::uint64_t> unlisted() const;
 
 private:
-    void note_bad(Frame f, std::uint64_t index, DecodeResult& out);
+    void note_bad(Frame f, std::uint64_t index, std::uint64_t line, DecodeResult& out);
     void finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from);
+    bool feed_five_track(std::span<const Frame> frames, DecodeResult& out);  // decode_five_track.cpp
+    void put_held_cr(DecodeResult& out);
 
     DecodeOptions options_;
     FrameCode code_;
     std::uint64_t next_index_ = 0;
     std::uint64_t parity_seen_ = 0, other_seen_ = 0;
+    std::uint64_t lines_ = 0;  // LFs decoded so far: a bad frame stands in line lines_ + 1
     bool cyrillic_ = false;
     bool stopped_ = false;
+    int register_ = 0;                    // 5-track: the register the last shift chose
+    std::vector<std::uint64_t> held_cr_;  // 5-track: frames of CRs not yet known to end a line
 };
 
 /// The hot loop, for callers that bring their own buffer. Decodes frames into out (room for
@@ -78,7 +92,7 @@ private:
 /// character, blank nor DEL. Returns that frame's index, or frames.size(); *written = bytes stored.
 std::size_t decode_run(const FrameCode& code, std::span<const Frame> frames, char* out, std::size_t* written);
 
-/// The diagnostic for a bad frame at 0-based index.
-Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t index);
+/// The diagnostic for a bad frame at 0-based index, in line (and block) line when it is known (not 0).
+Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t index, std::uint64_t line = 0);
 
 }  // namespace tape

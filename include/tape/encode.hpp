@@ -22,17 +22,22 @@ inline constexpr std::size_t max_blank_frames = 100000;
 
 struct EncodeOptions {
     Code code = Code::iso;
-    Parity parity = Parity::even;  ///< ISO only
-    Charset charset = Charset::ascii;
+    Parity parity = Parity::even;      ///< ISO only
+    Charset charset = Charset::ascii;  ///< ISO only: МТК-2 has its own Russian register
     std::size_t leader = default_leader;
     std::size_t trailer = default_trailer;
-    bool crlf = false;                     ///< CR LF on tape at the end of each block (ISO only)
+    bool crlf = false;                     ///< CR LF on tape at the end of each block (ISO; 5-track always)
     const CodeTable* eia_table = nullptr;  ///< a corrected EIA table; nullptr = built-in
 };
 
-/// Each text line is a block: LF or CR LF in the text, LF (EIA: EOB) on tape.
+/// Each text line is a block: LF or CR LF in the text, LF (EIA: EOB) on tape. A UTF-8 byte-order
+/// mark at the start of the text is skipped.
 /// Throws Error(Errc::bad_text) naming line and column of the first character the code cannot carry,
 /// Error(Errc::usage) for a leader or trailer over max_blank_frames.
+/// 5-track codes (ITA2, МТК-2): a line ends with CR LF on tape, as teleprinters need; a shift frame
+/// stands before the first character that needs a register and wherever the register changes, so a
+/// reader in any state reads the tape right. The codes have no case: lower-case letters are punched as
+/// capitals (and read back so). Error(Errc::usage) for a parity or character set with a 5-track code.
 std::vector<Frame> encode(std::string_view text, const EncodeOptions& options);
 
 /// The same, a chunk at a time, in bounded memory: the text may be cut anywhere (inside a UTF-8
@@ -46,16 +51,22 @@ public:
     void feed(std::string_view text, std::vector<Frame>& out);
     /// Appends what was held back, the closing SI of КОИ-7 text, and the trailer.
     void finish(std::vector<Frame>& out);
+    /// True once a UTF-8 byte-order mark at the start of the text was skipped.
+    bool skipped_byte_order_mark() const { return skipped_bom_; }
 
 private:
     void encode_piece(std::string_view text, std::vector<Frame>& out);
     void to_seven_bit(std::string_view text);
+    void encode_five_track(std::string_view text, std::vector<Frame>& out);  // encode_five_track.cpp
 
     EncodeOptions options_;
     FrameCode code_;
     bool plain_iso_;  ///< ISO, even parity, ASCII, no CR LF on tape: the one-pass path applies
     bool leader_done_ = false;
     bool cyrillic_ = false;
+    int register_ = -1;     ///< 5-track: the register the last shift frame chose; -1 before the first
+    bool at_start_ = true;  ///< nothing of the text taken yet: a byte-order mark may come
+    bool skipped_bom_ = false;
     std::string held_;                           ///< an unfinished character or CR from the end of the last chunk
     Position position_{.line = 1, .column = 1};  ///< of the next byte, for messages
     std::string converted_;

@@ -33,8 +33,8 @@ bool is_data_error(Errc code);
 /// True for the kinds of a bad frame on tape (parity, not in the code).
 bool is_bad_frame(Errc code);
 
-enum class Severity { info, warning, error };
-/// "info", "warning", "error".
+enum class Severity { note, warning, error };
+/// "note", "warning", "error".
 std::string_view severity_name(Severity s);
 
 /// Where something was found, as far as it is known. Frames, lines, columns, blocks and programs are
@@ -56,11 +56,14 @@ struct Position {
 struct Hint {
     enum class Action {
         none,
-        replace_output,      ///< allow the output to be replaced
-        use_charset,         ///< encode with character set `value` ("koi7")
-        use_iso_parity,      ///< read as ISO with parity `value` ("odd", "mark", "space", "none")
-        read_as_image,       ///< read the input as a tape image, not as a text program
-        give_source_format,  ///< say which format the program is written in (for implied points)
+        replace_output,       ///< allow the output to be replaced
+        use_charset,          ///< encode with character set `value` ("koi7")
+        use_iso_parity,       ///< read as ISO with parity `value` ("odd", "mark", "space", "none")
+        read_as_image,        ///< read the input as a tape image, not as a text program
+        give_source_format,   ///< say which format the program is written in (for implied points)
+        use_code,             ///< read or punch in code `value` ("iso", "eia", "mtk2")
+        use_five_track_code,  ///< read as a 5-track tape (ITA2, МТК-2)
+        encode_text,          ///< the input is a text program: encode it rather than decode it
     };
     Action action = Action::none;
     std::string_view value{};

@@ -1,4 +1,4 @@
-// Tape image formats: each is a module in one table (raw, holes).
+// Tape image formats: each is a module in one table (raw, holes, hex, hex8, hex5).
 #pragma once
 
 #include <cstdint>
@@ -56,6 +56,9 @@ struct ImageFormat {
     int (*match)(std::span<const std::uint8_t> prefix);
     std::unique_ptr<ImageReader> (*make_reader)();                                  ///< null: cannot read
     std::unique_ptr<ImageWriter> (*make_writer)(const ImageWriteOptions& options);  ///< null: cannot write
+    /// The tape the format holds: 8 tracks (any byte), or 5 (frames below 0x20, whose code, ITA2 or
+    /// МТК-2, only the user can say).
+    int tracks = 8;
 
     bool can_read() const { return make_reader != nullptr; }
     bool can_write() const { return make_writer != nullptr; }

@@ -31,9 +31,9 @@ public:
     /// Throws Error(Errc::bad_image) where the file does not follow its format.
     std::span<const Frame> next();
 
-    /// Decides the code as detect_code() does on the whole tape, from the frames at its start (read
-    /// ahead and given again by read()). At most a few MiB are held, however long the leader.
-    CodeDetection detect();
+    /// The verdict of detect_code() on the tape, from a read-ahead of its first 256 Ki frames (the whole
+    /// of most tapes), given again by next(). That many frames are held, 4 MiB past an endless leader.
+    CodeDetection detect(const CodeTable* eia_table = nullptr);
 
 private:
     bool fill();

@@ -51,12 +51,14 @@ public:
     std::span<const Frame> next_frames();
 
     /// How an image is decoded: decided on first use, detecting the code when asked (the frames read
-    /// for it are given again). Throws Error(Errc::unknown_code) when the tape fits neither code.
+    /// for it are given again). Throws Error(Errc::unknown_code), with the verdict, when the tape is
+    /// neither ISO nor EIA (another parity, 5-track, binary, a text file).
     const DecodeOptions& decode_options();
     /// How the code was detected, once it was.
     const std::optional<CodeDetection>& detection() const { return detection_; }
-    /// Detects the code of an image from the frames at its start (read ahead and given again), even
-    /// when the options did not ask for it; never throws for a tape that fits no code.
+    /// The verdict on an image (detect_code) from a read-ahead of its start, the whole of most tapes
+    /// (given again by next_frames), even when the options did not ask for it; never throws for a
+    /// tape that fits no code.
     const CodeDetection& detect();
 
     /// The next piece of program text, appended to out: an image decoded (frame_of counted from the
@@ -64,6 +66,8 @@ public:
     /// is. False at the end, or once decoding stopped at a bad frame (out.complete is then false).
     /// A text program that is not clean UTF-8 throws Error(Errc::bad_text) at the byte.
     bool next_text(DecodeResult& out);
+    /// What was noticed on the way that is not wrong (a skipped byte-order mark), for the caller to say.
+    const std::vector<Diagnostic>& notes() const { return notes_; }
     /// The decoder of an image, for the counts of bad frames; nullptr before next_text or for text.
     const Decoder* decoder() const { return decoder_.get(); }
 
@@ -79,6 +83,7 @@ private:
     std::optional<DecodeOptions> decode_;
     std::optional<CodeDetection> detection_;
     std::unique_ptr<Decoder> decoder_;
+    std::vector<Diagnostic> notes_;
     bool ended_ = false;
 };
 

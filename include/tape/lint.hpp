@@ -18,10 +18,8 @@ struct LintOptions {
     std::size_t max_per_rule = 0;      ///< keep at most this many findings of a rule, count the rest (0: all)
 };
 
-/// Every finding: the loader's syntax findings and the rules below, in tape order.
-/// Rules: no-program, program-start, program-end, after-end (info), repeated-dimension, g-group,
-/// word-order (warning), sign-not-allowed, block-number-order (warning), and with a spec
-/// spec-address, spec-sign, spec-point, spec-digits, spec-main, spec-skip.
+/// Every finding: the loader's syntax findings and the rules of tape/rules.hpp that apply to the
+/// tape's dialect, in tape order.
 std::vector<Finding> lint(const LoadedTape& tape, const LintOptions& options = {});
 
 /// The same checks fed by the loader as it streams (ProgramLoader, load_each): the loader's findings
@@ -31,6 +29,7 @@ class LintVisitor : public ProgramVisitor {
 public:
     explicit LintVisitor(const LintOptions& options = {});
     ~LintVisitor() override;
+    void dialect(const DialectChoice& choice) override;
     void program_start(const Program& header) override;
     void block(const Block& block) override;
     void after_end(std::string_view text, const Location& where) override;
@@ -41,16 +40,21 @@ public:
     /// Findings beyond max_per_rule, by rule; each severity's total, listed or not.
     const std::map<std::string_view, std::uint64_t>& unlisted() const { return unlisted_; }
     std::uint64_t count(Severity s) const { return counts_[static_cast<int>(s)]; }
+    /// Every finding made, listed or not, by rule.
+    const std::map<std::string_view, std::uint64_t>& by_rule() const { return by_rule_; }
+    Dialect dialect() const { return dialect_; }
 
 private:
     void close_program();
     void keep(Finding f);
-    void check_block(const Block& b, bool points);
+    void motion_checks(const Block& b);
+    void flow_checks(const Block& b);
 
     LintOptions options_;
     std::function<void(Finding)> sink_;  // keep(), for the checks shared with lint()
     std::vector<Finding> out_;
-    std::map<std::string_view, std::uint64_t> kept_, unlisted_;
+    std::map<std::string_view, std::uint64_t> kept_, unlisted_, by_rule_;
+    Dialect dialect_ = Dialect::gost;
     std::uint64_t counts_[3] = {};
     bool any_program_ = false, in_program_ = false, program_points_ = false;
     Location program_start_{};
@@ -58,6 +62,22 @@ private:
     std::optional<long long> last_number_{};
     std::optional<Location> after_end_at_{};  // the first text after the end that is not blank
     std::vector<Block> held_;                 // with a controller format: the program's blocks
+    int motion_ = -1;                         // the G code of group a in effect (0-3), or -1
+    bool feed_given_ = false, no_feed_said_ = false;
+    struct Open {  // a loop or o-word block waiting for its end
+        std::string label;
+        std::string keyword;
+        Location where;
+        std::uint64_t block;
+    };
+    std::vector<Open> open_;
+    std::vector<long long> numbers_;  // Fanuc: the program's block numbers, for its GOTOs
+    struct Goto {
+        long long target;
+        Location where;
+        std::uint64_t block;
+    };
+    std::vector<Goto> gotos_;
 };
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).

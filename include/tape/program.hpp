@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "tape/dialect.hpp"
 #include "tape/error.hpp"
 
 namespace tape {
@@ -27,10 +28,12 @@ struct Location {
 
 /// One word: address letter, optional sign, digits, optional explicit decimal point (§3.1).
 struct Word {
-    char address = 0;  ///< 'A'..'Z', or ':' for the number of a main block
-    std::string text;  ///< as written, spaces removed: "X+12.5", "S64"
-    char sign = 0;     ///< '+', '-' or 0
-    int point = -1;    ///< explicit point: digits before it (X.03 -> 0, X1030. -> 4); -1 none
+    char address = 0;    ///< 'A'..'Z' (lowercase read as capitals where the dialect allows), ':' for a main block
+    std::string text;    ///< as written, spaces removed: "X+12.5", "S64", "x1.5", "Z-[#1+2.]"
+    char sign = 0;       ///< '+', '-' or 0
+    int point = -1;      ///< explicit point: digits before it (X.03 -> 0, X1030. -> 4); -1 none
+    bool macro = false;  ///< the value is a macro variable or expression ("X#1", "Z[#2*2]")
+    bool known = true;   ///< false: the dialect does not know it; kept as written and reported once
     Location where;
 
     bool has_point() const { return point >= 0; }
@@ -41,30 +44,50 @@ struct Word {
 };
 
 struct Comment {
-    std::string text;  ///< between the brackets, as written
-    Location where;    ///< the '('
+    std::string text;        ///< between the brackets (or after ';'), as written
+    Location where;          ///< the '(' or ';'
+    bool semicolon = false;  ///< a ';' comment to the end of the line (LinuxCNC)
+};
+
+/// A macro statement: Fanuc Custom Macro B or a LinuxCNC o-word, kept as written.
+struct Statement {
+    enum class Kind { assignment, if_goto, if_then, go_to, while_do, loop_do, loop_end, output, o_word };
+    Kind kind = Kind::assignment;
+    std::string text;                   ///< as written, blanks kept: "IF [#1 EQ 2] GOTO 10"
+    std::optional<long long> number{};  ///< GOTO's target block, DO/END's loop number
+    std::string label;                  ///< o-word: its number or <name>, lowercase ("100", "<probe>")
+    std::string keyword;                ///< o-word: sub, endsub, call, if, else, endif, while, ...
+    Location where;
 };
 
 struct Block {
     Location where;                ///< the first character of the block
     std::uint64_t ordinal = 0;     ///< 1-based count of blocks on the whole tape
     bool skip = false;             ///< '/' block skip (§2.7)
+    int skip_level = 0;            ///< Fanuc "/1".."/9"; 0 for a plain '/'
     bool main = false;             ///< ':' main block (§2.6)
+    bool ends = false;             ///< ends the program in the loader's dialect (M02, M30; Fanuc also M99)
     std::optional<Word> number{};  ///< N… or :… (address 'N' or ':')
-    std::vector<Word> words;       ///< the other words, in order
+    std::vector<Word> words;       ///< the other words, in order, flagged ones (Word::known) included
     std::vector<Comment> comments;
+    std::vector<Statement> statements;
+    std::string source;  ///< the block as written, without its end of block
 
     /// "N001", ":005" or "".
     std::string number_text() const { return number ? number->text : std::string(); }
-    /// True when the block holds M02 or M30 (end of program / end of information).
-    bool ends_program() const;
+    /// True when the block ends the program: M02 or M30 (and M99 for Fanuc), as the loader decided.
+    bool ends_program() const { return ends; }
     /// The block written out: "/N006 M00 (TEXT)", words separated by one space.
     std::string text() const;
 };
 
+/// True when the block holds one of the M codes in ends ("2 30", "2 30 99").
+bool holds_end_code(const Block& block, std::string_view ends);
+
 struct Program {
-    Location start;                       ///< the '%' that starts it
-    std::optional<std::string> number{};  ///< between '%' and LF (§1.6)
+    Location start;                       ///< the '%' that starts it, or its first block when none does
+    std::optional<std::string> number{};  ///< between '%' and LF (§1.6), or Fanuc's "O1234"
+    bool percent = true;                  ///< started by a '%' (LinuxCNC and Fanuc programs need none)
     std::vector<Block> blocks;
     bool ended = false;     ///< a block with M02/M30 closes it (§1.9)
     std::string after_end;  ///< text after the end, up to the next '%': not part of it
@@ -73,14 +96,16 @@ struct Program {
 
 /// A finding of the loader or of lint: a Diagnostic with a rule id (Errc::bad_program).
 using Finding = Diagnostic;
-/// The finding of rule at where, in block (Block::ordinal; 0 when not in a block).
-Finding program_finding(std::string_view rule, Severity severity, const Location& where, std::uint64_t block,
-                        std::string message);
+/// The finding of rule (an id of tape/rules.hpp, which gives its severity) at where, in block
+/// (Block::ordinal; 0 when not in a block).
+Finding program_finding(std::string_view rule, const Location& where, std::uint64_t block, std::string message);
 
 /// The contents of a tape: the label section, the programs, and what the loader found wrong.
 struct LoadedTape {
-    std::string label;            ///< before the first '%' (§1.8): kept and shown, never executed
-    bool physical_start = false;  ///< "%%": the physical start of the tape (§1.8)
+    Dialect dialect = Dialect::gost;       ///< the dialect it was read in
+    std::string label;                     ///< before the first '%' (§1.8): kept and shown, never executed
+    bool physical_start = false;           ///< "%%": the physical start of the tape (§1.8)
+    std::optional<Location> record_end{};  ///< the '%' after the last program: end of record, rewind stop
     std::vector<Program> programs;
     std::vector<Finding> findings;        ///< syntax findings, in text order
     std::string text;                     ///< the characters the tape was loaded from
@@ -105,6 +130,11 @@ public:
     virtual void after_end(std::string_view text, const Location& where) { (void)text, (void)where; }
     /// The '%%' physical start mark (§1.8).
     virtual void physical_start() {}
+    /// A '%' after the last program, followed by nothing: the end of the record, the rewind stop.
+    /// closes_program: it ends the program before it (LinuxCNC's closing '%').
+    virtual void record_end(const Location& where, bool closes_program) { (void)where, (void)closes_program; }
+    /// The dialect the text is read in, before anything else; with Dialect::automatic, why it was chosen.
+    virtual void dialect(const DialectChoice& choice) { (void)choice; }
     virtual void finding(const Finding& finding) { (void)finding; }
     /// The text has ended; where is just past its last character.
     virtual void end(const Location& where) { (void)where; }
@@ -112,9 +142,14 @@ public:
 
 /// The loader fed a piece of text at a time, in bounded memory (a line is held until its LF comes):
 /// the same findings and blocks as load() however the text is cut.
+/// How text is read into programs.
+struct LoadOptions {
+    Dialect dialect = Dialect::gost;  ///< automatic: chosen from the first 64 KiB (guess_dialect)
+};
+
 class ProgramLoader {
 public:
-    explicit ProgramLoader(ProgramVisitor& visitor);
+    explicit ProgramLoader(ProgramVisitor& visitor, const LoadOptions& options = {});
     ~ProgramLoader();
     ProgramLoader(const ProgramLoader&) = delete;
     ProgramLoader& operator=(const ProgramLoader&) = delete;
@@ -130,12 +165,12 @@ private:
 
 /// Streams text through the loader: the same parse as load(), block by block.
 /// frame_of as for load(); text and frame_of must outlive the call only.
-void load_each(std::string_view text, std::span<const std::uint64_t> frame_of, ProgramVisitor& visitor);
+void load_each(std::string_view text, std::span<const std::uint64_t> frame_of, ProgramVisitor& visitor,
+               const LoadOptions& options = {});
 
 /// Rebuilds programs from decoded characters. frame_of (0-based frame of each byte, as decode() gives
 /// with positions) may be empty for a plain text program. Never throws on bad input: syntax problems
-/// become findings (rule ids unexpected-character, no-digits, two-points, skip-position,
-/// main-position, percent-in-block, comment-forbidden-char, unclosed-comment, program-start).
-LoadedTape load(std::string text, std::vector<std::uint64_t> frame_of = {});
+/// become findings (the loader's rules in tape/rules.hpp).
+LoadedTape load(std::string text, std::vector<std::uint64_t> frame_of = {}, const LoadOptions& options = {});
 
 }  // namespace tape

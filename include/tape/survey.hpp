@@ -2,13 +2,30 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "tape/code.hpp"
-#include "tape/detect.hpp"
 #include "tape/frame.hpp"
 
 namespace tape {
+
+/// How many punched frames fit each parity convention.
+struct ParityCounts {
+    std::uint64_t frames = 0;  ///< punched frames (blank tape not counted)
+    std::uint64_t even = 0;    ///< an even number of holes
+    std::uint64_t odd = 0;
+    std::uint64_t mark = 0;   ///< track 8 punched
+    std::uint64_t space = 0;  ///< track 8 not punched
+
+    /// The convention most frames fit (even, odd, mark, space in that order on a tie), or
+    /// nullopt when there are no punched frames or fewer than 90% of them fit any one ("mixed").
+    std::optional<Parity> dominant() const;
+    /// Frames that do not fit p.
+    std::uint64_t misfits(Parity p) const;
+};
+
+ParityCounts count_parity(std::span<const Frame> frames);
 
 struct TapeSurvey {
     std::uint64_t frames = 0;          ///< all frames
@@ -29,6 +46,8 @@ class Surveyor {
 public:
     explicit Surveyor(const FrameCode& code) : code_(code) {}
     void feed(std::span<const Frame> frames);
+    /// What a frame is in the code surveyed by.
+    FrameKind kind(Frame f) const { return code_.kind(f); }
     /// The counts so far, the blank frames at the end taken as trailer.
     TapeSurvey result() const;
 

@@ -12,6 +12,11 @@
 
 namespace tape {
 
+/// The UTF-8 byte-order mark (U+FEFF) some editors put at the start of a text file.
+inline constexpr std::string_view utf8_bom = "\xEF\xBB\xBF";
+/// The note for a byte-order mark skipped at the start of a text program (line 1).
+Diagnostic byte_order_mark_note();
+
 /// True when bytes are well-formed UTF-8 with no control characters but HT, LF, CR, SO and SI:
 /// what a text program is and a raw tape image (blank leader, parity on track 8) is not.
 bool is_program_text(std::span<const std::uint8_t> bytes);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tape/error.hpp"
+#include "tape/five_track.hpp"
 
 namespace tape {
 namespace detail {
@@ -65,7 +66,19 @@ constexpr std::string_view ascii_control_names[32] = {
 
 }  // namespace
 
-std::string_view code_name(Code c) { return c == Code::iso ? "iso" : "eia"; }
+std::string_view code_name(Code c) {
+    switch (c) {
+        case Code::iso:
+            return "iso";
+        case Code::eia:
+            return "eia";
+        case Code::ita2:
+            return "ita2";
+        case Code::mtk2:
+            return "mtk2";
+    }
+    return "?";
+}
 
 std::string_view parity_name(Parity p) {
     switch (p) {
@@ -84,8 +97,8 @@ std::string_view parity_name(Parity p) {
 }
 
 std::optional<Code> parse_code(std::string_view name) {
-    if (name == "iso") return Code::iso;
-    if (name == "eia") return Code::eia;
+    for (Code c : {Code::iso, Code::eia, Code::ita2, Code::mtk2})
+        if (code_name(c) == name) return c;
     return std::nullopt;
 }
 
@@ -237,7 +250,27 @@ FrameCode FrameCode::eia(const CodeTable& table) {
     return fc;
 }
 
+FrameCode FrameCode::five_track(Code code) {
+    FrameCode fc;
+    fc.code_ = code;
+    fc.parity_ = Parity::none;
+    fc.five_track_ = code == Code::mtk2 ? &FiveTrackTable::builtin_mtk2() : &FiveTrackTable::builtin_ita2();
+    for (int f = 0; f < 256; ++f) {
+        FrameKind k = FrameKind::not_in_code;
+        if (f < five_track_frames) {
+            const auto& m = fc.five_track_->meaning(0, static_cast<Frame>(f));
+            k = m.kind == FiveTrackTable::Kind::blank ? FrameKind::blank : FrameKind::character;
+            if (m.kind == FiveTrackTable::Kind::character && m.text.size() == 1)
+                fc.char_[f] = static_cast<std::uint8_t>(m.text[0]);
+        }
+        fc.kind_[f] = static_cast<std::int8_t>(k);
+    }
+    fc.frame_.fill(none);  // text goes through the Encoder, which picks the shifts
+    return fc;
+}
+
 FrameCode FrameCode::make(Code code, Parity parity, const CodeTable* eia_table) {
+    if (is_five_track(code)) return five_track(code);
     if (code == Code::iso) return iso(parity);
     return eia(eia_table ? *eia_table : CodeTable::builtin_eia());
 }
@@ -248,6 +281,13 @@ std::optional<Frame> FrameCode::frame_for(unsigned char c) const {
 }
 
 std::string FrameCode::label(Frame f) const {
+    if (five_track_) {
+        if (f >= five_track_frames) return "not 5-track";
+        std::string all = five_track_->label(0, f);
+        for (int r = 1; r < five_track_->registers(); ++r)
+            if (auto l = five_track_->label(r, f); l != five_track_->label(0, f)) all += "/" + l;
+        return all;
+    }
     switch (kind(f)) {
         case FrameKind::character:
             return char_label(character(f));

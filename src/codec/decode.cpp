@@ -108,12 +108,15 @@ constexpr char bad_sentinel = '\x80';
 
 }  // namespace
 
-Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t index) {
+Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t index, std::uint64_t line) {
     bool parity = code.kind(f) == FrameKind::parity_error;
     std::string what =
         parity ? "parity error" : (code.code() == Code::eia ? "not an EIA character" : "not a character");
-    return Diagnostic{parity ? Errc::parity : Errc::not_in_code, Position{.frame = index + 1},
-                      what + ", holes " + holes_picture(f)};
+    if (code.five_track_table()) what = "not a 5-track frame (tracks 6-8 punched)";
+    // Each LF ends a line and a block, so the line is the block too.
+    Position where{.frame = index + 1};
+    if (line) where.line = where.block = line;
+    return Diagnostic{parity ? Errc::parity : Errc::not_in_code, where, what + ", holes " + holes_picture(f)};
 }
 
 std::size_t decode_run(const FrameCode& code, std::span<const Frame> frames, char* out, std::size_t* written) {
@@ -123,7 +126,12 @@ std::size_t decode_run(const FrameCode& code, std::span<const Frame> frames, cha
 }
 
 Decoder::Decoder(const DecodeOptions& options)
-    : options_(options), code_(FrameCode::make(options.code, options.parity, options.eia_table)) {}
+    : options_(options), code_(FrameCode::make(options.code, options.parity, options.eia_table)) {
+    if (is_five_track(options.code) && options.parity != Parity::even)
+        throw Error(Errc::usage, "5-track codes carry no parity");
+    if (is_five_track(options.code) && options.charset != Charset::ascii)
+        throw Error(Errc::usage, "КОИ-7 is a character set of the 7-bit code; МТК-2 has its own Russian register");
+}
 
 std::map<Errc, std::uint64_t> Decoder::unlisted() const {
     std::map<Errc, std::uint64_t> m;
@@ -136,11 +144,11 @@ std::map<Errc, std::uint64_t> Decoder::unlisted() const {
 
 // A tape of noise has a bad frame in every other frame: past the limit they are only counted, so that
 // messages cannot fill memory.
-void Decoder::note_bad(Frame f, std::uint64_t index, DecodeResult& out) {
+void Decoder::note_bad(Frame f, std::uint64_t index, std::uint64_t line, DecodeResult& out) {
     std::uint64_t& seen = code_.kind(f) == FrameKind::parity_error ? parity_seen_ : other_seen_;
     ++seen;
     if (options_.max_diagnostics == 0 || seen <= options_.max_diagnostics)
-        out.diagnostics.push_back(bad_frame_diagnostic(code_, f, index));
+        out.diagnostics.push_back(bad_frame_diagnostic(code_, f, index, line));
 }
 
 // Only КОИ-7 text and text with a bad frame marked need this second pass; plain text is final as decoded.
@@ -176,11 +184,19 @@ void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t posit
 
 bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     if (stopped_) return false;
+    if (code_.five_track_table()) return feed_five_track(frames, out);  // once a chunk: ISO and EIA pay nothing
     std::size_t from = out.text.size(), positions_from = out.frame_of.size();
     std::size_t w = from;
     bool marked = false;  // a bad_sentinel stored: known here, so no search of the text for one
     out.text.resize(from + frames.size());
     std::uint64_t base = next_index_;
+    // The LFs decoded are counted once a chunk (and up to a bad frame, for its line), not frame by frame.
+    std::size_t counted = from;
+    auto line_at = [&](std::size_t end) {
+        lines_ += swar::count_newlines(out.text.data() + counted, end - counted);
+        counted = end;
+        return lines_ + 1;
+    };
     if (options_.positions) {
         out.frame_of.resize(positions_from + frames.size());
         std::size_t p = positions_from;
@@ -189,7 +205,7 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
             FrameKind k = code_.kind(f);
             if (k == FrameKind::blank || k == FrameKind::rubout) continue;
             if (k != FrameKind::character) {
-                note_bad(f, base + i, out);
+                note_bad(f, base + i, line_at(w), out);
                 if (!options_.keep_going) {
                     stopped_ = true;
                     break;
@@ -207,7 +223,7 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
             std::size_t stop = i + decode_run(code_, frames.subspan(i), out.text.data() + w, &got);
             w += got;
             if (stop == frames.size()) break;
-            note_bad(frames[stop], base + stop, out);
+            note_bad(frames[stop], base + stop, line_at(w), out);
             if (!options_.keep_going) {
                 stopped_ = true;
                 break;
@@ -217,6 +233,7 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
             i = stop + 1;
         }
     }
+    line_at(w);
     out.text.resize(w);
     next_index_ += frames.size();
     if (stopped_) out.complete = false;
@@ -228,6 +245,7 @@ DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options)
     Decoder decoder(options);
     DecodeResult r;
     decoder.feed(frames, r);
+    decoder.finish(r);
     r.unlisted = decoder.unlisted();
     return r;
 }

@@ -1,89 +1,84 @@
-// Code and parity detection.
+// Gathering the evidence for a verdict on a tape: every reading tried at once over the same frames.
 #include "tape/detect.hpp"
 
 namespace tape {
 namespace {
 
-constexpr Frame iso_lf = 0x0A, eia_eob = 0x80, iso_percent = 0xA5, eia_rewind_stop = 0x0B;
-constexpr std::size_t look_limit = 4096;  // significant frames looked at when no end of block comes
+constexpr std::array<Reading, 5> readings = {Reading{Code::iso, Parity::even}, Reading{Code::eia, Parity::odd},
+                                             Reading{Code::iso, Parity::mark}, Reading{Code::iso, Parity::space},
+                                             Reading{Code::iso, Parity::odd}};
 
-bool significant(Frame f) { return f != 0x00 && f != 0xFF && f != 0x7F; }
-
-std::string count_text(std::uint64_t n, const char* what) { return std::to_string(n) + " " + what; }
+// Control characters that turn up on tapes of text: blank and rubout, BS, HT, LF, FF, CR, the КОИ-7
+// shifts SO/SI and the Teletype's reader and punch controls DC1-DC4. Any other (BEL, ESC...) in
+// quantity means the frames are not text at all.
+bool text_control(char c) {
+    switch (c) {
+        case 0x00:
+        case 0x08:
+        case 0x09:
+        case 0x0A:
+        case 0x0C:
+        case 0x0D:
+        case 0x0E:
+        case 0x0F:
+        case 0x11:
+        case 0x12:
+        case 0x13:
+        case 0x14:
+        case 0x7F:
+            return true;
+        default:
+            return static_cast<unsigned char>(c) >= 0x20;
+    }
+}
 
 }  // namespace
 
-CodeDetection detect_code(std::span<const Frame> frames) {
-    std::uint64_t seen = 0, even = 0;
-    std::optional<Frame> end_of_block;
-    bool iso_start = false, eia_start = false;
+Detector::Detector(const CodeTable* eia_table, bool bytes_are_frames)
+    : bytes_are_frames_(bytes_are_frames), text_ok_(bytes_are_frames) {
+    for (std::size_t i = 0; i < readings.size(); ++i) {
+        evidence_.fits[i].reading = readings[i];
+        surveyors_.emplace_back(FrameCode::make(readings[i].code, readings[i].parity, eia_table));
+    }
+}
+
+void Detector::feed(std::span<const Frame> frames) {
+    TapeEvidence& e = evidence_;
+    e.frames += frames.size();
+    for (auto& s : surveyors_) s.feed(frames);
+    ParityCounts p = count_parity(frames);
+    e.parity.frames += p.frames;
+    e.parity.even += p.even;
+    e.parity.odd += p.odd;
+    e.parity.mark += p.mark;
+    e.parity.space += p.space;
     for (Frame f : frames) {
-        if (!significant(f)) continue;
-        ++seen;
-        if (hole_count(f) % 2 == 0) ++even;
-        iso_start |= f == iso_percent;
-        eia_start |= f == eia_rewind_stop;
-        if (f == iso_lf || f == eia_eob) {
-            end_of_block = f;
-            break;
-        }
-        if (seen == look_limit) break;
+        run_0x80_ = f == 0x80 ? run_0x80_ + 1 : 0;
+        e.longest_0x80_run = std::max(e.longest_0x80_run, run_0x80_);
+        if (f == blank_frame) continue;
+        ++e.punched;
+        e.significant += f != 0xFF && f != 0x7F;
+        e.five_track += f < 0x20;
+        e.iso_lf += f == 0x0A;
+        e.eia_eob += f == 0x80;
+        // ISO readings only: the 7 bits are the character whatever the parity convention.
+        if (!text_control(static_cast<char>(f & 0x7F)))
+            for (std::size_t i = 0; i < readings.size(); ++i)
+                if (readings[i].code == Code::iso && surveyors_[i].kind(f) == FrameKind::character) ++controls_[i];
     }
-    if (seen == 0) return {Code::iso, "no punched frames: blank tape, read as ISO"};
-    std::uint64_t odd = seen - even;
-    std::string where = end_of_block ? "before the first end of block" : "at the start of the tape";
-    std::string counts =
-        count_text(even, "even") + ", " + count_text(odd, "odd") + " of " + count_text(seen, "frames") + " " + where;
-    bool mostly_even = even * 10 >= seen * 9, mostly_odd = odd * 10 >= seen * 9;
-    if (end_of_block == iso_lf && mostly_even) return {Code::iso, "ISO: end of block LF, " + counts};
-    if (end_of_block == eia_eob && mostly_odd) return {Code::eia, "EIA: end of block on track 8, " + counts};
-    if (!end_of_block && mostly_even && !eia_start) return {Code::iso, "ISO: " + counts};
-    if (!end_of_block && mostly_odd && !iso_start) return {Code::eia, "EIA: " + counts};
-    auto parity = count_parity(frames.first(std::min(frames.size(), look_limit * 4))).dominant();
-    if (parity == Parity::mark || parity == Parity::space || parity == Parity::odd)
-        return {std::nullopt,
-                "neither ISO nor EIA: the frames look like an ASCII tape with " + std::string(parity_name(*parity)) +
-                    " parity on track 8; " + counts,
-                Hint{Hint::Action::use_iso_parity, parity_name(*parity)}};
-    return {std::nullopt, "neither ISO nor EIA: " + counts + (end_of_block ? "" : ", and no end of block")};
+    if (text_ok_ && !frames.empty()) text_ok_ = !text_checker_.check(frames);
 }
 
-ParityCounts count_parity(std::span<const Frame> frames) {
-    ParityCounts c;
-    for (Frame f : frames) {
-        if (f == 0) continue;
-        ++c.frames;
-        if (hole_count(f) % 2 == 0) ++c.even;
-        if (f & 0x80) ++c.mark;
-    }
-    c.odd = c.frames - c.even;
-    c.space = c.frames - c.mark;
-    return c;
+TapeSurvey Detector::survey(Reading r) const {
+    for (std::size_t i = 0; i < readings.size(); ++i)
+        if (readings[i] == r) return surveyors_[i].result();
+    return {};
 }
 
-std::uint64_t ParityCounts::misfits(Parity p) const {
-    switch (p) {
-        case Parity::even:
-            return frames - even;
-        case Parity::odd:
-            return frames - odd;
-        case Parity::mark:
-            return frames - mark;
-        case Parity::space:
-            return frames - space;
-        case Parity::none:
-            return 0;
-    }
-    return frames;
-}
-
-std::optional<Parity> ParityCounts::dominant() const {
-    if (frames == 0) return std::nullopt;
-    Parity best = Parity::even;
-    for (Parity p : {Parity::odd, Parity::mark, Parity::space})
-        if (misfits(p) < misfits(best)) best = p;
-    if (misfits(best) * 10 > frames) return std::nullopt;
-    return best;
+CodeDetection detect_code(std::span<const Frame> frames, const CodeTable* eia_table) {
+    Detector d(eia_table);
+    d.feed(frames);
+    return d.result();
 }
 
 }  // namespace tape

@@ -248,6 +248,10 @@ Encoder::Encoder(const EncodeOptions& options)
     if (options.leader > max_blank_frames || options.trailer > max_blank_frames)
         throw Error(Errc::usage,
                     "a leader or trailer is at most " + std::to_string(max_blank_frames) + " blank frames");
+    if (is_five_track(options.code) && options.parity != Parity::even)
+        throw Error(Errc::usage, "5-track codes carry no parity");
+    if (is_five_track(options.code) && options.charset != Charset::ascii)
+        throw Error(Errc::usage, "КОИ-7 is a character set of the 7-bit code; МТК-2 has its own Russian register");
 }
 
 // Text -> the 7-bit character stream: CR LF becomes LF (CR LF again with crlf), КОИ-7 letters get
@@ -297,6 +301,10 @@ void Encoder::encode_piece(std::string_view text, std::vector<Frame>& out) {
         out.insert(out.end(), options_.leader, blank_frame);
         leader_done_ = true;
     }
+    if (code_.five_track_table()) {
+        encode_five_track(text, out);  // once a piece: ISO and EIA pay nothing
+        return;
+    }
     if (plain_iso_) {
         // The plain start in one pass; the rest (an error, or text from the first NUL, DEL or non-ASCII
         // byte on) goes the general way below, from the position reached.
@@ -335,6 +343,16 @@ void Encoder::feed(std::string_view text, std::vector<Frame>& out) {
         joined = held_ + std::string(text);
         held_.clear();
         text = joined;
+    }
+    // A byte-order mark at the very start is an editor's, not the program's: skipped (the caller says so).
+    if (at_start_ && !text.empty()) {
+        if (text.starts_with(utf8_bom)) {
+            text.remove_prefix(utf8_bom.size());
+            skipped_bom_ = true;
+            at_start_ = false;
+        } else if (text.size() >= utf8_bom.size() || !utf8_bom.starts_with(text)) {
+            at_start_ = false;  // else the start of one, cut by the chunk's end: held below, looked at again
+        }
     }
     std::size_t keep = unfinished_tail(text);
     encode_piece(text.substr(0, text.size() - keep), out);

@@ -2,6 +2,44 @@
 
 namespace tape {
 
+ParityCounts count_parity(std::span<const Frame> frames) {
+    ParityCounts c;
+    for (Frame f : frames) {
+        if (f == 0) continue;
+        ++c.frames;
+        if (hole_count(f) % 2 == 0) ++c.even;
+        if (f & 0x80) ++c.mark;
+    }
+    c.odd = c.frames - c.even;
+    c.space = c.frames - c.mark;
+    return c;
+}
+
+std::uint64_t ParityCounts::misfits(Parity p) const {
+    switch (p) {
+        case Parity::even:
+            return frames - even;
+        case Parity::odd:
+            return frames - odd;
+        case Parity::mark:
+            return frames - mark;
+        case Parity::space:
+            return frames - space;
+        case Parity::none:
+            return 0;
+    }
+    return frames;
+}
+
+std::optional<Parity> ParityCounts::dominant() const {
+    if (frames == 0) return std::nullopt;
+    Parity best = Parity::even;
+    for (Parity p : {Parity::odd, Parity::mark, Parity::space})
+        if (misfits(p) < misfits(best)) best = p;
+    if (misfits(best) * 10 > frames) return std::nullopt;
+    return best;
+}
+
 void Surveyor::feed(std::span<const Frame> frames) {
     s_.frames += frames.size();
     ParityCounts p = count_parity(frames);

@@ -121,4 +121,20 @@ inline TextScan scan_text(const char* p, std::size_t n) {
     return s;
 }
 
+/// How many LF are among the n bytes at p: the line count of decoded text, one compare and one add
+/// per sixteen bytes.
+inline std::size_t count_newlines(const char* p, std::size_t n) {
+    std::size_t count = 0, i = 0;
+    while (i + 16 <= n) {
+        bytes16 hits{};  // per byte lane: LFs seen, at most 255 before they are added up
+        std::size_t end = n - i >= 255 * 16 ? i + 255 * 16 : n - (n - i) % 16;
+        for (; i < end; i += 16) hits -= reinterpret_cast<bytes16>(load16(p + i) == '\n');
+        words2 w = reinterpret_cast<words2>(hits);
+        w = (w & 0x00FF00FF00FF00FFULL) + ((w >> 8) & 0x00FF00FF00FF00FFULL);  // four 16-bit sums a lane
+        count += static_cast<std::size_t>(((w[0] + w[1]) * 0x0001000100010001ULL) >> 48);
+    }
+    for (; i < n; ++i) count += p[i] == '\n';
+    return count;
+}
+
 }  // namespace tape::swar

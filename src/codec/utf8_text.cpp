@@ -59,6 +59,13 @@ std::optional<TextFault> find_text_fault(std::span<const std::uint8_t> bytes) {
     return std::nullopt;
 }
 
+Diagnostic byte_order_mark_note() {
+    return Diagnostic{.code = Errc::bad_text,
+                      .where = Position{.line = 1, .byte = 0},
+                      .message = "skipped the UTF-8 byte-order mark (U+FEFF)",
+                      .severity = Severity::note};
+}
+
 bool is_program_text(std::span<const std::uint8_t> bytes) { return !find_text_fault(bytes); }
 
 std::optional<TextFault> TextChecker::check(std::span<const std::uint8_t> piece) {

@@ -34,8 +34,8 @@ bool is_bad_frame(Errc code) { return code == Errc::parity || code == Errc::not_
 
 std::string_view severity_name(Severity s) {
     switch (s) {
-        case Severity::info:
-            return "info";
+        case Severity::note:
+            return "note";
         case Severity::warning:
             return "warning";
         case Severity::error:

@@ -8,5 +8,7 @@ namespace tape {
 ImageFormat raw_image_format();
 ImageFormat holes_image_format();
 ImageFormat hex_image_format();
+ImageFormat hex8_image_format();
+ImageFormat hex5_image_format();
 
 }  // namespace tape

@@ -8,6 +8,7 @@
 
 #include "image_formats.hpp"
 #include "tape/error.hpp"
+#include "tape/five_track.hpp"
 
 namespace tape {
 namespace {
@@ -115,7 +116,10 @@ private:
 
 class HolesWriter : public ImageWriter {
 public:
-    explicit HolesWriter(const ImageWriteOptions& options) : options_(options), number_(options.first_number) {}
+    explicit HolesWriter(const ImageWriteOptions& options) : options_(options), number_(options.first_number) {
+        if (options.annotate && options.annotate->five_track_table())
+            labeler_.emplace(*options.annotate->five_track_table());
+    }
 
     void write(std::span<const Frame> frames, std::string& out) override {
         if (options_.header && !header_written_) write_header(out);
@@ -125,7 +129,10 @@ public:
             out += holes_picture(f);
             std::snprintf(number, sizeof number, " %6llu", static_cast<unsigned long long>(number_++));
             out += number;
-            if (options_.annotate) {
+            if (labeler_) {  // a 5-track frame means what the last shift made it mean
+                out += labeler_->bad(f) ? "  ! " : "  ";
+                out += labeler_->next(f);
+            } else if (options_.annotate) {
                 FrameKind k = options_.annotate->kind(f);
                 bool bad = k == FrameKind::parity_error || k == FrameKind::not_in_code;
                 out += bad ? "  ! " : "  ";
@@ -148,6 +155,7 @@ private:
     }
 
     ImageWriteOptions options_;
+    std::optional<FiveTrackLabeler> labeler_;
     std::uint64_t number_;
     bool header_written_ = false;
 };

@@ -8,9 +8,10 @@
 namespace tape {
 namespace {
 
-constexpr std::size_t chunk_bytes = 128 << 10;    // small enough to stay in the cache between stages
-constexpr std::size_t detection_limit = 4 << 20;  // frames held for detection at most
-constexpr std::size_t prefix_bytes = 4096;        // what content detection of the format looks at
+constexpr std::size_t chunk_bytes = 128 << 10;       // small enough to stay in the cache between stages
+constexpr std::size_t detection_frames = 256 << 10;  // frames read ahead to detect the code
+constexpr std::size_t detection_limit = 4 << 20;     // ... and at most, past a long blank leader
+constexpr std::size_t prefix_bytes = 4096;           // what content detection of the format looks at
 
 }  // namespace
 
@@ -77,22 +78,17 @@ std::span<const Frame> ImageInput::next() {
     return given_;
 }
 
-CodeDetection ImageInput::detect() {
-    // detect_code looks at the frames before the first end of block (at most 4096 punched ones) and
-    // counts parity over the first 16384 frames: read ahead until both are covered or the limit is hit.
-    std::size_t scanned = 0, punched = 0;
-    bool decided = false;  // an end of block, or 4096 punched frames, among the frames read so far
-    auto enough = [&] {
-        for (; scanned < ahead_.size() && !decided; ++scanned) {
-            Frame f = ahead_[scanned];
-            if (f == 0x00 || f == 0xFF || f == 0x7F) continue;
-            decided = f == 0x0A || f == 0x80 || ++punched >= 4096;
-        }
-        return decided && ahead_.size() >= 16384;
-    };
-    while (!enough() && ahead_.size() < detection_limit)
+CodeDetection ImageInput::detect(const CodeTable* eia_table) {
+    // The verdict is drawn from the read-ahead: the whole of most tapes (an NC program is a few
+    // thousand frames), the first detection_frames of a longer one. A leader longer than that (no
+    // punched frame yet) is read on, up to detection_limit.
+    auto punched = [&] { return std::any_of(ahead_.begin(), ahead_.end(), [](Frame f) { return f != 0; }); };
+    while (ahead_.size() < detection_frames || (ahead_.size() < detection_limit && !punched()))
         if (!fill() && ended_) break;
-    return detect_code(ahead_);
+    Detector detector(eia_table, format_->bytes_are_frames);
+    detector.feed(ahead_);
+    if (!ended_) detector.partial();
+    return detector.result();
 }
 
 }  // namespace tape

@@ -77,6 +77,16 @@ void Input::open(std::unique_ptr<ByteSource> source, const std::string& name) {
         return;
     }
     text_source_ = std::move(source);
+    // A byte-order mark is no character of a program (an editor's habit): skipped, and said so.
+    if (text_ahead_.empty()) {
+        text_ahead_.resize(utf8_bom.size());
+        text_ahead_.resize(text_source_->read_full(text_ahead_));
+    }
+    auto bom = std::span(reinterpret_cast<const std::uint8_t*>(utf8_bom.data()), utf8_bom.size());
+    if (text_ahead_.size() >= bom.size() && std::equal(bom.begin(), bom.end(), text_ahead_.begin())) {
+        text_ahead_.erase(text_ahead_.begin(), text_ahead_.begin() + static_cast<std::ptrdiff_t>(utf8_bom.size()));
+        notes_.push_back(byte_order_mark_note());
+    }
 }
 
 std::span<const Frame> Input::next_frames() {
@@ -89,6 +99,12 @@ const DecodeOptions& Input::decode_options() {
     if (decode_) return *decode_;
     DecodeOptions o = options_.decode;
     if (image_ && options_.detect_code) {
+        if (image_->format().tracks == 5) {
+            // Every frame is a character in both 5-track codes: only the reader can tell them apart.
+            throw Error(Errc::unknown_code,
+                        "a 5-track image: ITA2 and МТК-2 cannot be told apart from the frames, say which",
+                        Hint{Hint::Action::use_code, "ita2 or mtk2"});
+        }
         if (o.parity != Parity::even) {
             o.code = Code::iso;  // only ISO/ASCII tapes have a choice of parity
         } else {
@@ -99,13 +115,22 @@ const DecodeOptions& Input::decode_options() {
     }
     if (o.code == Code::eia && o.parity != Parity::even)
         throw Error(Errc::usage, "parity is for ISO tapes; EIA parity is always odd on track 5");
+    if (is_five_track(o.code) && o.parity != Parity::even)
+        throw Error(Errc::usage, "parity is for ISO tapes; 5-track codes carry none");
     decode_ = o;
     return *decode_;
 }
 
 const CodeDetection& Input::detect() {
     if (!image_) throw Error(Errc::usage, "a text program has no tape code");
-    if (!detection_) detection_ = image_->detect();
+    if (!detection_ && image_->format().tracks == 5) {  // not ISO or EIA read from a 5-track dump by chance
+        CodeDetection five;
+        five.kind = TapeKind::five_track;
+        five.reason = "a 5-track image: ITA2 or МТК-2, which the frames cannot tell apart";
+        five.hint = Hint{Hint::Action::use_five_track_code, {}};
+        detection_ = std::move(five);
+    }
+    if (!detection_) detection_ = image_->detect(options_.decode.eia_table);
     return *detection_;
 }
 
@@ -116,7 +141,9 @@ bool Input::next_text(DecodeResult& out) {
         auto frames = image_->next();
         if (frames.empty()) {
             ended_ = true;
-            return false;
+            std::size_t had = out.text.size();
+            decoder_->finish(out);  // a 5-track CR held back at the very end
+            return out.text.size() > had;
         }
         if (!decoder_->feed(frames, out)) {
             out.complete = false;

@@ -1,4 +1,4 @@
-// Lint: the rules of ГОСТ 20999-83 §1.4-§2.7 over loaded programs.
+// Lint: the rules of ГОСТ 20999-83 §1.4-§2.7 and of the dialects over loaded programs.
 #include "tape/lint.hpp"
 
 #include <algorithm>
@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "tape/functions.hpp"
+#include "tape/rules.hpp"
 
 namespace tape {
 namespace {
@@ -38,36 +39,55 @@ bool is_dimension(char a) {
     return dimension_order.find(a) != std::string_view::npos || interpolation_order.find(a) != std::string_view::npos;
 }
 
+// Fanuc and LinuxCNC: P Q R are parameters (dwell, cycle depths, radius), not dimensions.
+bool is_axis_or_center(char a) { return std::string_view("XYZUVWABCIJK").find(a) != std::string_view::npos; }
+bool is_end_point(char a) { return std::string_view("XYZUVWABC").find(a) != std::string_view::npos; }
+
 using Add = const std::function<void(Finding)>&;
 
-void add(Add out, std::string_view rule, Severity s, const Location& where, std::uint64_t block, std::string message) {
-    out(program_finding(rule, s, where, block, std::move(message)));
+void add(Add out, std::string_view rule, const Location& where, std::uint64_t block, std::string message) {
+    out(program_finding(rule, where, block, std::move(message)));
+}
+
+bool has_g(const Block& b, std::initializer_list<long long> codes) {
+    for (const auto& w : b.words)
+        if (w.address == 'G' && w.integer() && std::find(codes.begin(), codes.end(), *w.integer()) != codes.end())
+            return true;
+    return false;
 }
 
 void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points) {
     if (b.main && !s.main_block)
-        add(out, "spec-main", Severity::error, b.where, b.ordinal, "the controller format has no ':' main blocks");
+        add(out, "spec-main", b.where, b.ordinal, "the controller format has no ':' main blocks");
     if (b.skip && !s.block_skip)
-        add(out, "spec-skip", Severity::error, b.where, b.ordinal, "the controller format has no '/' block skip");
+        add(out, "spec-skip", b.where, b.ordinal, "the controller format has no '/' block skip");
     auto check = [&](const Word& w) {
-        for (auto& [rule, message] : check_word(w, s, points))
-            add(out, rule, Severity::error, w.where, b.ordinal, message);
+        if (w.macro || !w.known) return;  // a macro value has no digits to count; a flagged word was reported
+        for (auto& [rule, message] : check_word(w, s, points)) add(out, rule, w.where, b.ordinal, message);
     };
     if (b.number) check(*b.number);
     for (const auto& w : b.words) check(w);
 }
 
-void word_checks(Add out, const Block& b) {
+void word_checks(Add out, const Block& b, Dialect dialect) {
+    const DialectRules& rules = dialect_rules(dialect);
     std::array<const Word*, 128> seen{};
     std::array<const Word*, 128> group{};
     int max_rank = -1;
     const Word* max_word = nullptr;
     const Word* previous = nullptr;
+    // A misread or unknown word says nothing about the order of the others: no cascade from it.
+    bool order = rules.ordered_words &&
+                 std::all_of(b.words.begin(), b.words.end(), [](const Word& w) { return w.known && !w.macro; });
+    // Macro calls pass arguments by letter, and Fanuc's argument list II repeats I J K.
+    bool dimensions = !has_g(b, {65, 66});
     for (const auto& w : b.words) {
+        if (!w.known) continue;
         auto a = static_cast<unsigned char>(w.address);
-        if (is_dimension(w.address)) {
+        bool dimension = dialect == Dialect::gost ? is_dimension(w.address) : is_axis_or_center(w.address);
+        if (dimension && dimensions) {
             if (seen[a])
-                add(out, "repeated-dimension", Severity::error, w.where, b.ordinal,
+                add(out, "repeated-dimension", w.where, b.ordinal,
                     w.text + " repeats " + seen[a]->text +
                         ": a dimension or interpolation word may stand once in a block (§2.4)");
             else
@@ -76,22 +96,28 @@ void word_checks(Add out, const Block& b) {
         if (w.address == 'G' && w.integer())
             if (const NcFunction* f = find_nc_function('G', *w.integer()); f && f->group) {
                 auto g = static_cast<unsigned char>(f->group);
-                if (group[g])
-                    add(out, "g-group", Severity::error, w.where, b.ordinal,
+                // On a Fanuc lathe G90, G92 and G94 are turning cycles, not of the groups of table 4.
+                bool lathe_cycle =
+                    dialect == Dialect::fanuc && (*w.integer() == 90 || *w.integer() == 92 || *w.integer() == 94);
+                if (lathe_cycle) {
+                } else if (group[g])
+                    add(out, "g-group", w.where, b.ordinal,
                         w.text + " and " + group[g]->text + " are both of group " + f->group + " (§2.5, table 4)");
                 else
                     group[g] = &w;
             }
         if (w.sign && unsigned_addresses.find(w.address) != std::string_view::npos)
-            add(out, "sign-not-allowed", Severity::error, w.where, b.ordinal,
+            add(out, "sign-not-allowed", w.where, b.ordinal,
                 w.text + ": " + w.address + " words have no sign (§3.1.1, §3.3)");
         int rank = order_rank(w.address);
         // A feed that follows the dimension word of its own axis may stand there (§2.2).
         bool axis_feed_before = previous && previous->address == 'F' && max_word == previous;
-        if (rank >= 0 && rank < max_rank && !(axis_feed_before && is_dimension(w.address)))
-            add(out, "word-order", Severity::warning, w.where, b.ordinal,
+        if (order && rank >= 0 && rank < max_rank && !(axis_feed_before && is_dimension(w.address))) {
+            add(out, "word-order", w.where, b.ordinal,
                 w.text + " stands after " + max_word->text +
                     "; recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (§2.2)");
+            order = false;  // once a block: the rest follow from the first
+        }
         if (rank > max_rank) {
             max_rank = rank;
             max_word = &w;
@@ -113,6 +139,8 @@ LintVisitor::LintVisitor(const LintOptions& options)
     : options_(options), sink_([this](Finding f) { keep(std::move(f)); }) {}
 LintVisitor::~LintVisitor() = default;
 
+void LintVisitor::dialect(const DialectChoice& choice) { dialect_ = choice.dialect; }
+
 void LintVisitor::program_start(const Program& header) {
     close_program();
     any_program_ = in_program_ = true;
@@ -121,6 +149,11 @@ void LintVisitor::program_start(const Program& header) {
     program_blocks_ = 0;
     last_number_.reset();
     after_end_at_.reset();
+    motion_ = -1;
+    feed_given_ = no_feed_said_ = false;
+    open_.clear();
+    numbers_.clear();
+    gotos_.clear();
 }
 
 void LintVisitor::block(const Block& b) {
@@ -129,13 +162,96 @@ void LintVisitor::block(const Block& b) {
     if (b.number) {
         auto n = b.number->integer();
         if (n && last_number_ && *n <= *last_number_)
-            add(sink_, "block-number-order", Severity::warning, b.number->where, b.ordinal,
+            add(sink_, "block-number-order", b.number->where, b.ordinal,
                 "block number " + b.number->text + " does not increase (the block before is " +
                     std::to_string(*last_number_) + ")");
         if (n) last_number_ = n;
+        if (n && dialect_ == Dialect::fanuc) numbers_.push_back(*n);
     }
-    word_checks(sink_, b);
+    word_checks(sink_, b, dialect_);
+    motion_checks(b);
+    flow_checks(b);
     if (options_.spec) held_.push_back(b);
+}
+
+// Feed moves need a feed, arcs a centre. G codes that take axis words for something else (reference
+// returns, offsets, coordinate settings, cycles) leave the block unchecked.
+void LintVisitor::motion_checks(const Block& b) {
+    bool feed_here = false, end_point = false, center = false, radius = false, other_g = false;
+    for (const auto& w : b.words) {
+        if (!w.known) continue;
+        feed_here |= w.address == 'F';
+        end_point |= is_end_point(w.address);
+        center |= w.address == 'I' || w.address == 'J' || w.address == 'K';
+        radius |= w.address == 'R';
+        if (w.address != 'G') continue;
+        auto g = w.integer();
+        if (!g) {
+            other_g = true;  // G33.1, G38.2, G5.1, a macro value: not followed
+            continue;
+        }
+        if (*g >= 0 && *g <= 3)
+            motion_ = static_cast<int>(*g);
+        else if ((*g >= 70 && *g <= 89) || *g == 33 || *g == 34 || *g == 35 ||
+                 (dialect_ == Dialect::fanuc && (*g == 90 || *g == 92 || *g == 94) && !has_g(b, {0, 1, 2, 3})))
+            motion_ = -1, other_g = true;  // cycles and threading: their own words
+        else if (!(*g == 17 || *g == 18 || *g == 19 || *g == 20 || *g == 21 || (*g >= 40 && *g <= 44) || *g == 49 ||
+                   (*g >= 53 && *g <= 59) || *g == 61 || *g == 64 || *g == 90 || *g == 91 || *g == 94 || *g == 95 ||
+                   *g == 96 || *g == 97 || *g == 98 || *g == 99))
+            other_g = true;
+    }
+    feed_given_ |= feed_here;
+    if (other_g || !end_point || motion_ < 1) return;
+    if (!feed_given_ && !no_feed_said_) {
+        no_feed_said_ = true;  // one cause: the program gives no feed before its first feed move
+        add(sink_, "no-feed", b.where, b.ordinal,
+            "G0" + std::to_string(motion_) + " moves at a feed, but no F has been given in this program yet");
+    }
+    bool radius_allowed = dialect_ != Dialect::gost;
+    if ((motion_ == 2 || motion_ == 3) && !center && !(radius_allowed && radius))
+        add(sink_, "arc-center", b.where, b.ordinal,
+            "G0" + std::to_string(motion_) + " with an end point but no " +
+                (radius_allowed ? "I, J, K or R" : "I, J or K (§3.2)") + ": the arc is not defined");
+}
+
+// Loops and o-word blocks are closed in the order they were opened; GOTOs are kept for the end.
+void LintVisitor::flow_checks(const Block& b) {
+    using K = Statement::Kind;
+    for (const auto& s : b.statements) {
+        if ((s.kind == K::if_goto || s.kind == K::go_to) && s.number) gotos_.push_back({*s.number, s.where, b.ordinal});
+        if (s.kind == K::while_do || s.kind == K::loop_do) {
+            if (s.number) open_.push_back({std::to_string(*s.number), "DO", s.where, b.ordinal});
+        } else if (s.kind == K::loop_end) {
+            if (!s.number) continue;
+            std::string n = std::to_string(*s.number);
+            if (!open_.empty() && open_.back().label == n)
+                open_.pop_back();
+            else
+                add(sink_, "control-flow", s.where, b.ordinal, "END " + n + " closes no DO " + n);
+        } else if (s.kind == K::o_word) {
+            const std::string& k = s.keyword;
+            std::string_view closes = k == "endsub"      ? "sub"
+                                      : k == "endif"     ? "if"
+                                      : k == "endwhile"  ? "while"
+                                      : k == "endrepeat" ? "repeat"
+                                                         : "";
+            bool do_while =
+                k == "while" && !open_.empty() && open_.back().label == s.label && open_.back().keyword == "do";
+            if (k == "sub" || k == "if" || k == "repeat" || k == "do" || (k == "while" && !do_while)) {
+                open_.push_back({s.label, k, s.where, b.ordinal});
+            } else if (do_while) {
+                open_.pop_back();
+            } else if (!closes.empty() || k == "else" || k == "elseif") {
+                std::string_view wanted = closes.empty() ? "if" : closes;
+                if (!open_.empty() && open_.back().label == s.label && open_.back().keyword == wanted) {
+                    if (!closes.empty()) open_.pop_back();
+                } else {
+                    add(sink_, "control-flow", s.where, b.ordinal,
+                        "o" + s.label + " " + k + " has no open o" + s.label + " " + std::string(wanted));
+                }
+            }
+        }
+    }
 }
 
 void LintVisitor::after_end(std::string_view text, const Location& where) {
@@ -144,8 +260,11 @@ void LintVisitor::after_end(std::string_view text, const Location& where) {
 
 void LintVisitor::finding(const Finding& f) { keep(f); }
 
+// A rule the dialect does not have is not checked; the rest are counted, and listed up to max_per_rule.
 void LintVisitor::keep(Finding f) {
+    if (const Rule* r = find_rule(f.id()); r && !rule_applies(*r, dialect_)) return;
     ++counts_[static_cast<int>(f.severity)];
+    ++by_rule_[f.id()];
     if (options_.max_per_rule && kept_[f.id()] >= options_.max_per_rule) {
         ++unlisted_[f.id()];
         return;
@@ -155,18 +274,30 @@ void LintVisitor::keep(Finding f) {
 }
 
 void LintVisitor::end(const Location& where) {
+    (void)where;
     close_program();
-    if (!any_program_) add(sink_, "no-program", Severity::error, where, 0, "no '%' program start on the tape (§1.4)");
+    if (!any_program_)
+        add(sink_, "no-program", Location{.offset = 0, .line = 1, .column = 1}, 0,
+            "no '%' program start on the tape: all of it is label, which a controller skips (§1.4)");
 }
 
 void LintVisitor::close_program() {
     if (!in_program_) return;
     in_program_ = false;
-    if (program_blocks_ == 0)
-        add(sink_, "program-start", Severity::error, program_start_, 0, "'%' is not followed by a block (§1.4)");
+    if (program_blocks_ == 0) add(sink_, "program-start", program_start_, 0, "'%' is not followed by a block (§1.4)");
     if (after_end_at_)
-        add(sink_, "after-end", Severity::info, *after_end_at_, 0,
-            "text after M02/M30 is not part of the program (§1.9)");
+        add(sink_, "after-end", *after_end_at_, 0, "text after M02/M30 is not part of the program (§1.9)");
+    for (const auto& o : open_)
+        add(sink_, "control-flow", o.where, o.block,
+            (o.keyword == "DO" ? "DO " + o.label + " is never closed with END " + o.label
+                               : "o" + o.label + " " + o.keyword + " is never closed"));
+    open_.clear();
+    for (const auto& g : gotos_)
+        if (std::find(numbers_.begin(), numbers_.end(), g.target) == numbers_.end())
+            add(sink_, "goto-target", g.where, g.block,
+                "GOTO " + std::to_string(g.target) + ": no block N" + std::to_string(g.target) + " in this program");
+    gotos_.clear();
+    numbers_.clear();
     for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, program_points_);
     held_.clear();
 }
@@ -181,6 +312,7 @@ std::vector<Finding> LintVisitor::findings() const {
 std::vector<Finding> lint(const LoadedTape& tape, const LintOptions& options) {
     // The tape loaded whole is given to the streaming checks as the loader would give it.
     LintVisitor v(options);
+    v.dialect(DialectChoice{tape.dialect, {}});
     for (const auto& f : tape.findings) v.finding(f);
     for (const auto& p : tape.programs) {
         v.program_start(p);

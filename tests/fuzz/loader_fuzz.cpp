@@ -49,7 +49,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     std::size_t blocks = 0;
     for (const auto& p : t.programs) blocks += p.blocks.size();
-    if (pieces.blocks != blocks || pieces.findings != t.findings.size()) __builtin_trap();
+    // Only a tape (text with frame numbers) can end in the middle of a block; the pieces are text.
+    std::size_t whole_findings = 0;
+    for (const auto& f : t.findings) whole_findings += f.rule != "incomplete-block";
+    if (pieces.blocks != blocks || pieces.findings != whole_findings) __builtin_trap();
     tape::find_main_block(t, text.size() / 2);
     tape::find_rewind_stop(t, text.size());
     tape::find_numbered_blocks(t, 1);

@@ -1,0 +1,135 @@
+// The dialect table and the choice of a dialect from a program's text.
+#include "tape/dialect.hpp"
+
+#include <array>
+#include <cctype>
+#include <cstdint>
+
+namespace tape {
+namespace {
+
+// Columns: needs_percent lowercase semicolon_ends_block semicolon_comment macro_b o_words
+// o_program_number main_blocks skip_levels closing_percent ordered_words increasing_numbers.
+constexpr std::array<DialectRules, 3> table = {{
+    {Dialect::gost, true, false, false, false, false, false, false, true, false, true, true, true, "2 30",
+     "ГОСТ 20999-83 (ISO 6983)"},
+    {Dialect::fanuc, false, false, true, false, true, false, true, false, true, true, false, false, "2 30 99",
+     "Fanuc Series 0i/16i/18i/21i/30i operator's manual: program format, Custom Macro B"},
+    {Dialect::linuxcnc, false, true, false, true, false, true, false, false, false, true, false, false, "2 30",
+     "LinuxCNC G-code reference (RS274NGC): overview, O codes, parameters"},
+}};
+
+bool starts_word(std::string_view s, std::size_t i, std::string_view word) {
+    if (s.size() - i < word.size()) return false;
+    for (std::size_t k = 0; k < word.size(); ++k)
+        if (std::toupper(static_cast<unsigned char>(s[i + k])) != word[k]) return false;
+    return true;
+}
+
+// Evidence found in one line outside comments.
+struct Evidence {
+    std::uint64_t o_numbers = 0, macro = 0, lowercase = 0, o_words = 0, named = 0, semicolon_comment = 0,
+                  semicolon_end = 0, main_blocks = 0, percent_number = 0, percent_lines = 0, lines = 0;
+};
+
+void scan_line(std::string_view line, Evidence& e) {
+    std::size_t i = line.find_first_not_of(" \t\r");
+    if (i == std::string_view::npos) return;
+    ++e.lines;
+    if (line[i] == '%') {
+        ++e.percent_lines;
+        std::size_t j = line.find_first_not_of(" \t\r%", i);
+        if (j != std::string_view::npos && std::isdigit(static_cast<unsigned char>(line[j]))) ++e.percent_number;
+        return;
+    }
+    if (line[i] == '/') i = line.find_first_not_of(" \t\r/0123456789", i);
+    if (i == std::string_view::npos) return;
+    if (line[i] == ':') ++e.main_blocks;
+    if (line[i] == 'O' && i + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[i + 1])))
+        ++e.o_numbers;
+    int depth = 0;
+    bool lower = false;
+    for (std::size_t k = i; k < line.size(); ++k) {
+        char c = line[k];
+        if (c == '(') ++depth;
+        if (c == ')' && depth) --depth;
+        if (depth || c == '(' || c == ')') continue;
+        if (c == ';') {
+            if (line.find_first_not_of(" \t\r", k + 1) == std::string_view::npos)
+                ++e.semicolon_end;
+            else
+                ++e.semicolon_comment;
+            break;
+        }
+        if (c == '#' && k + 1 < line.size() && line[k + 1] == '<') ++e.named;
+        if ((c == 'o' || c == 'O') && k + 1 < line.size() && line[k + 1] == '<') ++e.o_words;
+        if (c == 'o' && (k == i || line[k - 1] == ' ') && k + 1 < line.size() &&
+            std::isdigit(static_cast<unsigned char>(line[k + 1])))
+            ++e.o_words;
+        lower |= c >= 'a' && c <= 'z';
+        if (starts_word(line, k, "WHILE") || starts_word(line, k, "GOTO") || starts_word(line, k, "IF[") ||
+            starts_word(line, k, "IF [") || starts_word(line, k, "G65") || starts_word(line, k, "M99") ||
+            (c == '#' && k + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[k + 1]))))
+            ++e.macro;
+    }
+    e.lowercase += lower;
+}
+
+std::string count(std::uint64_t n, std::string_view what) { return std::to_string(n) + " " + std::string(what); }
+
+}  // namespace
+
+std::string_view dialect_name(Dialect d) {
+    switch (d) {
+        case Dialect::gost:
+            return "gost";
+        case Dialect::fanuc:
+            return "fanuc";
+        case Dialect::linuxcnc:
+            return "linuxcnc";
+        case Dialect::automatic:
+            return "auto";
+    }
+    return "?";
+}
+
+std::optional<Dialect> parse_dialect(std::string_view name) {
+    for (Dialect d : {Dialect::gost, Dialect::fanuc, Dialect::linuxcnc, Dialect::automatic})
+        if (dialect_name(d) == name) return d;
+    return std::nullopt;
+}
+
+const DialectRules& dialect_rules(Dialect d) {
+    for (const auto& row : table)
+        if (row.dialect == d) return row;
+    return table[0];
+}
+
+DialectChoice guess_dialect(std::string_view text) {
+    Evidence e;
+    for (std::size_t b = 0; b < text.size();) {
+        auto nl = text.find('\n', b);
+        std::size_t end = nl == std::string_view::npos ? text.size() : nl;
+        scan_line(text.substr(b, end - b), e);
+        b = end + 1;
+    }
+    std::uint64_t linuxcnc = e.lowercase + e.o_words * 4 + e.named * 4 + e.semicolon_comment;
+    std::uint64_t fanuc = e.o_numbers * 4 + e.macro * 2 + e.semicolon_end;
+    std::uint64_t gost = e.main_blocks * 4 + e.percent_number * 4;
+    if (fanuc > linuxcnc && fanuc > gost)
+        return {Dialect::fanuc, "fanuc: " + count(e.o_numbers, "O program number(s)") + ", " +
+                                    count(e.macro, "macro statement(s)") + ", " +
+                                    count(e.semicolon_end, "';' end(s) of block")};
+    if (linuxcnc > gost && linuxcnc > 0)
+        return {Dialect::linuxcnc, "linuxcnc: " + count(e.lowercase, "line(s) with lowercase words") + ", " +
+                                       count(e.o_words, "o-word(s)") + ", " + count(e.named, "named parameter(s)") +
+                                       ", " + count(e.semicolon_comment, "';' comment(s)")};
+    if (gost > 0)
+        return {Dialect::gost, "gost: " + count(e.main_blocks, "':' main block(s)") + ", " +
+                                   count(e.percent_number, "'%' with a program number")};
+    if (e.percent_lines == 0 && e.lines > 0)
+        return {Dialect::linuxcnc, "linuxcnc: no '%' anywhere, so no ГОСТ tape program; nothing else decides"};
+    return {Dialect::gost, "gost: nothing in the text needs another dialect"};
+}
+
+}  // namespace tape

@@ -1,0 +1,88 @@
+// The loader behind ProgramLoader: characters -> label, programs, blocks, words, statements, in one
+// pass, a line at a time, in the dialect's reading (tape/dialect.hpp).
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tape/program.hpp"
+
+namespace tape {
+
+class Loader {
+public:
+    Loader(ProgramVisitor& visitor, const LoadOptions& options);
+    void feed(std::string_view text, std::span<const std::uint64_t> frame_of);
+    void finish();
+
+private:
+    enum class State { label, pending, program, after_end };
+
+    void choose(Dialect d, std::string reason);
+    void feed_lines(std::string_view text, std::span<const std::uint64_t> frame_of);
+    void keep(std::string_view text, std::span<const std::uint64_t> frame_of);
+    void run(std::string_view text, std::span<const std::uint64_t> frame_of);
+    Location end_location() const;
+    void begin_line(std::size_t b, std::size_t e);
+    Location at(std::size_t offset) const;
+    void find(std::string_view rule, std::size_t offset, std::uint64_t block, std::string message);
+    std::size_t skip_blanks(std::size_t i, std::size_t e) const;
+
+    void line(std::size_t b, std::size_t e, bool has_lf);
+    void percent_line(std::size_t b, std::size_t pct, std::size_t e);
+    void open_pending(std::size_t pct, std::size_t e, bool from_label);
+    void close_pending_empty();
+    void start(Program p);
+    bool program_number_at(std::size_t i, std::size_t e) const;
+    void unterminated();
+    void blocks_in_line(std::size_t i, std::size_t e);
+
+    std::size_t block(std::size_t i, std::size_t e);
+    std::size_t block_end(std::size_t i, std::size_t e) const;
+    std::size_t statement_end(std::size_t i, std::size_t e) const;
+    void word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t block_no, Word& w);
+    std::size_t flagged(std::size_t i, std::size_t e, std::size_t end, std::string message);
+    std::size_t macro_statement(std::size_t i, std::size_t e, const std::string& keyword);
+    std::size_t assignment(std::size_t i, std::size_t e);
+    std::size_t o_word(std::size_t i, std::size_t e);
+    Statement& add_statement(Statement::Kind kind, std::size_t from, std::size_t to);
+    void macro_problem(std::size_t i, std::string message);
+    std::optional<long long> number_after(std::size_t& i, std::size_t end) const;
+    std::size_t comment(std::size_t open, std::size_t e);
+    std::size_t unexpected(std::size_t i, std::size_t e, std::uint64_t block_no);
+    Word& next_word();
+
+    ProgramVisitor& v_;
+    LoadOptions options_;
+    const DialectRules* rules_ = nullptr;
+    bool linuxcnc_ = false;
+    std::string sniff_;  // automatic: the text held until the dialect is chosen, and its frames
+    std::vector<std::uint64_t> sniff_frames_;
+
+    std::string_view text_;                    // the lines being loaded now
+    std::span<const std::uint64_t> frame_of_;  // their frames, or empty
+    std::uint64_t base_ = 0;                   // offset of text_[0] from the start of the text
+    bool ends_with_lf_ = false;                // of the text loaded so far: where its end is
+    std::uint64_t last_line_chars_ = 0;
+    std::optional<std::uint64_t> last_frame_{};
+    std::string pending_;  // an unfinished line, and its frames
+    std::vector<std::uint64_t> pending_frames_;
+    State state_ = State::label;
+    std::uint64_t line_no_ = 0, ordinal_ = 0;
+    std::size_t line_start_ = 0;
+    bool line_ascii_ = true;
+    bool any_program_ = false;
+    bool after_end_started_ = false;
+    bool last_line_was_block_ = false;
+    Program pending_header_;  // a '%' whose program starts with its first block
+    bool pending_from_label_ = false;
+    Location program_start_, last_block_where_;
+    std::uint64_t last_block_ordinal_ = 0;
+    Block blk_;  // reused: its vectors keep their capacity from block to block
+    std::size_t words_used_ = 0, comments_used_ = 0;
+};
+
+}  // namespace tape

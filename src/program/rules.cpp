@@ -1,0 +1,123 @@
+// The rule table: the one place a rule's id, severity, dialects and reference are written.
+#include "tape/rules.hpp"
+
+#include <array>
+
+namespace tape {
+namespace {
+
+constexpr auto E = Severity::error, W = Severity::warning, N = Severity::note;
+constexpr std::string_view all = "gost fanuc linuxcnc";
+
+constexpr std::array<Rule, 32> table = {{
+    // The loader: how characters become programs, blocks and words.
+    {"unexpected-character", E, all, "ГОСТ 20999-83 tables 1-3",
+     "a character, or a run of characters, that no program of the dialect may hold outside comments",
+     "a controller stops on it with a tape alarm; on a read tape it is often a misread frame"},
+    {"unknown-word", E, all, "ГОСТ 20999-83 §3.1, table 1; the dialect's manual",
+     "a word or statement this dialect does not know (lowercase letters in ГОСТ or Fanuc programs, a macro "
+     "statement in a ГОСТ program); it is kept in the listing, flagged, and not checked further",
+     "the controller rejects it; with --dialect the right reading may be chosen"},
+    {"no-digits", E, all, "ГОСТ 20999-83 §3.1.1", "an address letter with no value after it",
+     "an address alone is a tape alarm on every controller"},
+    {"two-points", E, all, "ГОСТ 20999-83 §3.1.4", "a number with more than one decimal point",
+     "the controller cannot read the value"},
+    {"skip-position", E, all, "ГОСТ 20999-83 §2.7", "'/' (block skip) anywhere but at the start of a block",
+     "a '/' in the middle of a block is no block skip and stops the controller"},
+    {"main-position", E, "gost", "ГОСТ 20999-83 §2.6", "':' (main block) anywhere but in place of N",
+     "a reader searching for main blocks stops at every ':'"},
+    {"percent-in-block", E, all, "ГОСТ 20999-83 §1.4, table 2", "'%' inside a block",
+     "'%' is the program start and the rewind stop: a reader rewinding stops there"},
+    {"comment-forbidden-char", E, "gost", "ГОСТ 20999-83 §1.5", "'%' or ':' inside a comment",
+     "readers searching for '%' or ':' stop inside the comment"},
+    {"unclosed-comment", E, all, "ГОСТ 20999-83 §1.5", "'(' without ')' before the end of block",
+     "the controller reads the next blocks as comment, or stops"},
+    {"program-start", E, all, "ГОСТ 20999-83 §1.4, §1.6, §1.8",
+     "what stands between '%' and the end of that block: only a program number may; '%%' only before "
+     "the first program; a '%' that starts no program",
+     "the controller does not find the program it is asked for"},
+    {"program-end", W, all, "ГОСТ 20999-83 §1.9; Fanuc: M02, M30, M99; LinuxCNC: M2, M30 or the closing '%'",
+     "a program that is not ended before the next program or the end of the tape",
+     "without its end the controller runs on into what follows, or waits at the end of the tape"},
+    {"incomplete-block", W, all, "ГОСТ 20999-83 §2.1",
+     "a tape that ends in the middle of a block, without its end of block",
+     "a controller does not execute a block until its end of block: the tape was cut or read short"},
+    {"no-program", E, "gost", "ГОСТ 20999-83 §1.4, §1.8",
+     "a tape with no '%': everything on it is label, which a controller skips",
+     "nothing on the tape runs; with --dialect linuxcnc or fanuc no '%' is needed"},
+    {"macro-syntax", E, "fanuc linuxcnc",
+     "Fanuc Custom Macro B (operator's manual, 'Custom macro'); LinuxCNC 'O codes' and 'Expressions'",
+     "a malformed macro expression or statement: unbalanced [ ], an unknown function or operator, IF "
+     "without GOTO or THEN, WHILE without DO, GOTO without a target, an assignment without a value",
+     "the controller stops with a macro alarm when it reaches the block"},
+    {"control-flow", E, "fanuc linuxcnc",
+     "Fanuc Custom Macro B: WHILE/DO/END; LinuxCNC 'O codes': sub/endsub, if/endif, while/endwhile",
+     "loops and subroutines that are not closed, or closed without being opened",
+     "the controller stops with an alarm, or loops where the programmer did not mean to"},
+    {"goto-target", E, "fanuc", "Fanuc Custom Macro B: GOTO n branches to the block with sequence number n",
+     "a GOTO to a block number that no block of the same program has",
+     "the controller stops with 'sequence number not found' in the middle of machining"},
+    {"repeated-dimension", E, all, "ГОСТ 20999-83 §2.4",
+     "a dimension or interpolation word twice in one block (Fanuc and LinuxCNC: the axis words and I J K; "
+     "their P Q R are parameters)",
+     "one of the two values is lost; usually a misread or mistyped address"},
+    {"g-group", E, all, "ГОСТ 20999-83 §2.5, table 4",
+     "two G codes of one group in a block (G00/G01/G02/G03, G17/G18/G19, G80-G89, G54-G59, G90/G91, "
+     "G93-G95, G96/G97)",
+     "only one can be in effect: LinuxCNC refuses the block, Fanuc silently takes the last"},
+    {"word-order", W, "gost", "ГОСТ 20999-83 §2.2",
+     "a word out of the recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (once a block)",
+     "controllers of the ГОСТ family may expect this order"},
+    {"sign-not-allowed", E, all, "ГОСТ 20999-83 §3.1.1, §3.3", "a sign on an N G F S T M E or O word",
+     "these words have no sign: a sign there is a typing or reading mistake"},
+    {"block-number-order", W, "gost", "ГОСТ 20999-83 §2.3", "a block number not greater than the one before",
+     "searches by block number find the wrong block"},
+    {"no-feed", W, all, "ГОСТ 20999-83 §3.7; Fanuc alarm 011; LinuxCNC 'F: set feed rate'",
+     "a feed move (G01, G02, G03 in effect, with axis words) before any F in the program",
+     "the controller stops with 'feed rate zero', or moves at a feed left from an earlier program"},
+    {"arc-center", E, all, "ГОСТ 20999-83 §3.2; Fanuc and LinuxCNC: circular interpolation",
+     "a G02/G03 block with an end point but no I, J, K (or, Fanuc and LinuxCNC, R)",
+     "the controller cannot know the arc: it stops, or cuts a different path"},
+    {"after-end", N, all, "ГОСТ 20999-83 §1.9", "text after M02/M30 that is not a new program",
+     "the controller does not read it: it is not part of the program"},
+    {"spec-address", E, all, "ГОСТ 20999-83 §9", "an address the controller format does not have",
+     "the controller rejects the word"},
+    {"spec-sign", E, all, "ГОСТ 20999-83 §9", "a sign the controller format does not allow for the address",
+     "the controller rejects the word"},
+    {"spec-point", E, all, "ГОСТ 20999-83 §3.1.4, §9", "a decimal point where the controller format has none",
+     "the controller rejects the word or reads another value"},
+    {"spec-digits", E, all, "ГОСТ 20999-83 §9", "more digits before or after the point than the format allows",
+     "the controller rejects the word or reads another value"},
+    {"spec-main", E, all, "ГОСТ 20999-83 §2.6, §9", "a ':' main block where the controller format has none",
+     "the controller rejects the block"},
+    {"spec-skip", E, all, "ГОСТ 20999-83 §2.7, §9", "a '/' block skip where the controller format has none",
+     "the controller rejects the block"},
+    {"spec-word", E, all, "ГОСТ 20999-83 §9", "tape format: a word that cannot be written in the controller format",
+     "the value does not fit the digits the controller reads"},
+    {"implied-point", W, all, "ГОСТ 20999-83 §3.1.4",
+     "tape format: a program with no decimal point anywhere, whose numbers are taken as whole numbers",
+     "with an implied point the same digits mean another size; give the source format with --from"},
+}};
+
+}  // namespace
+
+std::span<const Rule> all_rules() { return table; }
+
+const Rule* find_rule(std::string_view id) {
+    for (const auto& r : table)
+        if (r.id == id) return &r;
+    return nullptr;
+}
+
+bool rule_applies(const Rule& rule, Dialect d) {
+    std::string_view name = dialect_name(d);
+    for (std::size_t at = rule.dialects.find(name); at != std::string_view::npos;
+         at = rule.dialects.find(name, at + 1)) {
+        bool starts = at == 0 || rule.dialects[at - 1] == ' ';
+        bool ends = at + name.size() == rule.dialects.size() || rule.dialects[at + name.size()] == ' ';
+        if (starts && ends) return true;
+    }
+    return false;
+}
+
+}  // namespace tape

@@ -1,0 +1,1 @@
+$TAPE decode tapes/bad/pdp8-bin-loader.bin
