@@ -36,7 +36,7 @@ TEST(CliFeed, SendsTheProgramThroughPausesExactlyOnce) {
     TempDir dir;
     PTY_OR_SKIP(pty);
     std::string text = read_text(sample_path("gost-20999-format-example.txt"));
-    auto expected = encode(text + "%", EncodeOptions{.leader = 5, .trailer = 5});
+    auto expected = encode(text, EncodeOptions{.leader = 5, .trailer = 5});  // exactly as written
     Process tape({"feed", sample_path("gost-20999-format-example.txt"), pty.device("baud=38400&flow=xonxoff"),
                   "--leader", "5", "--trailer", "5", "--rate", "2000"},
                  dir);

@@ -222,12 +222,33 @@ TEST(FramesToSend, AnImageGoesAsItIsUnlessNewBlankEndsAreAsked) {
     EXPECT_NE(sent[1], blank_frame);
 }
 
-TEST(FramesToSend, ATextProgramIsEncodedWithPercentBlocks) {
+TEST(FramesToSend, ATextProgramIsSentAsWrittenUnlessAskedToWrapIt) {
     FeedOptions o;
     o.encode.leader = o.encode.trailer = 0;
-    auto in = open_bytes("N1 M30", "-", {}, 2);
-    auto sent = frames_to_send(in, o);
-    EXPECT_EQ(sent, encode("%\nN1 M30\n%", o.encode));
+    auto sent = [&](const std::string& text) {
+        auto in = open_bytes(text, "-", {}, 2);
+        return frames_to_send(in, o);
+    };
+    EXPECT_EQ(sent("N1 M30"), encode("N1 M30\n", o.encode));
+    EXPECT_EQ(sent("%\nN1 M30\n%\n"), encode("%\nN1 M30\n%\n", o.encode));
+    o.percent = true;
+    EXPECT_EQ(sent("N1 M30"), encode("%\nN1 M30\n%", o.encode));
+    EXPECT_EQ(sent("%\nN1 M30\n"), encode("%\nN1 M30\n%", o.encode));
+    // Never doubled: a program that ends with its '%' already is sent as it is.
+    EXPECT_EQ(sent("%\nN1 M30\n%\n"), encode("%\nN1 M30\n%\n", o.encode));
+    EXPECT_EQ(sent("%\n"), encode("%\n%", o.encode));
+}
+
+TEST(FramesToSend, FanucSemicolonsBecomeEndsOfBlock) {
+    FeedOptions o;
+    o.encode.leader = o.encode.trailer = 0;
+    o.dialect = Dialect::fanuc;
+    auto in = open_bytes("%\nO1000;\nG00 X1 ;\nG01 X2 F100; G01 X3\n(NOTE; KEPT)\nM30;\n%\n", "-", {}, 3);
+    DialectChoice chosen;
+    EXPECT_EQ(frames_to_send(in, o, &chosen),
+              encode("%\nO1000\nG00 X1\nG01 X2 F100\nG01 X3\n(NOTE; KEPT)\nM30\n%\n", o.encode));
+    EXPECT_EQ(chosen.dialect, Dialect::fanuc);
+    EXPECT_EQ(semicolons_to_line_ends("G1 X1;"), "G1 X1\n");
 }
 
 TEST(Input, AByteOrderMarkIsSkippedWithANote) {

@@ -109,30 +109,49 @@ void refuse_binary_terminal(const std::string& path, bool binary, bool force);
 /// and a binary image on a terminal without force.
 void write_output(const std::string& path, const std::string& data, bool binary, bool force);
 
-/// Options saying how IN is read: as decode's, plus --input text|image|auto.
+/// Options saying how IN is read: as decode's, plus --input text|image|auto, --dialect, and for the
+/// commands that only look (blocks, lint, search) --keep-going past bad frames.
 struct ProgramSource {
     CodeChoice choice;
     std::string format;
     std::string kind = "auto";
+    std::string dialect = "auto";
+    bool keep_going = false;
 };
-void add_program_source_options(CLI::App* sub, ProgramSource& source);
+void add_program_source_options(CLI::App* sub, ProgramSource& source, bool with_keep_going = false);
+/// --dialect alone (feed reads programs but not through the loader's listing).
+void add_dialect_option(CLI::App* sub, std::string& dialect);
+tape::LoadOptions load_options(const ProgramSource& source);
+/// "dialect fanuc (O program numbers, Custom Macro B)" with -v.
+void say_dialect(const std::string& name, const tape::DialectChoice& choice);
 /// IN opened for the loader: an image (by --format, extension, or content) decoded with positions,
 /// or a text program.
 struct ProgramInput {
     std::string name;  ///< for messages
     bool from_tape = false;
+    tape::LoadOptions load;
+    bool keep_going = false;
+    bool damaged = false;  ///< bad frames were read past (--keep-going): the command ends with exit 1
     std::unique_ptr<tape::Input> input;
     tape::LoadedTape tape;  ///< filled by load_program_whole only
 };
 ProgramInput open_program(const std::string& path, const ProgramSource& source);
 /// Streams IN's programs into visitor. A bad frame is printed and ends the program with exit 1, as
-/// decode does; so does a text program that is not clean text.
-void load_program(ProgramInput& in, tape::ProgramVisitor& visitor);
+/// decode does; so does a text program that is not clean text. With --keep-going the bad frames are
+/// printed (or, frames_to_visitor, given to the visitor among its findings) and loading goes on;
+/// end_program then ends with exit 1.
+void load_program(ProgramInput& in, tape::ProgramVisitor& visitor, bool frames_to_visitor = false);
+/// After a --keep-going run over bad frames: says how else the tape reads, and exits 1.
+void end_program(const ProgramInput& in);
 /// The whole of IN's programs into in.tape, for the commands that need all of it at once.
 void load_program_whole(ProgramInput& in);
 
 /// A JSON string literal for s (UTF-8 passed through, controls escaped).
 std::string json_string(const std::string& s);
+/// A number, or null.
+std::string json_number(const std::optional<std::uint64_t>& n);
+/// {"rule", "severity", "frame", "line", "column", "block", "message"}: one finding as tape(1) documents it.
+std::string finding_json(const tape::Diagnostic& f);
 
 /// "frame 137" for tapes, "line 3" for text.
 std::string position_text(const tape::Location& where, bool from_tape);

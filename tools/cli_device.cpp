@@ -72,11 +72,10 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
         ->capture_default_str()
         ->each([&p](const std::string&) { p.trailer_given = true; });
     sub->add_flag("--crlf", p.crlf, "End blocks with CR LF instead of LF (text programs, ISO)");
-    sub->add_flag("!--no-percent", p.percent_first, "Do not put a '%' block first when the program has none");
-    sub->add_option("--end", p.end,
-                    "After the program: percent (a '%', then the trailer) or none (the trailer only, for M30 tapes)")
-        ->check(CLI::IsMember({"percent", "none"}))
-        ->capture_default_str();
+    sub->add_flag("--percent", p.percent,
+                  "Text programs: put a '%' block first when the program has none, and a '%' after it when it does "
+                  "not end with one (never doubled); by default the program is sent exactly as written");
+    add_dialect_option(sub, p.dialect);
     sub->add_option("--format,-f", p.format,
                     "Image format of IN (IN is then a tape image), and of a file: device: " + format_choices(false))
         ->check(format_check(false));
@@ -100,10 +99,13 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
     o.encode.eia_table = globals().table();
     o.replace_leader = p.leader_given;
     o.replace_trailer = p.trailer_given;
-    o.percent_first = p.percent_first;
-    o.percent_end = p.end == "percent";
+    o.percent = p.percent;
+    o.dialect = tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic);
     try {
-        return tape::frames_to_send(*input, o);
+        tape::DialectChoice chosen;
+        auto frames = tape::frames_to_send(*input, o, &chosen);
+        if (!input->is_image()) say_dialect(name, chosen);
+        return frames;
     } catch (const tape::Error& e) {
         fail(name, e);
     }

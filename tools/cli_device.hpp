@@ -44,10 +44,10 @@ struct FeedProfile {
     CodeChoice choice;
     std::size_t leader = tape::default_leader, trailer = tape::default_trailer;
     bool leader_given = false, trailer_given = false;
-    bool crlf = false;            ///< CR LF at the end of each block
-    bool percent_first = true;    ///< a '%' block first when the program has none
-    std::string end = "percent";  ///< "percent": a '%' after the program; "none"
-    std::string format;           ///< image format of IN, when an image
+    bool crlf = false;             ///< CR LF at the end of each block
+    bool percent = false;          ///< wrap a text program in '%' ... '%' where it lacks them
+    std::string dialect = "auto";  ///< how a text program is read (Fanuc's ';' ends of block)
+    std::string format;            ///< image format of IN, when an image
     std::string kind = "auto";
 };
 void add_feed_profile_options(CLI::App* sub, FeedProfile& p);

@@ -14,8 +14,6 @@ struct BlocksArgs {
     std::string lang = "en";
 };
 
-std::string optional_number(const std::optional<std::uint64_t>& n) { return n ? std::to_string(*n) : "null"; }
-
 std::string explanation(const tape::Block& b, bool russian) {
     std::string out;
     for (const auto& w : b.words) {
@@ -28,13 +26,33 @@ std::string explanation(const tape::Block& b, bool russian) {
     return out;
 }
 
-std::string finding_json(const tape::Finding& f) {
-    return "{\"rule\": " + json_string(std::string(f.id())) +
-           ", \"severity\": " + json_string(std::string(tape::severity_name(f.severity))) +
-           ", \"frame\": " + optional_number(f.where.frame) + ", \"line\": " + optional_number(f.where.line) +
-           ", \"column\": " + optional_number(f.where.column) +
-           ", \"block\": " + std::to_string(f.where.block.value_or(0)) + ", \"message\": " + json_string(f.message) +
-           "}";
+std::string statement_kind(tape::Statement::Kind k) {
+    using K = tape::Statement::Kind;
+    switch (k) {
+        case K::assignment:
+            return "assignment";
+        case K::if_goto:
+            return "if-goto";
+        case K::if_then:
+            return "if-then";
+        case K::go_to:
+            return "goto";
+        case K::while_do:
+            return "while-do";
+        case K::loop_do:
+            return "do";
+        case K::loop_end:
+            return "end";
+        case K::output:
+            return "output";
+        case K::o_word:
+            return "o-word";
+    }
+    return "";
+}
+
+std::string location_json(const tape::Location& l) {
+    return "{\"frame\": " + json_number(l.frame) + ", \"line\": " + std::to_string(l.line) + "}";
 }
 
 // Blocks are written as the loader gives them, so that a tape of any length lists in bounded memory:
@@ -60,8 +78,8 @@ public:
         if (a_.json)
             out_ += std::string(programs_ ? ", " : "") +
                     "{\"number\": " + (p.number ? json_string(*p.number) : "null") +
-                    ", \"first_frame\": " + optional_number(p.start.frame) +
-                    ", \"line\": " + std::to_string(p.start.line) + ", \"blocks\": [";
+                    ", \"first_frame\": " + json_number(p.start.frame) + ", \"line\": " + std::to_string(p.start.line) +
+                    ", \"blocks\": [";
         else
             out_ += "program " + (p.number ? *p.number : "(no number)") + " at " + position_text(p.start, from_tape_) +
                     "\n";
@@ -70,19 +88,33 @@ public:
     void block(const tape::Block& b) override {
         if (b.ends_program()) ended_ = true;
         if (a_.json) {
-            out_ += std::string(blocks_ ? ", " : "") + "{\"frame\": " + optional_number(b.where.frame) +
-                    ", \"line\": " + std::to_string(b.where.line) +
+            out_ += std::string(blocks_ ? ", " : "") + "{\"frame\": " + json_number(b.where.frame) +
+                    ", \"line\": " + std::to_string(b.where.line) + ", \"column\": " + std::to_string(b.where.column) +
+                    ", \"source\": " + json_string(b.source) +
                     ", \"number\": " + (b.number ? json_string(b.number->text) : "null") +
                     ", \"main\": " + (b.main ? "true" : "false") + ", \"skip\": " + (b.skip ? "true" : "false") +
-                    ", \"words\": [";
-            for (std::size_t w = 0; w < b.words.size(); ++w) out_ += (w ? ", " : "") + json_string(b.words[w].text);
-            out_ += "], \"comments\": [";
+                    ", \"skip_level\": " + std::to_string(b.skip_level) +
+                    ", \"ends_program\": " + (b.ends ? "true" : "false") + ", \"words\": [";
+            std::string flagged;
+            for (std::size_t w = 0; w < b.words.size(); ++w) {
+                out_ += (w ? ", " : "") + json_string(b.words[w].text);
+                if (!b.words[w].known) flagged += (flagged.empty() ? "" : ", ") + json_string(b.words[w].text);
+            }
+            out_ += "], \"flagged\": [" + flagged + "], \"comments\": [";
             for (std::size_t c = 0; c < b.comments.size(); ++c)
                 out_ += (c ? ", " : "") + json_string(b.comments[c].text);
+            out_ += "], \"statements\": [";
+            for (std::size_t s = 0; s < b.statements.size(); ++s)
+                out_ += std::string(s ? ", " : "") + "{\"kind\": " + json_string(statement_kind(b.statements[s].kind)) +
+                        ", \"text\": " + json_string(b.statements[s].text) + "}";
             out_ += "]}";
         } else {
             std::string pos = position_text(b.where, from_tape_);
             out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + b.text();
+            std::string flagged;
+            for (const auto& w : b.words)
+                if (!w.known) flagged += (flagged.empty() ? "" : " ") + w.text;
+            if (!flagged.empty()) out_ += "    ! not read: " + flagged;
             if (a_.explain) {
                 std::string e = explanation(b, a_.lang == "ru");
                 if (!e.empty()) out_ += "    ; " + e;
@@ -93,6 +125,13 @@ public:
         if (out_.size() >= 64 << 10) flush();
     }
     void after_end(std::string_view text, const tape::Location&) override { after_end_ += text; }
+    void dialect(const tape::DialectChoice& choice) override { dialect_ = tape::dialect_name(choice.dialect); }
+    void record_end(const tape::Location& where, bool closes_program) override {
+        if (closes_program) ended_ = true;
+        close_program();
+        record_end_ = where;
+        if (!a_.json) out_ += "% end of record (rewind stop) at " + position_text(where, from_tape_) + "\n";
+    }
     void finding(const tape::Finding& f) override {
         say(name_, position_text(f.where, from_tape_) + ": " + std::string(tape::severity_name(f.severity)) + ": " +
                        f.message);
@@ -103,7 +142,9 @@ public:
         close_program();
         flush_label();
         if (a_.json)
-            out_ += "], \"label\": " + json_string(label_) +
+            out_ += "], \"dialect\": " + json_string(std::string(dialect_)) +
+                    ", \"record_end\": " + (record_end_ ? location_json(*record_end_) : "null") +
+                    ", \"label\": " + json_string(label_) +
                     ", \"physical_start\": " + (physical_start_ ? "true" : "false") + ", \"diagnostics\": [" +
                     findings_ + "]}\n";
         flush();
@@ -139,6 +180,8 @@ private:
     const std::string& name_;
     bool from_tape_;
     std::string out_, label_, after_end_, findings_;
+    std::string_view dialect_ = "gost";
+    std::optional<tape::Location> record_end_;
     bool label_done_ = false, physical_start_ = false, in_program_ = false, ended_ = false;
     std::uint64_t programs_ = 0, blocks_ = 0;
 };
@@ -148,6 +191,7 @@ void run(const BlocksArgs& a) {
     Lister lister(a, in.name, in.from_tape);
     load_program(in, lister);
     lister.finish();
+    end_program(in);
 }
 
 }  // namespace
@@ -156,7 +200,7 @@ void add_blocks(CLI::App& app) {
     auto a = std::make_shared<BlocksArgs>();
     auto* sub = app.add_subcommand("blocks", "List the programs and blocks (кадры) on a tape or in a text program");
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
-    add_program_source_options(sub, a->source);
+    add_program_source_options(sub, a->source, true);
     sub->add_flag("--json", a->json, "JSON for other programs (schema in tape(1))");
     sub->add_flag("--explain", a->explain, "Name the G and M functions of each block (ГОСТ 20999-83 tables 4-8)");
     sub->add_option("--lang", a->lang, "Language of --explain: en or ru")

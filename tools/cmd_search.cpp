@@ -79,6 +79,7 @@ void run(SearchArgs a, const CLI::App& sub) {
     std::string out;
     for (const auto& h : searcher.hits()) out += hit(in, h.where, h.text);
     std::string where = std::string(in.from_tape ? "frame " : "line ") + std::to_string(a.from);
+    if (out.empty() && in.damaged) end_program(in);
     if (out.empty()) {
         std::string what = q.kind == Kind::main_block
                                ? std::string("no main block") +
@@ -89,6 +90,7 @@ void run(SearchArgs a, const CLI::App& sub) {
         fail(in.name, tape::Errc::not_in_code, what);
     }
     write_output("-", out, false, false);
+    end_program(in);
 }
 
 }  // namespace
@@ -111,7 +113,7 @@ void add_search(CLI::App& app) {
     sub->add_option("--from", a->from, "Frame (line, for text) to search from; default the start")
         ->check(whole_number(1, std::numeric_limits<std::int64_t>::max()))
         ->capture_default_str();
-    add_program_source_options(sub, a->source);
+    add_program_source_options(sub, a->source, true);
     sub->callback([a, sub] {
         if (!sub->count("--main") && !a->rewind && a->program.empty() && !a->block)
             throw CLI::RequiredError("one of --main, --rewind, --program, --block");

@@ -90,10 +90,10 @@ private:
 /// Streams the programs of input into visitor, in bounded memory. A bad frame reaches
 /// visitor.finding() as its Diagnostic (Errc::parity, Errc::not_in_code) where it stands among the
 /// loader's findings; unless decode.keep_going, loading stops there and false is returned.
-bool load_each(Input& input, ProgramVisitor& visitor);
+bool load_each(Input& input, ProgramVisitor& visitor, const LoadOptions& options = {});
 
 /// The whole contents in memory, for the commands that need all of it at once; bad frames are
 /// among tape.findings. Returns false with what was loaded when a bad frame stopped decoding.
-bool load(Input& input, LoadedTape& tape);
+bool load(Input& input, LoadedTape& tape, const LoadOptions& options = {});
 
 }  // namespace tape

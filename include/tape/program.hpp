@@ -103,6 +103,7 @@ Finding program_finding(std::string_view rule, const Location& where, std::uint6
 /// The contents of a tape: the label section, the programs, and what the loader found wrong.
 struct LoadedTape {
     Dialect dialect = Dialect::gost;       ///< the dialect it was read in
+    std::string dialect_reason;            ///< why, when it was chosen automatically
     std::string label;                     ///< before the first '%' (§1.8): kept and shown, never executed
     bool physical_start = false;           ///< "%%": the physical start of the tape (§1.8)
     std::optional<Location> record_end{};  ///< the '%' after the last program: end of record, rewind stop
@@ -140,13 +141,13 @@ public:
     virtual void end(const Location& where) { (void)where; }
 };
 
-/// The loader fed a piece of text at a time, in bounded memory (a line is held until its LF comes):
-/// the same findings and blocks as load() however the text is cut.
 /// How text is read into programs.
 struct LoadOptions {
     Dialect dialect = Dialect::gost;  ///< automatic: chosen from the first 64 KiB (guess_dialect)
 };
 
+/// The loader fed a piece of text at a time, in bounded memory (a line is held until its LF comes):
+/// the same findings and blocks as load() however the text is cut.
 class ProgramLoader {
 public:
     explicit ProgramLoader(ProgramVisitor& visitor, const LoadOptions& options = {});

@@ -57,6 +57,7 @@ public:
     explicit Searcher(SearchQuery query) : query_(std::move(query)) {}
     void program_start(const Program& header) override;
     void block(const Block& block) override;
+    void record_end(const Location& where, bool closes_program) override;
     /// The hits in tape order (the rewind stop: the one last before from).
     const std::vector<SearchHit>& hits() const { return hits_; }
 

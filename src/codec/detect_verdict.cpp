@@ -132,9 +132,9 @@ CodeDetection Detector::result() const {
         if (r.code == Code::eia) {
             d.kind = TapeKind::eia;
             d.code = Code::eia;
-            d.reason = "EIA: odd parity on track 5 in " + n(e.parity.odd) + " of " + n(e.punched) +
-                       " punched frames" + damage + ", end of block " + n(best->end_of_blocks) + " track 8 alone, " +
-                       n(e.iso_lf) + " LF (ISO)" + whole_text(e);
+            d.reason = "EIA: odd parity on track 5 in " + n(e.parity.odd) + " of " + n(e.punched) + " punched frames" +
+                       damage + ", end of block " + n(best->end_of_blocks) + " track 8 alone, " + n(e.iso_lf) +
+                       " LF (ISO)" + whole_text(e);
         } else if (r.parity == Parity::even) {
             d.kind = TapeKind::iso;
             d.code = Code::iso;
@@ -147,16 +147,15 @@ CodeDetection Detector::result() const {
                        n(e.punched - e.parity.misfits(r.parity)) + " of " + n(e.punched) + " punched frames fit it, " +
                        n(best->end_of_blocks) + " line ends (LF)";
             if (!d.clean)
-                d.reason += "; but read that way " + n(best->bad_frames) + " frame(s) fail and " +
-                            n(best->controls) + " are control characters";
+                d.reason += "; but read that way " + n(best->bad_frames) + " frame(s) fail and " + n(best->controls) +
+                            " are control characters";
             d.reason += "; " + counts;
             if (d.clean) d.hint = hint_for(r);
         }
         return d;
     }
-    std::string closest =
-        "no character code fits; the closest, " + reading_name(best->reading) + ", fails " + n(score(*best)) + " of " +
-        frames_text(frames);
+    std::string closest = "no character code fits; the closest, " + reading_name(best->reading) + ", fails " +
+                          n(score(*best)) + " of " + frames_text(frames);
     if (score(*best) * 2 > frames || e.longest_0x80_run >= leader_run) {
         d.kind = TapeKind::binary;
         d.reason = "binary tape, not a character code: " + closest;

@@ -169,8 +169,8 @@ bool Input::next_text(DecodeResult& out) {
     return true;
 }
 
-bool load_each(Input& input, ProgramVisitor& visitor) {
-    ProgramLoader loader(visitor);
+bool load_each(Input& input, ProgramVisitor& visitor, const LoadOptions& options) {
+    ProgramLoader loader(visitor, options);
     DecodeResult piece;
     bool positions = input.is_image() && input.decode_options().positions;
     while (input.next_text(piece)) {
@@ -186,7 +186,7 @@ bool load_each(Input& input, ProgramVisitor& visitor) {
     return true;
 }
 
-bool load(Input& input, LoadedTape& tape) {
+bool load(Input& input, LoadedTape& tape, const LoadOptions& options) {
     DecodeResult all;
     bool complete = true;
     while (input.next_text(all))
@@ -194,7 +194,7 @@ bool load(Input& input, LoadedTape& tape) {
             complete = false;
             break;
         }
-    tape = load(std::move(all.text), std::move(all.frame_of));
+    tape = load(std::move(all.text), std::move(all.frame_of), options);
     tape.findings.insert(tape.findings.begin(), all.diagnostics.begin(), all.diagnostics.end());
     return complete;
 }

@@ -4,6 +4,8 @@
 #include <array>
 #include <cctype>
 #include <cstdint>
+#include <initializer_list>
+#include <utility>
 
 namespace tape {
 namespace {
@@ -29,13 +31,23 @@ bool starts_word(std::string_view s, std::size_t i, std::string_view word) {
 // Evidence found in one line outside comments.
 struct Evidence {
     std::uint64_t o_numbers = 0, macro = 0, lowercase = 0, o_words = 0, named = 0, semicolon_comment = 0,
-                  semicolon_end = 0, main_blocks = 0, percent_number = 0, percent_lines = 0, lines = 0;
+                  semicolon_end = 0, main_blocks = 0, percent_number = 0, percent_lines = 0, lines = 0,
+                  linuxcnc_codes = 0, fanuc_codes = 0, names_linuxcnc = 0, names_fanuc = 0;
 };
+
+bool mentions(std::string_view line, std::string_view name) {
+    for (std::size_t i = 0; i + name.size() <= line.size(); ++i)
+        if (starts_word(line, i, name)) return true;
+    return false;
+}
 
 void scan_line(std::string_view line, Evidence& e) {
     std::size_t i = line.find_first_not_of(" \t\r");
     if (i == std::string_view::npos) return;
     ++e.lines;
+    // CAM posts name their controller in the header: "(POST LINUXCNC.CPS ...)", "(FANUC 0I-MF)".
+    e.names_linuxcnc += mentions(line, "LINUXCNC");
+    e.names_fanuc += mentions(line, "FANUC");
     if (line[i] == '%') {
         ++e.percent_lines;
         std::size_t j = line.find_first_not_of(" \t\r%", i);
@@ -45,8 +57,7 @@ void scan_line(std::string_view line, Evidence& e) {
     if (line[i] == '/') i = line.find_first_not_of(" \t\r/0123456789", i);
     if (i == std::string_view::npos) return;
     if (line[i] == ':') ++e.main_blocks;
-    if (line[i] == 'O' && i + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[i + 1])))
-        ++e.o_numbers;
+    if (line[i] == 'O' && i + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[i + 1]))) ++e.o_numbers;
     int depth = 0;
     bool lower = false;
     for (std::size_t k = i; k < line.size(); ++k) {
@@ -67,6 +78,11 @@ void scan_line(std::string_view line, Evidence& e) {
             std::isdigit(static_cast<unsigned char>(line[k + 1])))
             ++e.o_words;
         lower |= c >= 'a' && c <= 'z';
+        // Codes only one family has: LinuxCNC's G64 P, G91.1, G33.1, G38.n; Fanuc's M98 subprogram call.
+        if (starts_word(line, k, "G91.1") || starts_word(line, k, "G90.1") || starts_word(line, k, "G33.1") ||
+            starts_word(line, k, "G38.") || starts_word(line, k, "G64 P") || starts_word(line, k, "G64P"))
+            ++e.linuxcnc_codes;
+        if (starts_word(line, k, "M98")) ++e.fanuc_codes;
         if (starts_word(line, k, "WHILE") || starts_word(line, k, "GOTO") || starts_word(line, k, "IF[") ||
             starts_word(line, k, "IF [") || starts_word(line, k, "G65") || starts_word(line, k, "M99") ||
             (c == '#' && k + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[k + 1]))))
@@ -75,7 +91,13 @@ void scan_line(std::string_view line, Evidence& e) {
     e.lowercase += lower;
 }
 
-std::string count(std::uint64_t n, std::string_view what) { return std::to_string(n) + " " + std::string(what); }
+// "3 O program number(s), 12 macro statement(s)": only the evidence that was found.
+std::string evidence(std::initializer_list<std::pair<std::uint64_t, std::string_view>> items) {
+    std::string out;
+    for (const auto& [n, what] : items)
+        if (n) out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + std::string(what);
+    return out;
+}
 
 }  // namespace
 
@@ -113,23 +135,29 @@ DialectChoice guess_dialect(std::string_view text) {
         scan_line(text.substr(b, end - b), e);
         b = end + 1;
     }
-    std::uint64_t linuxcnc = e.lowercase + e.o_words * 4 + e.named * 4 + e.semicolon_comment;
-    std::uint64_t fanuc = e.o_numbers * 4 + e.macro * 2 + e.semicolon_end;
+    std::uint64_t linuxcnc =
+        e.lowercase + e.o_words * 4 + e.named * 4 + e.semicolon_comment + e.linuxcnc_codes * 2 + e.names_linuxcnc * 4;
+    std::uint64_t fanuc = e.o_numbers * 4 + e.macro * 2 + e.semicolon_end + e.fanuc_codes * 2 + e.names_fanuc * 4;
     std::uint64_t gost = e.main_blocks * 4 + e.percent_number * 4;
     if (fanuc > linuxcnc && fanuc > gost)
-        return {Dialect::fanuc, "fanuc: " + count(e.o_numbers, "O program number(s)") + ", " +
-                                    count(e.macro, "macro statement(s)") + ", " +
-                                    count(e.semicolon_end, "';' end(s) of block")};
+        return {Dialect::fanuc, evidence({{e.o_numbers, "O program number(s)"},
+                                          {e.macro, "macro statement(s)"},
+                                          {e.semicolon_end, "';' end(s) of block"},
+                                          {e.fanuc_codes, "M98 call(s)"},
+                                          {e.names_fanuc, "line(s) naming Fanuc"}})};
     if (linuxcnc > gost && linuxcnc > 0)
-        return {Dialect::linuxcnc, "linuxcnc: " + count(e.lowercase, "line(s) with lowercase words") + ", " +
-                                       count(e.o_words, "o-word(s)") + ", " + count(e.named, "named parameter(s)") +
-                                       ", " + count(e.semicolon_comment, "';' comment(s)")};
+        return {Dialect::linuxcnc, evidence({{e.lowercase, "line(s) with lowercase words"},
+                                             {e.o_words, "o-word(s)"},
+                                             {e.named, "named parameter(s)"},
+                                             {e.semicolon_comment, "';' comment(s)"},
+                                             {e.linuxcnc_codes, "LinuxCNC-only G code(s)"},
+                                             {e.names_linuxcnc, "line(s) naming LinuxCNC"}})};
     if (gost > 0)
-        return {Dialect::gost, "gost: " + count(e.main_blocks, "':' main block(s)") + ", " +
-                                   count(e.percent_number, "'%' with a program number")};
+        return {Dialect::gost,
+                evidence({{e.main_blocks, "':' main block(s)"}, {e.percent_number, "'%' with a program number"}})};
     if (e.percent_lines == 0 && e.lines > 0)
-        return {Dialect::linuxcnc, "linuxcnc: no '%' anywhere, so no ГОСТ tape program; nothing else decides"};
-    return {Dialect::gost, "gost: nothing in the text needs another dialect"};
+        return {Dialect::linuxcnc, "no '%' anywhere, so no ГОСТ tape program; nothing else decides"};
+    return {Dialect::gost, "nothing in the text needs another dialect"};
 }
 
 }  // namespace tape

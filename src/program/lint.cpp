@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <functional>
+#include <utility>
 
 #include "tape/functions.hpp"
 #include "tape/rules.hpp"
@@ -99,11 +100,10 @@ void word_checks(Add out, const Block& b, Dialect dialect) {
                 // On a Fanuc lathe G90, G92 and G94 are turning cycles, not of the groups of table 4.
                 bool lathe_cycle =
                     dialect == Dialect::fanuc && (*w.integer() == 90 || *w.integer() == 92 || *w.integer() == 94);
-                if (lathe_cycle) {
-                } else if (group[g])
+                if (!lathe_cycle && group[g])
                     add(out, "g-group", w.where, b.ordinal,
                         w.text + " and " + group[g]->text + " are both of group " + f->group + " (§2.5, table 4)");
-                else
+                else if (!lathe_cycle)
                     group[g] = &w;
             }
         if (w.sign && unsigned_addresses.find(w.address) != std::string_view::npos)
@@ -304,8 +304,9 @@ void LintVisitor::close_program() {
 
 std::vector<Finding> LintVisitor::findings() const {
     std::vector<Finding> sorted = out_;
-    std::stable_sort(sorted.begin(), sorted.end(),
-                     [](const Finding& a, const Finding& b) { return a.where.byte < b.where.byte; });
+    // On a tape the frame orders: a bad frame's byte is in the image, a finding's in the decoded text.
+    auto key = [](const Finding& f) { return std::pair(f.where.frame.value_or(0), f.where.byte.value_or(0)); };
+    std::stable_sort(sorted.begin(), sorted.end(), [&](const Finding& a, const Finding& b) { return key(a) < key(b); });
     return sorted;
 }
 

@@ -36,9 +36,9 @@ char upper(char c) { return is_lower(c) ? static_cast<char>(c - 'a' + 'A') : c; 
 
 constexpr std::array<std::string_view, 9> macro_keywords = {"IF",    "GOTO",  "WHILE", "DO",   "END",
                                                             "POPEN", "PCLOS", "DPRNT", "BPRNT"};
-constexpr std::array<std::string_view, 15> o_keywords = {"SUB",    "ENDSUB", "CALL",   "RETURN",   "IF",
-                                                         "ELSEIF", "ELSE",   "ENDIF",  "WHILE",    "ENDWHILE",
-                                                         "DO",     "REPEAT", "ENDREPEAT", "BREAK", "CONTINUE"};
+constexpr std::array<std::string_view, 15> o_keywords = {"SUB",    "ENDSUB", "CALL",      "RETURN", "IF",
+                                                         "ELSEIF", "ELSE",   "ENDIF",     "WHILE",  "ENDWHILE",
+                                                         "DO",     "REPEAT", "ENDREPEAT", "BREAK",  "CONTINUE"};
 bool listed(std::string_view name, std::span<const std::string_view> list) {
     return std::find(list.begin(), list.end(), name) != list.end();
 }
@@ -73,7 +73,7 @@ void Loader::feed(std::string_view text, std::span<const std::uint64_t> frame_of
     auto choice = guess_dialect(sniff_);
     choose(choice.dialect, std::move(choice.reason));
     feed_lines(sniff_, sniff_frames_.size() == sniff_.size() ? std::span<const std::uint64_t>(sniff_frames_)
-                                                            : std::span<const std::uint64_t>());
+                                                             : std::span<const std::uint64_t>());
     sniff_ = {};
     sniff_frames_ = {};
 }
@@ -295,7 +295,8 @@ void Loader::open_pending(std::size_t pct, std::size_t e, bool from_label) {
         if (!any_program_ && from_label)
             v_.physical_start();
         else
-            find("program-start", i, 0, "'%%' marks the physical start of the tape only before the first program (§1.8)");
+            find("program-start", i, 0,
+                 "'%%' marks the physical start of the tape only before the first program (§1.8)");
         i = skip_blanks(i + 1, e);
     }
     std::string number;
@@ -447,7 +448,8 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
                 i = flagged(i, end, statement_end(i, end),
                             "is a Custom Macro B statement, which this dialect does not have (try --dialect fanuc)");
             else
-                i = flagged(i, end, i + name.size() + macro::value_length(text_.substr(0, end), i + name.size(), linuxcnc_),
+                i = flagged(i, end,
+                            i + name.size() + macro::value_length(text_.substr(0, end), i + name.size(), linuxcnc_),
                             "is no word: an address is one letter followed by its value");
         } else if (is_upper(c) || (is_lower(c) && rules_->lowercase)) {
             word(i, end, &i, blk.ordinal, next_word());
@@ -513,8 +515,8 @@ void Loader::word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t
                 auto s = text_.substr(i + 1, n);
                 auto sign = s.find_first_not_of(" \t\r");
                 if (sign != std::string_view::npos && (s[sign] == '+' || s[sign] == '-')) w.sign = s[sign];
-                if (auto problem = macro::check_expression(s.substr(sign == std::string_view::npos ? 0 : sign + (w.sign != 0)),
-                                                           linuxcnc_))
+                if (auto problem = macro::check_expression(
+                        s.substr(sign == std::string_view::npos ? 0 : sign + (w.sign != 0)), linuxcnc_))
                     macro_problem(i, "the value of " + w.text + ": " + *problem);
                 *next = i + 1 + n;
                 return;
@@ -550,8 +552,7 @@ void Loader::word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t
             if (!is_blank(c)) w.text += c;
     }
     if (is_lower(text_[i]) && !rules_->lowercase) return;  // flagged as a whole by the caller
-    if (digits == 0)
-        find("no-digits", i, block_no, "the word " + w.text + " has no digits (§3.1.1)");
+    if (digits == 0) find("no-digits", i, block_no, "the word " + w.text + " has no digits (§3.1.1)");
     if (points > 1)
         find("two-points", i, block_no, "the word " + w.text + " has " + std::to_string(points) + " decimal points");
 }
@@ -626,7 +627,8 @@ std::size_t Loader::macro_statement(std::size_t i, std::size_t e, const std::str
         } else if (next == "THEN") {
             s.kind = K::if_then;
             k = skip_blanks(k + 4, end);
-            if (k >= end || text_[k] != '#') macro_problem(k, "IF [...] THEN needs an assignment after THEN");
+            if (k >= end || text_[k] != '#')
+                macro_problem(k, "IF [...] THEN needs an assignment after THEN");
             else {
                 std::size_t statements = blk_.statements.size();
                 assignment(k, end);
@@ -760,30 +762,28 @@ std::size_t Loader::comment(std::size_t open, std::size_t e) {
     return closed ? close + 1 : e;
 }
 
-// One finding for a run of characters that belong nowhere; the run is kept as a flagged word.
+// One finding for a run of characters that belong nowhere, or for a '/', ':' or '%' out of place;
+// the run is kept as a flagged word, so that nothing read is dropped.
 std::size_t Loader::unexpected(std::size_t i, std::size_t e, std::uint64_t block_no) {
     char c = text_[i];
-    if (c == '/' || c == ':' || c == '%') {
-        if (c == '/')
-            find("skip-position", i, block_no,
-                 "'/' (block skip) may stand only at the start of a block, before N or ':' (§2.7)");
-        else if (c == ':' && rules_->main_blocks)
-            find("main-position", i, block_no,
-                 "':' (main block) may stand only at the start of a block, in place of N (§2.6)");
-        else if (c == '%')
-            find("percent-in-block", i, block_no, "'%' (program start) inside a block");
-        if (c == '%') return i + 1;
-        if (c == '/' || rules_->main_blocks) {  // its number ("/2", ":20") belongs to the one finding
-            std::size_t j = i + 1;
-            while (j < e && is_digit(text_[j])) ++j;
-            return j;
-        }
+    std::size_t j = i + 1;
+    std::string message;
+    std::string_view rule = "unexpected-character";
+    if (c == '/' || (c == ':' && rules_->main_blocks)) {
+        while (j < e && is_digit(text_[j])) ++j;  // its number ("/2", ":20") belongs to the one finding
+        rule = c == '/' ? "skip-position" : "main-position";
+        message = c == '/' ? "'/' (block skip) may stand only at the start of a block, before N or ':' (§2.7)"
+                           : "':' (main block) may stand only at the start of a block, in place of N (§2.6)";
+    } else if (c == '%') {
+        rule = "percent-in-block";
+        message = "'%' (program start) inside a block";
+    } else {
+        j = i;
+        while (j < e && !is_blank(text_[j]) && !is_letter(text_[j]) && text_[j] != '(' && text_[j] != '#' &&
+               text_[j] != ';' && text_[j] != '%' && text_[j] != '/')
+            j += utf8::length(text_, j);
+        j = std::min(std::max(j, i + 1), e);
     }
-    std::size_t j = i;
-    while (j < e && !is_blank(text_[j]) && !is_letter(text_[j]) && text_[j] != '(' && text_[j] != '#' &&
-           text_[j] != ';' && text_[j] != '%' && text_[j] != '/')
-        j += utf8::length(text_, j);
-    j = std::min(std::max(j, i + 1), e);
     Word& w = next_word();
     w.address = c;
     w.where = at(i);
@@ -792,9 +792,10 @@ std::size_t Loader::unexpected(std::size_t i, std::size_t e, std::uint64_t block
     w.macro = false;
     w.known = false;
     w.text.assign(text_.substr(i, j - i));
-    find("unexpected-character", i, block_no,
-         "'" + w.text + "' is no part of an NC program outside comments" +
-             (rules_->dialect == Dialect::gost ? " (ГОСТ 20999-83 tables 1-3)" : ""));
+    if (message.empty())
+        message = "'" + w.text + "' is no part of an NC program outside comments" +
+                  (rules_->dialect == Dialect::gost ? " (ГОСТ 20999-83 tables 1-3)" : "");
+    find(rule, i, block_no, std::move(message));
     return j;
 }
 

@@ -7,8 +7,9 @@
 namespace tape::macro {
 namespace {
 
-constexpr std::array<std::string_view, 16> fanuc_functions = {
-    "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "BIN", "BCD", "ROUND", "FIX", "FUP", "LN", "EXP", "ADP"};
+constexpr std::array<std::string_view, 16> fanuc_functions = {"SIN",  "COS", "TAN", "ASIN", "ACOS",  "ATAN",
+                                                              "SQRT", "ABS", "BIN", "BCD",  "ROUND", "FIX",
+                                                              "FUP",  "LN",  "EXP", "ADP"};
 constexpr std::array<std::string_view, 14> linuxcnc_functions = {
     "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX", "FUP", "LN", "EXP", "EXISTS"};
 constexpr std::array<std::string_view, 10> operators = {"EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD"};
@@ -18,10 +19,13 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 bool is_function(std::string_view name, bool linuxcnc) {
-    if (linuxcnc) return std::find(linuxcnc_functions.begin(), linuxcnc_functions.end(), name) != linuxcnc_functions.end();
+    if (linuxcnc)
+        return std::find(linuxcnc_functions.begin(), linuxcnc_functions.end(), name) != linuxcnc_functions.end();
     return std::find(fanuc_functions.begin(), fanuc_functions.end(), name) != fanuc_functions.end();
 }
-bool is_operator(std::string_view name) { return std::find(operators.begin(), operators.end(), name) != operators.end(); }
+bool is_operator(std::string_view name) {
+    return std::find(operators.begin(), operators.end(), name) != operators.end();
+}
 
 std::size_t skip_blanks(std::string_view s, std::size_t i) {
     while (i < s.size() && is_blank(s[i])) ++i;
@@ -32,7 +36,8 @@ std::size_t skip_blanks(std::string_view s, std::size_t i) {
 
 std::string name_at(std::string_view s, std::size_t i) {
     std::string name;
-    for (; i < s.size() && is_letter(s[i]); ++i) name += static_cast<char>(std::toupper(static_cast<unsigned char>(s[i])));
+    for (; i < s.size() && is_letter(s[i]); ++i)
+        name += static_cast<char>(std::toupper(static_cast<unsigned char>(s[i])));
     return name;
 }
 
@@ -112,8 +117,8 @@ std::optional<std::string> check_expression(std::string_view e, bool linuxcnc) {
             std::size_t after = skip_blanks(e, i + name.size());
             if (is_function(name, linuxcnc)) {
                 if (after >= e.size() || e[after] != '[') return "the function " + name + " is not followed by '['";
-                } else if (is_operator(name)) {
-                } else {
+            } else if (is_operator(name)) {
+            } else {
                 return "'" + std::string(e.substr(i, name.size())) + "' is no function or operator";
             }
             i += name.size();

@@ -103,7 +103,10 @@ public:
         t_.record_end = where;
         if (closes_program && !t_.programs.empty()) t_.programs.back().ended = true;
     }
-    void dialect(const DialectChoice& choice) override { t_.dialect = choice.dialect; }
+    void dialect(const DialectChoice& choice) override {
+        t_.dialect = choice.dialect;
+        t_.dialect_reason = choice.reason;
+    }
     void finding(const Finding& f) override { t_.findings.push_back(f); }
 
 private:

@@ -12,7 +12,9 @@ void for_each_block(const LoadedTape& t, Fn fn) {
             if (!fn(BlockRef{&p, &b})) return;
 }
 
-std::string_view without_leading_zeros(std::string_view s) {
+// "O0012", ":12", "012" and "12" name one program: Fanuc writes its numbers with 'O' (or ':').
+std::string_view program_key(std::string_view s) {
+    if (!s.empty() && (s[0] == 'O' || s[0] == 'o' || s[0] == ':')) s.remove_prefix(1);
     while (s.size() > 1 && s[0] == '0') s.remove_prefix(1);
     return s;
 }
@@ -43,13 +45,13 @@ std::optional<BlockRef> find_main_block(const LoadedTape& t, std::uint64_t from,
 const Program* find_rewind_stop(const LoadedTape& t, std::uint64_t from) {
     const Program* stop = nullptr;
     for (const auto& p : t.programs)
-        if (p.start.offset < from) stop = &p;
+        if (p.percent && p.start.offset < from) stop = &p;  // a program without '%' has no stop
     return stop;
 }
 
 const Program* find_program(const LoadedTape& t, std::string_view number) {
     for (const auto& p : t.programs)
-        if (p.number && without_leading_zeros(*p.number) == without_leading_zeros(number)) return &p;
+        if (p.number && program_key(*p.number) == program_key(number)) return &p;
     return nullptr;
 }
 
@@ -78,11 +80,18 @@ bool Searcher::at_or_after_from(const Location& where) const {
 
 void Searcher::program_start(const Program& p) {
     using Kind = SearchQuery::Kind;
-    std::string text = "%" + p.number.value_or("");
-    if (query_.kind == Kind::rewind_stop && !at_or_after_from(p.start)) hits_.assign(1, SearchHit{p.start, text});
+    std::string text = p.percent ? "%" + p.number.value_or("") : p.number.value_or("");
+    if (query_.kind == Kind::rewind_stop && p.percent && !at_or_after_from(p.start))
+        hits_.assign(1, SearchHit{p.start, text});
     if (query_.kind == Kind::program && hits_.empty() && p.number &&
-        without_leading_zeros(*p.number) == without_leading_zeros(query_.program))
+        program_key(*p.number) == program_key(query_.program))
         hits_.push_back(SearchHit{p.start, text});
+}
+
+// The '%' after the last program (Fanuc's end of record, LinuxCNC's closing '%') stops a rewind too.
+void Searcher::record_end(const Location& where, bool) {
+    if (query_.kind == SearchQuery::Kind::rewind_stop && !at_or_after_from(where))
+        hits_.assign(1, SearchHit{where, "%"});
 }
 
 void Searcher::block(const Block& b) {
