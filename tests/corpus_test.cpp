@@ -92,12 +92,14 @@ TEST_P(Corpus, EveryCharacterOfEveryBlockIsKept) {
             for (const auto& c : b.comments) rebuilt += c.text;
             for (const auto& s : b.statements) rebuilt += s.text;
             auto non_blank = [](std::string s, std::string_view drop) {
-                std::erase_if(s, [&](char c) { return c == ' ' || c == '\t' || c == '\r' || drop.find(c) != drop.npos; });
+                std::erase_if(s,
+                              [&](char c) { return c == ' ' || c == '\t' || c == '\r' || drop.find(c) != drop.npos; });
                 std::sort(s.begin(), s.end());
                 return s;
             };
             std::string source = b.source.substr(b.skip ? (b.skip_level ? 2 : 1) : 0);
-            EXPECT_EQ(non_blank(source, "();"), non_blank(rebuilt, "();")) << "line " << b.where.line << ": " << b.source;
+            EXPECT_EQ(non_blank(source, "();"), non_blank(rebuilt, "();"))
+                << "line " << b.where.line << ": " << b.source;
         }
 }
 

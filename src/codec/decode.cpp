@@ -113,9 +113,9 @@ Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t in
     std::string what =
         parity ? "parity error" : (code.code() == Code::eia ? "not an EIA character" : "not a character");
     if (code.five_track_table()) what = "not a 5-track frame (tracks 6-8 punched)";
-    // Each LF ends a line and a block, so the line is the block too.
+    // The line, not the block: which lines are blocks only the loader knows.
     Position where{.frame = index + 1};
-    if (line) where.line = where.block = line;
+    if (line) where.line = line;
     return Diagnostic{parity ? Errc::parity : Errc::not_in_code, where, what + ", holes " + holes_picture(f)};
 }
 

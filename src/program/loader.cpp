@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <string>
+#include <utility>
 
 #include "codec/swar.hpp"
 #include "codec/utf8.hpp"
 #include "macro.hpp"
+#include "tape/decode.hpp"
 #include "tape/rules.hpp"
 
 namespace tape {
@@ -41,6 +44,29 @@ constexpr std::array<std::string_view, 15> o_keywords = {"SUB",    "ENDSUB", "CA
                                                          "DO",     "REPEAT", "ENDREPEAT", "BREAK",  "CONTINUE"};
 bool listed(std::string_view name, std::span<const std::string_view> list) {
     return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+// Russian keyboards type Cyrillic letters that look like Latin addresses: "Х+37." reads as X+37.
+std::string look_alike_hint(std::string_view token) {
+    static constexpr std::array<std::pair<std::string_view, char>, 14> pairs = {{{"А", 'A'},
+                                                                                 {"В", 'B'},
+                                                                                 {"С", 'C'},
+                                                                                 {"Е", 'E'},
+                                                                                 {"Н", 'H'},
+                                                                                 {"К", 'K'},
+                                                                                 {"М", 'M'},
+                                                                                 {"О", 'O'},
+                                                                                 {"Р", 'P'},
+                                                                                 {"Т", 'T'},
+                                                                                 {"Х", 'X'},
+                                                                                 {"У", 'Y'},
+                                                                                 {"З", 'Z'},
+                                                                                 {"І", 'I'}}};
+    for (const auto& [cyrillic, latin] : pairs)
+        if (token.starts_with(cyrillic))
+            return std::string(": its first letter is the Cyrillic ") + std::string(cyrillic) + ", not the Latin " +
+                   latin;
+    return "";
 }
 
 std::string_view trim_right(std::string_view s) {
@@ -206,6 +232,9 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
             percent_line(b, pct, e);
         } else if (rules_->needs_percent || blank) {
             v_.label(whole);
+        } else if (program_number_at(first, e)) {
+            start_numbered(first, e);
+            blocks_in_line(first, e);
         } else {
             Program p;
             p.start = at(first);
@@ -224,20 +253,14 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
             return;
         case State::pending:
             if (blank) return;
-            if (!pending_header_.number && program_number_at(first, e)) {
-                std::size_t digits = first + 1;
-                while (digits < e && is_digit(text_[digits])) ++digits;
-                pending_header_.number = std::string(text_.substr(first, digits - first));
-            }
+            if (!pending_header_.number && program_number_at(first, e))
+                pending_header_.number = program_number(first, e);
             start(std::move(pending_header_));
             blocks_in_line(first, e);
             return;
         case State::after_end:
             if (!blank && program_number_at(first, e)) {
-                Program p;
-                p.start = at(first);
-                p.percent = false;
-                start(std::move(p));
+                start_numbered(first, e);
                 blocks_in_line(first, e);
                 return;
             }
@@ -249,10 +272,7 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
         case State::program:
             if (!blank && last_block_ordinal_ && program_number_at(first, e)) {
                 unterminated();
-                Program p;
-                p.start = at(first);
-                p.percent = false;
-                start(std::move(p));
+                start_numbered(first, e);
             }
             blocks_in_line(first, e);
             return;
@@ -335,6 +355,22 @@ void Loader::start(Program p) {
     last_block_ordinal_ = 0;
     state_ = State::program;
     v_.program_start(p);
+}
+
+// "O1234" as written, from its 'O' (or ':') at i.
+std::string Loader::program_number(std::size_t i, std::size_t e) const {
+    std::size_t digits = i + 1;
+    while (digits < e && is_digit(text_[digits])) ++digits;
+    return std::string(text_.substr(i, digits - i));
+}
+
+// A program without '%' that starts with its "O1234" at i.
+void Loader::start_numbered(std::size_t i, std::size_t e) {
+    Program p;
+    p.start = at(i);
+    p.percent = false;
+    p.number = program_number(i, e);
+    start(std::move(p));
 }
 
 // Fanuc: "O1234" (or ":1234") at a block's start is a program number, and so a program's start.
@@ -792,9 +828,11 @@ std::size_t Loader::unexpected(std::size_t i, std::size_t e, std::uint64_t block
     w.macro = false;
     w.known = false;
     w.text.assign(text_.substr(i, j - i));
+    // A bad frame read past (decode --keep-going) stands as U+FFFD; on a tape the codec reported it.
+    if (!frame_of_.empty() && w.text.starts_with(bad_frame_marker)) return j;
     if (message.empty())
         message = "'" + w.text + "' is no part of an NC program outside comments" +
-                  (rules_->dialect == Dialect::gost ? " (ГОСТ 20999-83 tables 1-3)" : "");
+                  (rules_->dialect == Dialect::gost ? " (ГОСТ 20999-83 tables 1-3)" : "") + look_alike_hint(w.text);
     find(rule, i, block_no, std::move(message));
     return j;
 }

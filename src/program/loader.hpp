@@ -37,6 +37,8 @@ private:
     void close_pending_empty();
     void start(Program p);
     bool program_number_at(std::size_t i, std::size_t e) const;
+    std::string program_number(std::size_t i, std::size_t e) const;
+    void start_numbered(std::size_t i, std::size_t e);
     void unterminated();
     void blocks_in_line(std::size_t i, std::size_t e);
 

@@ -1,0 +1,1 @@
+$TAPE lint --rules
