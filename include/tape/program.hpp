@@ -88,6 +88,7 @@ struct Program {
     Location start;                       ///< the '%' that starts it, or its first block when none does
     std::optional<std::string> number{};  ///< between '%' and LF (§1.6), or Fanuc's "O1234"
     bool percent = true;                  ///< started by a '%' (LinuxCNC and Fanuc programs need none)
+    bool numbered_by_block = false;       ///< number is Fanuc's "O1234" block, not the text after '%'
     std::vector<Block> blocks;
     bool ended = false;     ///< a block with M02/M30 closes it (§1.9)
     std::string after_end;  ///< text after the end, up to the next '%': not part of it

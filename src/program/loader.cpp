@@ -253,8 +253,10 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
             return;
         case State::pending:
             if (blank) return;
-            if (!pending_header_.number && program_number_at(first, e))
+            if (!pending_header_.number && program_number_at(first, e)) {
                 pending_header_.number = program_number(first, e);
+                pending_header_.numbered_by_block = true;
+            }
             start(std::move(pending_header_));
             blocks_in_line(first, e);
             return;
@@ -370,6 +372,7 @@ void Loader::start_numbered(std::size_t i, std::size_t e) {
     p.start = at(i);
     p.percent = false;
     p.number = program_number(i, e);
+    p.numbered_by_block = true;
     start(std::move(p));
 }
 

@@ -15,13 +15,26 @@ std::string reformat(const LoadedTape& tape, const ReformatOptions& o, std::vect
             f.hint = Hint{Hint::Action::give_source_format};
             findings.push_back(std::move(f));
         }
-        text += (tape.physical_start && &p == &tape.programs.front() ? "%%" : "%") + p.number.value_or("") + "\n";
+        if (p.percent)
+            text += (tape.physical_start && &p == &tape.programs.front() ? "%%" : "%") +
+                    (p.numbered_by_block ? "" : p.number.value_or("")) + "\n";
         for (const auto& b : p.blocks) {
             if (b.skip && !o.spec->block_skip)  // dropping the '/' would make an optional block mandatory
                 findings.push_back(
                     program_finding("spec-skip", b.where, b.ordinal, "the controller format has no '/' block skip"));
             std::string line = b.skip ? "/" : "";
             auto put = [&](const Word& w) {
+                if (p.numbered_by_block && w.address != 'N' && p.number && w.text == *p.number) {
+                    line += (line.empty() ? "" : sep) + w.text;  // Fanuc's O1234: the program's name, kept
+                    return;
+                }
+                if (w.macro || !w.known) {  // nothing is dropped: what cannot be written is an error
+                    findings.push_back(program_finding(
+                        "spec-word", w.where, b.ordinal,
+                        w.text + (w.macro ? ": a macro value has no digits for the controller format"
+                                          : ": not a word of the program, so not one the controller format can hold")));
+                    return;
+                }
                 try {
                     line += (line.empty() || line == "/" ? "" : sep) + format_word(w, *o.spec, o.from, o.strip_zeros);
                 } catch (const Error& e) {
@@ -30,11 +43,18 @@ std::string reformat(const LoadedTape& tape, const ReformatOptions& o, std::vect
             };
             if (b.number) put(*b.number);
             for (const auto& w : b.words) put(w);
-            for (const auto& c : b.comments) line += (line.empty() ? "" : sep) + "(" + c.text + ")";
+            for (const auto& st : b.statements)
+                findings.push_back(program_finding("spec-word", st.where, b.ordinal,
+                                                   "'" + st.text +
+                                                       "' is a macro statement, which a controller "
+                                                       "format of ГОСТ 20999-83 §9 cannot hold"));
+            for (const auto& c : b.comments)
+                line += (line.empty() ? "" : sep) + (c.semicolon ? ";" + c.text : "(" + c.text + ")");
             text += line + "\n";
         }
         text += p.after_end;
     }
+    if (tape.record_end) text += "%\n";  // the end of record, the rewind stop, as on the tape
     return text;
 }
 
