@@ -96,7 +96,7 @@ std::string hint_text(const tape::Hint& hint) {
         case A::use_code:
             return "try --code " + std::string(hint.value);
         case A::use_five_track_code:
-            return "try --code ita2 or --code mtk2";
+            return "try `tape decode --code ita2` or `--code mtk2`";
         case A::encode_text:
             return "use `tape encode` to punch it";
     }
@@ -197,7 +197,7 @@ void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto, bool fi
         codes.insert(codes.begin(), "auto");
     else
         choice.code = "iso";
-    std::string help = with_auto ? "Tape code: auto (detect ISO or EIA from the first block), iso or eia"
+    std::string help = with_auto ? "Tape code: auto (ISO or EIA, judged from the whole tape), iso or eia"
                                  : "Tape code: iso (ISO 7-bit, even parity on track 8) or eia (EIA RS-244)";
     if (five_track)
         help +=
@@ -251,7 +251,7 @@ void write_output(const std::string& path, const std::string& data, bool binary,
 }
 
 void add_program_source_options(CLI::App* sub, ProgramSource& source, bool with_keep_going) {
-    add_code_options(sub, source.choice, true);
+    add_code_options(sub, source.choice, true, true);
     sub->add_option("--format,-f", source.format,
                     "Image format of IN: " + format_choices(false) + " (IN is then a tape image)")
         ->check(format_check(false));

@@ -3,6 +3,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "tape/functions.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 namespace {
@@ -113,7 +114,7 @@ public:
             out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + b.text();
             std::string flagged;
             for (const auto& w : b.words)
-                if (!w.known) flagged += (flagged.empty() ? "" : " ") + w.text;
+                if (!w.known) flagged += (flagged.empty() ? "" : " ") + tape::visible(w.text);
             if (!flagged.empty()) out_ += "    ! not read: " + flagged;
             if (a_.explain) {
                 std::string e = explanation(b, a_.lang == "ru");
@@ -124,7 +125,9 @@ public:
         ++blocks_;
         if (out_.size() >= 64 << 10) flush();
     }
-    void after_end(std::string_view text, const tape::Location&) override { after_end_ += text; }
+    void after_end(std::string_view text, const tape::Location&) override {
+        (in_program_ ? after_end_ : after_record_) += text;  // after the end of record, nothing is read
+    }
     void dialect(const tape::DialectChoice& choice) override { dialect_ = tape::dialect_name(choice.dialect); }
     void record_end(const tape::Location& where, bool closes_program) override {
         if (closes_program) ended_ = true;
@@ -141,10 +144,11 @@ public:
     void finish() {
         close_program();
         flush_label();
+        if (!a_.json && has_text(after_record_)) out_ += "after the end of record, not read:\n" + shown(after_record_);
         if (a_.json)
             out_ += "], \"dialect\": " + json_string(std::string(dialect_)) +
                     ", \"record_end\": " + (record_end_ ? location_json(*record_end_) : "null") +
-                    ", \"label\": " + json_string(label_) +
+                    ", \"after_record_end\": " + json_string(after_record_) + ", \"label\": " + json_string(label_) +
                     ", \"physical_start\": " + (physical_start_ ? "true" : "false") + ", \"diagnostics\": [" +
                     findings_ + "]}\n";
         flush();
@@ -158,8 +162,24 @@ private:
     void flush_label() {
         if (a_.json || label_done_) return;
         label_done_ = true;
-        if (label_.find_first_not_of(" \t\r\n") != std::string::npos)
-            out_ += "label: " + label_ + (label_.back() == '\n' ? "" : "\n");
+        if (has_text(label_)) out_ += "label: " + shown(label_);
+    }
+    // Text that is more than blanks and reader on/off controls (DC1-DC4).
+    static bool has_text(const std::string& s) {
+        return s.find_first_not_of(" \t\r\n\x11\x12\x13\x14") != std::string::npos;
+    }
+    // Lines of text from the tape as the terminal should show them: controls by name, one LF at the end.
+    static std::string shown(const std::string& s) {
+        std::string out;
+        std::size_t b = 0;
+        while (b < s.size()) {
+            std::size_t e = std::min(s.find('\n', b), s.size());
+            std::string_view line(s.data() + b, e - b);
+            if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+            out += tape::visible(line) + "\n";
+            b = e + 1;
+        }
+        return out;
     }
     void close_program() {
         if (!in_program_) return;
@@ -169,9 +189,7 @@ private:
                     ", \"after_end\": " + json_string(after_end_) + "}";
         } else {
             out_ += ended_ ? "  end of program\n" : "  no end (M02/M30)\n";
-            if (after_end_.find_first_not_of(" \t\r\n") != std::string::npos)
-                out_ +=
-                    "after the end, not part of the program:\n" + after_end_ + (after_end_.back() == '\n' ? "" : "\n");
+            if (has_text(after_end_)) out_ += "after the end, not part of the program:\n" + shown(after_end_);
         }
         after_end_.clear();
     }
@@ -179,7 +197,7 @@ private:
     const BlocksArgs& a_;
     const std::string& name_;
     bool from_tape_;
-    std::string out_, label_, after_end_, findings_;
+    std::string out_, label_, after_end_, after_record_, findings_;
     std::string_view dialect_ = "gost";
     std::optional<tape::Location> record_end_;
     bool label_done_ = false, physical_start_ = false, in_program_ = false, ended_ = false;

@@ -10,7 +10,7 @@ struct FeedArgs {
     std::string input, device;
     FeedProfile profile;
     double rate = 0, delay_ms = 0;
-    bool wait_xon = false, progress = false;
+    bool wait_xon = false, progress = false, force = false;
     double xon_timeout = 0;
     std::string flow, xon = "0x11", xoff = "0x13";
 };
@@ -33,9 +33,12 @@ void run(const FeedArgs& a) {
         fail("", tape::Errc::usage,
              "--xon '" + a.xon + "' and --xoff '" + a.xoff + "' are the same character (bit 8 is not compared)");
     std::vector<tape::Frame> frames = frames_to_send(a.input, a.profile);
-    deliver_or_fail(
-        Delivery{.device = a.device, .use = tape::DeviceUse::both, .format = a.profile.format, .progress = a.progress},
-        frames, o, "sent");
+    deliver_or_fail(Delivery{.device = a.device,
+                             .use = tape::DeviceUse::both,
+                             .format = a.profile.format,
+                             .force = a.force,
+                             .progress = a.progress},
+                    frames, o, "sent");
 }
 
 }  // namespace
@@ -64,6 +67,7 @@ void add_feed(CLI::App& app) {
     sub->add_option("--xoff", a->xoff, "The pause character (default DC3, 0x13; bit 8 is not compared)")
         ->capture_default_str();
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
+    sub->add_flag("--force", a->force, "Replace an existing file: device");
     sub->callback([a] { run(*a); });
 }
 

@@ -33,6 +33,7 @@ struct DialectRules {
     bool closing_percent;           ///< a '%' after the end of program closes the record
     bool ordered_words;             ///< the recommended word order (§2.2) is checked
     bool increasing_numbers;        ///< block numbers are checked to increase
+    bool corner_words;              ///< \",C1.\" chamfer and \",R2.\" corner rounding after a move
     std::string_view program_ends;  ///< the M codes that end a program, e.g. "2 30 99"
     std::string_view reference;     ///< the document the dialect follows
 };

@@ -49,6 +49,9 @@ private:
     void keep(Finding f);
     void motion_checks(const Block& b);
     void flow_checks(const Block& b);
+    struct Open;
+    bool close_to(const std::string& label, std::string_view keyword);
+    void report_unclosed(const Open& o);
 
     LintOptions options_;
     std::function<void(Finding)> sink_;  // keep(), for the checks shared with lint()
@@ -57,6 +60,7 @@ private:
     Dialect dialect_ = Dialect::gost;
     std::uint64_t counts_[3] = {};
     bool any_program_ = false, in_program_ = false, program_points_ = false;
+    bool quiet_ = false;  // checking a damaged block: its findings are not made
     Location program_start_{};
     std::uint64_t program_blocks_ = 0;
     std::optional<long long> last_number_{};

@@ -67,6 +67,7 @@ struct Block {
     int skip_level = 0;            ///< Fanuc "/1".."/9"; 0 for a plain '/'
     bool main = false;             ///< ':' main block (§2.6)
     bool ends = false;             ///< ends the program in the loader's dialect (M02, M30; Fanuc also M99)
+    bool damaged = false;          ///< holds a bad frame read past (U+FFFD): its findings are the bad frame's
     std::optional<Word> number{};  ///< N… or :… (address 'N' or ':')
     std::vector<Word> words;       ///< the other words, in order, flagged ones (Word::known) included
     std::vector<Comment> comments;

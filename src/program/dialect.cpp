@@ -11,13 +11,13 @@ namespace tape {
 namespace {
 
 // Columns: needs_percent lowercase semicolon_ends_block semicolon_comment macro_b o_words
-// o_program_number main_blocks skip_levels closing_percent ordered_words increasing_numbers.
+// o_program_number main_blocks skip_levels closing_percent ordered_words increasing_numbers corner_words.
 constexpr std::array<DialectRules, 3> table = {{
-    {Dialect::gost, true, false, false, false, false, false, false, true, false, true, true, true, "2 30",
+    {Dialect::gost, true, false, false, false, false, false, false, true, false, false, true, true, false, "2 30",
      "ГОСТ 20999-83 (ISO 6983)"},
-    {Dialect::fanuc, false, false, true, false, true, false, true, false, true, true, false, false, "2 30 99",
+    {Dialect::fanuc, false, false, true, false, true, false, true, false, true, true, false, false, true, "2 30 99",
      "Fanuc Series 0i/16i/18i/21i/30i operator's manual: program format, Custom Macro B"},
-    {Dialect::linuxcnc, false, true, false, true, false, true, false, false, false, true, false, false, "2 30",
+    {Dialect::linuxcnc, false, true, false, true, false, true, false, false, false, true, false, false, false, "2 30",
      "LinuxCNC G-code reference (RS274NGC): overview, O codes, parameters"},
 }};
 
@@ -83,6 +83,7 @@ void scan_line(std::string_view line, Evidence& e) {
             starts_word(line, k, "G38.") || starts_word(line, k, "G64 P") || starts_word(line, k, "G64P"))
             ++e.linuxcnc_codes;
         if (starts_word(line, k, "M98")) ++e.fanuc_codes;
+        if (c == '[') ++e.macro;  // a [ ] expression: Custom Macro B (LinuxCNC's come with lowercase, o-words)
         if (starts_word(line, k, "WHILE") || starts_word(line, k, "GOTO") || starts_word(line, k, "IF[") ||
             starts_word(line, k, "IF [") || starts_word(line, k, "G65") || starts_word(line, k, "M99") ||
             (c == '#' && k + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[k + 1]))))
@@ -141,7 +142,7 @@ DialectChoice guess_dialect(std::string_view text) {
     std::uint64_t gost = e.main_blocks * 4 + e.percent_number * 4;
     if (fanuc > linuxcnc && fanuc > gost)
         return {Dialect::fanuc, evidence({{e.o_numbers, "O program number(s)"},
-                                          {e.macro, "macro statement(s)"},
+                                          {e.macro, "macro statement(s), expression(s) or call(s)"},
                                           {e.semicolon_end, "';' end(s) of block"},
                                           {e.fanuc_codes, "M98 call(s)"},
                                           {e.names_fanuc, "line(s) naming Fanuc"}})};

@@ -157,6 +157,7 @@ void LintVisitor::program_start(const Program& header) {
 }
 
 void LintVisitor::block(const Block& b) {
+    quiet_ = b.damaged;  // the bad frame is the block's one finding; its modal state still counts
     ++program_blocks_;
     for (const auto& w : b.words) program_points_ |= w.has_point();
     if (b.number) {
@@ -172,6 +173,7 @@ void LintVisitor::block(const Block& b) {
     motion_checks(b);
     flow_checks(b);
     if (options_.spec) held_.push_back(b);
+    quiet_ = false;
 }
 
 // Feed moves need a feed, arcs a centre. G codes that take axis words for something else (reference
@@ -224,10 +226,7 @@ void LintVisitor::flow_checks(const Block& b) {
         } else if (s.kind == K::loop_end) {
             if (!s.number) continue;
             std::string n = std::to_string(*s.number);
-            if (!open_.empty() && open_.back().label == n)
-                open_.pop_back();
-            else
-                add(sink_, "control-flow", s.where, b.ordinal, "END " + n + " closes no DO " + n);
+            if (!close_to(n, "DO")) add(sink_, "control-flow", s.where, b.ordinal, "END " + n + " closes no DO " + n);
         } else if (s.kind == K::o_word) {
             const std::string& k = s.keyword;
             std::string_view closes = k == "endsub"      ? "sub"
@@ -243,8 +242,9 @@ void LintVisitor::flow_checks(const Block& b) {
                 open_.pop_back();
             } else if (!closes.empty() || k == "else" || k == "elseif") {
                 std::string_view wanted = closes.empty() ? "if" : closes;
-                if (!open_.empty() && open_.back().label == s.label && open_.back().keyword == wanted) {
-                    if (!closes.empty()) open_.pop_back();
+                if (!closes.empty()
+                        ? close_to(s.label, wanted)
+                        : !open_.empty() && open_.back().label == s.label && open_.back().keyword == wanted) {
                 } else {
                     add(sink_, "control-flow", s.where, b.ordinal,
                         "o" + s.label + " " + k + " has no open o" + s.label + " " + std::string(wanted));
@@ -252,6 +252,24 @@ void LintVisitor::flow_checks(const Block& b) {
             }
         }
     }
+}
+
+// Closes the innermost open label/keyword; what was opened inside it and never closed is said once
+// each, so that one missing END or endif is one finding, not one for every block around it.
+bool LintVisitor::close_to(const std::string& label, std::string_view keyword) {
+    auto it = std::find_if(open_.rbegin(), open_.rend(),
+                           [&](const Open& o) { return o.label == label && o.keyword == keyword; });
+    if (it == open_.rend()) return false;
+    std::size_t keep = static_cast<std::size_t>(open_.rend() - it) - 1;
+    for (std::size_t i = keep + 1; i < open_.size(); ++i) report_unclosed(open_[i]);
+    open_.resize(keep);
+    return true;
+}
+
+void LintVisitor::report_unclosed(const Open& o) {
+    add(sink_, "control-flow", o.where, o.block,
+        (o.keyword == "DO" ? "DO " + o.label + " is never closed with END " + o.label
+                           : "o" + o.label + " " + o.keyword + " is never closed"));
 }
 
 void LintVisitor::after_end(std::string_view text, const Location& where) {
@@ -263,6 +281,7 @@ void LintVisitor::finding(const Finding& f) { keep(f); }
 // A rule the dialect does not have is not checked; the rest are counted, and listed up to max_per_rule.
 void LintVisitor::keep(Finding f) {
     if (const Rule* r = find_rule(f.id()); r && !rule_applies(*r, dialect_)) return;
+    if (quiet_ && !is_bad_frame(f.code)) return;
     ++counts_[static_cast<int>(f.severity)];
     ++by_rule_[f.id()];
     if (options_.max_per_rule && kept_[f.id()] >= options_.max_per_rule) {
@@ -287,10 +306,7 @@ void LintVisitor::close_program() {
     if (program_blocks_ == 0) add(sink_, "program-start", program_start_, 0, "'%' is not followed by a block (§1.4)");
     if (after_end_at_)
         add(sink_, "after-end", *after_end_at_, 0, "text after M02/M30 is not part of the program (§1.9)");
-    for (const auto& o : open_)
-        add(sink_, "control-flow", o.where, o.block,
-            (o.keyword == "DO" ? "DO " + o.label + " is never closed with END " + o.label
-                               : "o" + o.label + " " + o.keyword + " is never closed"));
+    for (const auto& o : open_) report_unclosed(o);
     open_.clear();
     for (const auto& g : gotos_)
         if (std::find(numbers_.begin(), numbers_.end(), g.target) == numbers_.end())

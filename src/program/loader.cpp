@@ -19,7 +19,8 @@ namespace {
 
 constexpr std::size_t sniff_limit = 64 << 10;  // text looked at to choose a dialect
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+// DC1-DC4 switch a reader or punch on and off (RS-232 captures hold them): no part of the program.
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || (c >= '\x11' && c <= '\x14'); }
 
 // What a character can be inside a word, looked up once per character in the hot loop.
 enum class CharClass : std::uint8_t { other, digit, point, sign, blank };
@@ -28,7 +29,7 @@ constexpr auto char_class = [] {
     for (int c = '0'; c <= '9'; ++c) t[static_cast<std::size_t>(c)] = CharClass::digit;
     t['.'] = CharClass::point;
     t['+'] = t['-'] = CharClass::sign;
-    t[' '] = t['\t'] = t['\r'] = CharClass::blank;
+    t[' '] = t['\t'] = t['\r'] = t[0x11] = t[0x12] = t[0x13] = t[0x14] = CharClass::blank;
     return t;
 }();
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
@@ -141,10 +142,15 @@ void Loader::finish() {
     pending_.clear();
     pending_frames_.clear();
     if (state_ == State::pending) close_pending_empty();
-    if (state_ == State::program) unterminated();
-    if (cut_in_block)
+    if (cut_in_block) {  // one cause: the tape was cut or read short, so the program has no end either
+        bool open = state_ == State::program;
         v_.finding(program_finding("incomplete-block", last_block_where_, last_block_ordinal_,
-                                   "the tape ends in the middle of a block: its end of block (LF) never came"));
+                                   std::string("the tape ends in the middle of a block: its end of block (LF) never "
+                                               "came") +
+                                       (open ? ", nor the end of program" : "")));
+        state_ = State::after_end;
+    }
+    if (state_ == State::program) unterminated();
     v_.end(end_location());
 }
 
@@ -212,6 +218,7 @@ Location Loader::at(std::size_t offset) const {
 void Loader::find(std::string_view rule, std::size_t offset, std::uint64_t block, std::string message) {
     const Rule* r = find_rule(rule);
     if (r && !rule_applies(*r, rules_->dialect)) return;
+    if (block && block == blk_.ordinal && blk_.damaged) return;  // the bad frame read past is the one cause
     v_.finding(program_finding(rule, at(offset), block, std::move(message)));
 }
 
@@ -271,6 +278,12 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
                 v_.after_end(whole, at(b));
             }
             return;
+        case State::record_ended:  // after the end of record nothing is read
+            if (!blank || after_end_started_) {
+                after_end_started_ = true;
+                v_.after_end(whole, at(b));
+            }
+            return;
         case State::program:
             if (!blank && last_block_ordinal_ && program_number_at(first, e)) {
                 unterminated();
@@ -295,14 +308,26 @@ void Loader::percent_line(std::size_t b, std::size_t pct, std::size_t e) {
         case State::program:
             if (linuxcnc_) {  // the closing '%' ends the program; LinuxCNC reads nothing after it
                 v_.record_end(at(pct), true);
-                state_ = State::after_end;
-                after_end_started_ = true;
+                state_ = State::record_ended;
                 return;
             }
             unterminated();
+            if (rules_->closing_percent) {
+                v_.record_end(at(pct), false);
+                state_ = State::record_ended;
+                return;
+            }
             open_pending(pct, e, false);
             return;
         case State::after_end:
+            if (rules_->closing_percent && any_program_) {  // Fanuc: the end of record; reading stops
+                v_.record_end(at(pct), false);
+                state_ = State::record_ended;
+                return;
+            }
+            open_pending(pct, e, false);
+            return;
+        case State::record_ended:  // a record that follows (files put one after the other)
             open_pending(pct, e, false);
             return;
     }
@@ -324,7 +349,7 @@ void Loader::open_pending(std::size_t pct, std::size_t e, bool from_label) {
     std::string number;
     bool odd = false;
     for (; i < e; ++i) {
-        if (is_blank(text_[i])) continue;
+        if (is_blank(text_[i]) || (text_[i] == ';' && rules_->semicolon_ends_block)) continue;  // Fanuc's "%;"
         odd |= !(is_digit(text_[i]) || is_upper(text_[i]));
         number += text_[i];
     }
@@ -450,6 +475,7 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
         if (rules_->skip_levels && i < end && text_[i] >= '1' && text_[i] <= '9') blk.skip_level = text_[i++] - '0';
         i = skip_blanks(i, end);
     }
+    blk.damaged = !frame_of_.empty() && text_.substr(i, end - i).find(bad_frame_marker) != std::string_view::npos;
     if (i < end && text_[i] == ':' && program_number_at(i, end)) {  // Fanuc's ':1234' is O1234
         word(i, end, &i, blk.ordinal, next_word());
     } else if (i < end && (text_[i] == 'N' || (rules_->lowercase && text_[i] == 'n') ||
@@ -458,6 +484,10 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
         blk.number.emplace();
         word(i, end, &i, blk.ordinal, *blk.number);
     }
+    // A comment whose '(' was lost reads as words up to its ')': one finding for all of it.
+    if (std::size_t close = stray_close(i, end); close != std::string_view::npos)
+        i = flagged(skip_blanks(i, end), end, close + 1,
+                    "is taken as a comment whose '(' is missing: ')' closes no comment", "unexpected-character");
     while ((i = skip_blanks(i, end)) < end) {
         char c = text_[i];
         bool next_letter = i + 1 < end && is_letter(text_[i + 1]);
@@ -490,6 +520,13 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
                 i = flagged(i, end,
                             i + name.size() + macro::value_length(text_.substr(0, end), i + name.size(), linuxcnc_),
                             "is no word: an address is one letter followed by its value");
+        } else if (c == ',' && rules_->corner_words && i + 1 < end && (text_[i + 1] == 'C' || text_[i + 1] == 'R')) {
+            Word& w = next_word();  // ",C1." chamfer, ",R2." corner: a word of its own, not the C axis or R
+            Location comma = at(i);
+            word(i + 1, end, &i, blk.ordinal, w);
+            w.text.insert(0, 1, ',');
+            w.address = ',';
+            w.where = comma;
         } else if (is_upper(c) || (is_lower(c) && rules_->lowercase)) {
             word(i, end, &i, blk.ordinal, next_word());
         } else if (is_lower(c)) {
@@ -516,8 +553,22 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
     return end < e ? end + 1 : e;
 }
 
+// The first ')' outside any comment from i to e, or npos.
+std::size_t Loader::stray_close(std::size_t i, std::size_t e) const {
+    bool in_comment = false;
+    for (; i < e; ++i) {
+        if (text_[i] == '(') in_comment = true;
+        if (text_[i] == ')') {
+            if (!in_comment) return i;
+            in_comment = false;
+        }
+        if (text_[i] == ';' && !in_comment && (rules_->semicolon_comment || rules_->semicolon_ends_block)) break;
+    }
+    return std::string_view::npos;
+}
+
 // Something the dialect does not know, kept as one flagged word from i to to, reported once.
-std::size_t Loader::flagged(std::size_t i, std::size_t e, std::size_t to, std::string message) {
+std::size_t Loader::flagged(std::size_t i, std::size_t e, std::size_t to, std::string message, std::string_view rule) {
     to = std::min(std::max(to, i + 1), e);
     Word& w = next_word();
     w.address = text_[i];
@@ -528,7 +579,7 @@ std::size_t Loader::flagged(std::size_t i, std::size_t e, std::size_t to, std::s
     w.known = false;
     std::string_view span = trim_right(text_.substr(i, to - i));
     w.text.assign(span);
-    find("unknown-word", i, blk_.ordinal, "'" + std::string(span) + "' " + std::move(message));
+    find(rule, i, blk_.ordinal, "'" + std::string(span) + "' " + std::move(message));
     return to;
 }
 

@@ -19,7 +19,7 @@ public:
     void finish();
 
 private:
-    enum class State { label, pending, program, after_end };
+    enum class State { label, pending, program, after_end, record_ended };
 
     void choose(Dialect d, std::string reason);
     void feed_lines(std::string_view text, std::span<const std::uint64_t> frame_of);
@@ -46,7 +46,9 @@ private:
     std::size_t block_end(std::size_t i, std::size_t e) const;
     std::size_t statement_end(std::size_t i, std::size_t e) const;
     void word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t block_no, Word& w);
-    std::size_t flagged(std::size_t i, std::size_t e, std::size_t end, std::string message);
+    std::size_t flagged(std::size_t i, std::size_t e, std::size_t end, std::string message,
+                        std::string_view rule = "unknown-word");
+    std::size_t stray_close(std::size_t i, std::size_t e) const;
     std::size_t macro_statement(std::size_t i, std::size_t e, const std::string& keyword);
     std::size_t assignment(std::size_t i, std::size_t e);
     std::size_t o_word(std::size_t i, std::size_t e);

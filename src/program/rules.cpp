@@ -9,7 +9,7 @@ namespace {
 constexpr auto E = Severity::error, W = Severity::warning, N = Severity::note;
 constexpr std::string_view all = "gost fanuc linuxcnc";
 
-constexpr std::array<Rule, 32> table = {{
+constexpr std::array<Rule, 34> table = {{
     // The loader: how characters become programs, blocks and words.
     {"unexpected-character", E, all, "ГОСТ 20999-83 tables 1-3",
      "a character, or a run of characters, that no program of the dialect may hold outside comments",
@@ -94,6 +94,13 @@ constexpr std::array<Rule, 32> table = {{
      "the controller rejects the block"},
     {"spec-word", E, all, "ГОСТ 20999-83 §9", "tape format: a word that cannot be written in the controller format",
      "the value does not fit the digits the controller reads"},
+    // The codec's bad frames, which lint lists among the findings of a damaged tape read with -k.
+    {"parity", E, all, "ГОСТ 13052-74 / ISO 646: even parity on track 8; EIA RS-244: odd parity on track 5",
+     "a frame whose holes fail the code's parity check",
+     "a misread or damaged frame: which character it was is not known, and nothing guesses it"},
+    {"not_in_code", E, all, "ГОСТ 13052-74 / ISO 646; EIA RS-244",
+     "a frame with good parity that is no character of the code",
+     "a misread or damaged frame, or a tape in another code"},
     {"implied-point", W, all, "ГОСТ 20999-83 §3.1.4",
      "tape format: a program with no decimal point anywhere, whose numbers are taken as whole numbers",
      "with an implied point the same digits mean another size; give the source format with --from"},

@@ -83,7 +83,7 @@ void Searcher::program_start(const Program& p) {
     std::string text = p.percent ? "%" + p.number.value_or("") : p.number.value_or("");
     if (query_.kind == Kind::rewind_stop && p.percent && !at_or_after_from(p.start))
         hits_.assign(1, SearchHit{p.start, text});
-    if (query_.kind == Kind::program && hits_.empty() && p.number &&
+    if (query_.kind == Kind::program && hits_.empty() && p.number && at_or_after_from(p.start) &&
         program_key(*p.number) == program_key(query_.program))
         hits_.push_back(SearchHit{p.start, text});
 }
@@ -100,7 +100,8 @@ void Searcher::block(const Block& b) {
     if (query_.kind == Kind::main_block && b.main && at_or_after_from(b.where) &&
         (!query_.number || !b.number || numbered))
         hits_.push_back(SearchHit{b.where, b.text()});
-    if (query_.kind == Kind::numbered_block && numbered) hits_.push_back(SearchHit{b.where, b.text()});
+    if (query_.kind == Kind::numbered_block && numbered && at_or_after_from(b.where))
+        hits_.push_back(SearchHit{b.where, b.text()});
 }
 
 }  // namespace tape
