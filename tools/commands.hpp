@@ -19,5 +19,7 @@ void add_emulate(CLI::App& app);
 void add_read(CLI::App& app);
 void add_punch(CLI::App& app);
 void add_devices(CLI::App& app);
+void add_restore(CLI::App& app);
+void add_diff(CLI::App& app);
 
 }  // namespace cli

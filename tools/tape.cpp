@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
     cli::add_read(app);
     cli::add_punch(app);
     cli::add_devices(app);
+    cli::add_restore(app);
+    cli::add_diff(app);
     cli::install_output_cleanup();
     try {
         app.parse(argc, argv);

@@ -1,0 +1,206 @@
+// Alignment and restoration on reads with known damage: each status, the refusal of unrelated reads,
+// repair decisions, and the property that a frame clean in some read is never worse in the output.
+#include "tape/restore.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "tape/encode.hpp"
+#include "test_util.hpp"
+
+using namespace tape;
+
+namespace {
+
+std::vector<Frame> sample_tape() {
+    return encode(read_text(sample_path("gost-20999-format-example.txt")), EncodeOptions{.leader = 20, .trailer = 20});
+}
+
+RestoreResult restore_all(const std::vector<std::vector<Frame>>& reads, Dialect d = Dialect::gost) {
+    std::vector<std::span<const Frame>> spans(reads.begin(), reads.end());
+    return restore(spans, RestoreOptions{.code = FrameCode::iso(), .dialect = d});
+}
+
+const RestoreProblem* problem_at(const RestoreResult& r, std::uint64_t frame) {
+    for (const auto& p : r.problems)
+        if (p.frame == frame) return &p;
+    return nullptr;
+}
+
+// The frame of the first occurrence of character c after `from`.
+std::size_t find_char(const std::vector<Frame>& t, char c, std::size_t from = 0) {
+    auto f = *FrameCode::iso().frame_for(static_cast<unsigned char>(c));
+    return static_cast<std::size_t>(std::find(t.begin() + static_cast<std::ptrdiff_t>(from), t.end(), f) - t.begin());
+}
+
+}  // namespace
+
+TEST(Align, ReadsOfDifferentLeadersDropsAndDoublesShareColumns) {
+    auto tape = sample_tape();
+    auto a = tape, b = tape;
+    a.insert(a.begin(), 7, blank_frame);                   // a longer leader
+    b.erase(b.begin() + 60);                               // a dropped frame
+    b.insert(b.begin() + 90, b[90]);                       // a frame read twice
+    std::vector<std::span<const Frame>> reads{tape, a, b};
+    ReadAlignment al = align_reads(reads);
+    EXPECT_EQ(al.reference(), 1U);  // the longest
+    // Every frame of the tape is in a column with the same frame of every read that has it.
+    std::size_t checked = 0;
+    for (std::size_t c = 0; c < al.columns(); ++c) {
+        std::int32_t t = al.frame(c, 0), x = al.frame(c, 1);
+        if (t != ReadAlignment::none && x != ReadAlignment::none) {
+            EXPECT_EQ(tape[static_cast<std::size_t>(t)], a[static_cast<std::size_t>(x)]) << "column " << c;
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, tape.size());
+}
+
+TEST(Align, ReadsOfAnotherTapeAreRefused) {
+    auto tape = sample_tape();
+    auto other = encode(read_text(sample_path("16k20f3s5-turning.txt")), EncodeOptions{.leader = 20, .trailer = 20});
+    std::vector<std::span<const Frame>> reads{tape, other};
+    try {
+        align_reads(reads);
+        FAIL() << "unrelated reads were aligned";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("different tapes"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Restore, ThreeReadsWithMixedDamageComeBackExact) {
+    auto tape = sample_tape();
+    auto a = tape, b = tape, c = tape;
+    a[50] ^= 0x04;                                 // a flipped hole
+    b.erase(b.begin() + 70);                       // a dropped frame
+    c.insert(c.begin() + 80, c[80]);               // a doubled frame
+    for (int i = 0; i < 4; ++i) a[100 + i] = 0x5A;  // a stain garbles four frames
+    auto r = restore_all({a, b, c});
+    EXPECT_EQ(r.frames, tape);
+    EXPECT_TRUE(r.complete());
+    EXPECT_EQ(r.count(FrameStatus::extra), 1U);
+    EXPECT_GE(r.count(FrameStatus::voted), 6U);
+    EXPECT_EQ(r.count(FrameStatus::unresolved) + r.count(FrameStatus::contested), 0U);
+}
+
+TEST(Restore, ContestedWhenTwoGoodReadsDisagree) {
+    auto tape = sample_tape();
+    auto a = tape, b = tape;
+    std::size_t x = find_char(tape, 'X', 30);
+    b[x] = *FrameCode::iso().frame_for('Y');  // good parity, another letter
+    auto r = restore_all({a, b});
+    const RestoreProblem* p = problem_at(r, x + 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::contested);
+    EXPECT_FALSE(r.complete());
+    EXPECT_EQ(r.frames.size(), tape.size());
+}
+
+TEST(Restore, UnstableWhenEveryReadSawSomethingElse) {
+    auto tape = sample_tape();
+    auto a = tape, b = tape, c = tape;
+    std::size_t x = find_char(tape, 'X', 30);
+    a[x] = *FrameCode::iso().frame_for('Y');
+    b[x] = *FrameCode::iso().frame_for('Z');
+    auto r = restore_all({a, b, c});
+    const RestoreProblem* p = problem_at(r, x + 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::unstable);
+}
+
+TEST(Restore, AParityErrorOutvotedByGoodReads) {
+    auto tape = sample_tape();
+    auto a = tape, b = tape;
+    a[40] ^= 0x10;
+    auto r = restore_all({a, b});
+    EXPECT_EQ(r.frames, tape);
+    const RestoreProblem* p = problem_at(r, 41);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::voted);
+    EXPECT_NE(p->reason.find("parity"), std::string::npos) << p->reason;
+}
+
+TEST(Restore, SingleReadRepairWhenExactlyOneChangeFitsTheBlock) {
+    auto tape = sample_tape();
+    auto a = tape;
+    // A decimal point: of its eight single-hole changes only '.' makes "X+10." a word ('/' would be
+    // a block skip out of place, letters and digits there read as other words that break the block).
+    std::size_t g = find_char(tape, '.', 30);
+    a[g] ^= 0x01;
+    auto r = restore_all({a});
+    const RestoreProblem* p = problem_at(r, g + 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::inferred) << p->reason << " candidates " << p->candidates.size();
+    EXPECT_EQ(r.frames, tape);
+}
+
+TEST(Restore, AmbiguousRepairStaysUnresolvedAsRead) {
+    auto tape = sample_tape();
+    auto a = tape;
+    // The G of "G90": D90, B90, N90, V90 and F90 read as well as G90 does, so nothing is guessed.
+    std::size_t g = find_char(tape, 'G', 30);
+    a[g] ^= 0x01;
+    auto r = restore_all({a});
+    const RestoreProblem* p = problem_at(r, g + 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::unresolved) << p->reason;
+    EXPECT_EQ(r.frames[g], a[g]);  // written as read
+    EXPECT_GT(p->candidates.size(), 1U);
+    EXPECT_NE(std::find(p->candidates.begin(), p->candidates.end(), tape[g]), p->candidates.end());
+}
+
+TEST(Restore, MissingStartWhenNoReadHasLeader) {
+    auto tape = sample_tape();
+    std::vector<Frame> late(tape.begin() + 25, tape.end());
+    auto r = restore_all({late, late});
+    EXPECT_EQ(r.missing_start, 1U);
+    EXPECT_EQ(r.count(FrameStatus::missing), 1U);
+    EXPECT_FALSE(r.complete());
+}
+
+TEST(Restore, BinaryTapesAreMergedByVoteAlone) {
+    std::mt19937 rng(7);
+    std::vector<Frame> tape(3000);
+    for (auto& f : tape) f = static_cast<Frame>(rng());
+    tape.insert(tape.begin(), 30, blank_frame);
+    tape.insert(tape.end(), 30, blank_frame);
+    auto a = tape, b = tape, c = tape;
+    a[500] ^= 0x80;
+    b.erase(b.begin() + 900);
+    c[1500] ^= 0x01;
+    std::vector<std::span<const Frame>> reads{a, b, c};
+    auto r = restore(reads, RestoreOptions{});
+    EXPECT_EQ(r.frames, tape);
+}
+
+// Never worse: over random damage, wherever a read has the right frame and it is good, the output
+// holds the right frame or says it could not decide (contested, unstable); it is never silently wrong.
+TEST(Restore, AFrameCleanInSomeReadIsNeverWorseInTheOutput) {
+    auto tape = sample_tape();
+    for (unsigned seed = 1; seed <= 30; ++seed) {
+        std::mt19937 rng(seed);
+        std::vector<std::vector<Frame>> reads;
+        for (int k = 0; k < 3; ++k) {
+            auto read = tape;
+            for (std::size_t i = 0; i < read.size(); ++i)
+                if (rng() % 100 == 0) read[i] ^= static_cast<Frame>(1U << (rng() % 8));
+            reads.push_back(read);
+        }
+        auto r = restore_all(reads);
+        ASSERT_EQ(r.frames.size(), tape.size()) << "seed " << seed;
+        for (std::size_t i = 0; i < tape.size(); ++i) {
+            if (r.frames[i] == tape[i]) continue;
+            const RestoreProblem* p = problem_at(r, i + 1);
+            ASSERT_NE(p, nullptr) << "seed " << seed << " frame " << i + 1 << " silently wrong";
+            EXPECT_TRUE(p->status == FrameStatus::contested || p->status == FrameStatus::unstable ||
+                        p->status == FrameStatus::unresolved)
+                << "seed " << seed << " frame " << i + 1 << " " << status_name(p->status);
+            bool clean_somewhere = false;
+            for (const auto& read : reads) clean_somewhere |= read[i] == tape[i];
+            if (clean_somewhere) {
+                EXPECT_NE(p->status, FrameStatus::unresolved) << "seed " << seed;
+            }
+        }
+    }
+}
