@@ -57,7 +57,8 @@ void install_output_cleanup() {
 
 void say(const std::string& file, const std::string& message) {
     // Bytes from the input reach messages: a terminal must not act on them or hide them.
-    std::cerr << "tape: " << tape::visible(file.empty() ? "" : file + ": ") << tape::visible(message) << '\n';
+    std::cerr << globals().program << ": " << tape::visible(file.empty() ? "" : file + ": ") << tape::visible(message)
+              << '\n';
 }
 
 std::string where_text(const tape::Position& where, bool raw_frames) {

@@ -30,6 +30,7 @@ int status_for(tape::Errc code);
 
 /// Options given before or after the subcommand.
 struct Globals {
+    std::string program = "tape";    ///< what messages start with: tape-damage shares this code
     int verbosity = 0;               ///< -v steps up, -q down
     std::string eia_table;           ///< --eia-table FILE: a corrected EIA table
     std::uint64_t max_errors = 100;  ///< --max-errors: messages of one kind before the rest are only counted
@@ -44,7 +45,7 @@ Globals& globals();
 /// signal would. Device runs replace this with their own stop flag.
 void install_output_cleanup();
 
-/// "tape: FILE: WHERE: message" on stderr.
+/// "tape: FILE: WHERE: message" on stderr (the program's name first).
 void say(const std::string& file, const std::string& message);
 /// Prints the error as above and throws Exit with its status.
 [[noreturn]] void fail(const std::string& file, const tape::Error& e, bool raw_frames = false);

@@ -1,0 +1,1 @@
+$(dirname "$TAPE")/tape-damage --help
