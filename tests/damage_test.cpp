@@ -34,7 +34,8 @@ std::vector<Frame> joined(std::vector<Frame> a, const std::vector<Frame>& b) {
 }
 
 std::vector<Frame> slice(const std::vector<Frame>& t, std::size_t from, std::size_t to) {
-    return std::vector<Frame>(t.begin() + static_cast<std::ptrdiff_t>(from), t.begin() + static_cast<std::ptrdiff_t>(to));
+    return std::vector<Frame>(t.begin() + static_cast<std::ptrdiff_t>(from),
+                              t.begin() + static_cast<std::ptrdiff_t>(to));
 }
 
 DamageOptions only(std::uint64_t seed) {

@@ -39,9 +39,9 @@ std::size_t find_char(const std::vector<Frame>& t, char c, std::size_t from = 0)
 TEST(Align, ReadsOfDifferentLeadersDropsAndDoublesShareColumns) {
     auto tape = sample_tape();
     auto a = tape, b = tape;
-    a.insert(a.begin(), 7, blank_frame);                   // a longer leader
-    b.erase(b.begin() + 60);                               // a dropped frame
-    b.insert(b.begin() + 90, b[90]);                       // a frame read twice
+    a.insert(a.begin(), 7, blank_frame);  // a longer leader
+    b.erase(b.begin() + 60);              // a dropped frame
+    b.insert(b.begin() + 90, b[90]);      // a frame read twice
     std::vector<std::span<const Frame>> reads{tape, a, b};
     ReadAlignment al = align_reads(reads);
     EXPECT_EQ(al.reference(), 1U);  // the longest
@@ -72,9 +72,9 @@ TEST(Align, ReadsOfAnotherTapeAreRefused) {
 TEST(Restore, ThreeReadsWithMixedDamageComeBackExact) {
     auto tape = sample_tape();
     auto a = tape, b = tape, c = tape;
-    a[50] ^= 0x04;                                 // a flipped hole
-    b.erase(b.begin() + 70);                       // a dropped frame
-    c.insert(c.begin() + 80, c[80]);               // a doubled frame
+    a[50] ^= 0x04;                                  // a flipped hole
+    b.erase(b.begin() + 70);                        // a dropped frame
+    c.insert(c.begin() + 80, c[80]);                // a doubled frame
     for (int i = 0; i < 4; ++i) a[100 + i] = 0x5A;  // a stain garbles four frames
     auto r = restore_all({a, b, c});
     EXPECT_EQ(r.frames, tape);

@@ -22,10 +22,12 @@ void run(const DiffArgs& a) {
     std::optional<tape::FrameCode> code;
     if (a.code == "iso" || a.code == "eia") {
         auto c = *tape::parse_code(a.code);
-        code = tape::FrameCode::make(c, c == tape::Code::eia ? tape::Parity::odd : tape::Parity::even, globals().table());
+        code =
+            tape::FrameCode::make(c, c == tape::Code::eia ? tape::Parity::odd : tape::Parity::even, globals().table());
     } else if (a.code == "auto") {
         auto d = tape::detect_code(one.frames.size() >= two.frames.size() ? one.frames : two.frames, globals().table());
-        if (d.reading && (d.kind == tape::TapeKind::iso || d.kind == tape::TapeKind::eia || d.kind == tape::TapeKind::ascii))
+        if (d.reading &&
+            (d.kind == tape::TapeKind::iso || d.kind == tape::TapeKind::eia || d.kind == tape::TapeKind::ascii))
             code = tape::FrameCode::make(d.reading->code, d.reading->parity, globals().table());
     }
     std::vector<std::span<const tape::Frame>> spans{one.frames, two.frames};

@@ -30,8 +30,8 @@ std::optional<tape::FrameCode> choose_code(const RestoreArgs& a, const std::vect
         if (r.frames.size() > longest->frames.size()) longest = &r;
     tape::CodeDetection d = tape::detect_code(longest->frames, globals().table());
     if (globals().verbosity > 0) say(display_name(longest->name), d.reason);
-    if (!d.code || !d.reading || (d.kind != tape::TapeKind::iso && d.kind != tape::TapeKind::eia &&
-                                  d.kind != tape::TapeKind::ascii)) {
+    if (!d.code || !d.reading ||
+        (d.kind != tape::TapeKind::iso && d.kind != tape::TapeKind::eia && d.kind != tape::TapeKind::ascii)) {
         text = "none";
         return std::nullopt;
     }

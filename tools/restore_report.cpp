@@ -24,10 +24,10 @@ bool needs_reread(tape::FrameStatus s) {
     return s == S::contested || s == S::unstable || s == S::unresolved || s == S::missing;
 }
 
-constexpr tape::FrameStatus all_statuses[] = {
-    tape::FrameStatus::clean,     tape::FrameStatus::voted,      tape::FrameStatus::inferred,
-    tape::FrameStatus::contested, tape::FrameStatus::unstable,   tape::FrameStatus::unresolved,
-    tape::FrameStatus::missing,   tape::FrameStatus::extra};
+constexpr tape::FrameStatus all_statuses[] = {tape::FrameStatus::clean,    tape::FrameStatus::voted,
+                                              tape::FrameStatus::inferred, tape::FrameStatus::contested,
+                                              tape::FrameStatus::unstable, tape::FrameStatus::unresolved,
+                                              tape::FrameStatus::missing,  tape::FrameStatus::extra};
 
 }  // namespace
 
@@ -67,8 +67,8 @@ std::vector<RereadRange> reread_list(const tape::RestoreResult& r) {
 std::string restore_report_text(const RestoreReportInput& in) {
     const tape::RestoreResult& r = *in.result;
     std::string s = "restored " + std::to_string(r.frames.size()) + " frames from " + std::to_string(in.names.size()) +
-                    " read(s), aligned to read " + std::to_string(r.reference + 1) + " (" + display_name(in.names[r.reference]) +
-                    "); code " + in.code_text + "\n";
+                    " read(s), aligned to read " + std::to_string(r.reference + 1) + " (" +
+                    display_name(in.names[r.reference]) + "); code " + in.code_text + "\n";
     for (std::size_t i = 0; i < in.names.size(); ++i) {
         char share[16];
         std::snprintf(share, sizeof share, "%.1f", r.shared[i] * 100);
@@ -83,15 +83,16 @@ std::string restore_report_text(const RestoreReportInput& in) {
     if (!r.problems.empty()) s += "problems:\n";
     for (const auto& p : r.problems) {
         s += "  " + (p.frame ? "frame " + std::to_string(*p.frame) : "after frame " + std::to_string(p.after)) +
-             (p.line ? " (line " + std::to_string(*p.line) + ")" : "") +
-             (p.frame ? ", " + cm(*p.frame) + " cm" : "") + ": " + std::string(tape::status_name(p.status)) + ": " +
-             p.reason + "\n";
+             (p.line ? " (line " + std::to_string(*p.line) + ")" : "") + (p.frame ? ", " + cm(*p.frame) + " cm" : "") +
+             ": " + std::string(tape::status_name(p.status)) + ": " + p.reason + "\n";
         if (p.status == tape::FrameStatus::missing) continue;
         for (std::size_t i = 0; i < p.seen.size(); ++i)
             s += "      read " + std::to_string(i + 1) + ": " +
-                 (p.seen[i] ? frame_text(in.code, *p.seen[i]) : p.covered[i] ? "no frame" : "not read here") + "\n";
-        s += std::string("      ") + (p.status == tape::FrameStatus::extra ? "dropped: " : "written: ") +
-             frame_text(in.code, p.written) + "\n";
+                 (p.seen[i]      ? frame_text(in.code, *p.seen[i])
+                  : p.covered[i] ? "no frame"
+                                 : "not read here") +
+                 "\n";
+        s += std::string("      ") + (!p.frame ? "not written: " : "written: ") + frame_text(in.code, p.written) + "\n";
         if (!p.candidates.empty() && p.status != tape::FrameStatus::inferred) {
             s += "      candidates:";
             for (auto c : p.candidates) s += " " + frame_text(in.code, c) + ";";
@@ -102,8 +103,8 @@ std::string restore_report_text(const RestoreReportInput& in) {
     if (!reread.empty()) {
         s += "read again:\n";
         for (const auto& x : reread)
-            s += "  frames " + std::to_string(x.from) + "-" + std::to_string(x.to) + ", " + cm(x.from) + "-" + cm(x.to) +
-                 " cm from the first feed hole\n";
+            s += "  frames " + std::to_string(x.from) + "-" + std::to_string(x.to) + ", " + cm(x.from) + "-" +
+                 cm(x.to) + " cm from the first feed hole\n";
     }
     s += r.complete() ? "every frame is clean, voted or inferred\n"
                       : "not every frame could be restored: the image holds them as read, listed above\n";
@@ -112,8 +113,9 @@ std::string restore_report_text(const RestoreReportInput& in) {
 
 std::string restore_report_json(const RestoreReportInput& in) {
     const tape::RestoreResult& r = *in.result;
-    std::string s = "{\"schema\": \"tape-restore/1\", \"code\": " +
-                    (in.code ? json_string(in.code_text) : std::string("null")) + ", \"reads\": [";
+    std::string s =
+        "{\"schema\": \"tape-restore/1\", \"code\": " + (in.code ? json_string(in.code_text) : std::string("null")) +
+        ", \"reads\": [";
     for (std::size_t i = 0; i < in.names.size(); ++i)
         s += std::string(i ? ", " : "") + "{\"file\": " + json_string(display_name(in.names[i])) +
              ", \"frames\": " + std::to_string(in.sizes[i]) + ", \"shared\": " + std::to_string(r.shared[i]) + "}";
@@ -127,13 +129,12 @@ std::string restore_report_json(const RestoreReportInput& in) {
     for (const auto& p : r.problems) {
         s += std::string(first ? "" : ", ") + "{\"status\": " + json_string(std::string(tape::status_name(p.status))) +
              ", \"frame\": " + json_number(p.frame) + ", \"after\": " + std::to_string(p.after) +
-             ", \"line\": " + json_number(p.line) +
-             ", \"cm\": " + (p.frame ? cm(*p.frame) : "null") + ", \"seen\": [";
+             ", \"line\": " + json_number(p.line) + ", \"cm\": " + (p.frame ? cm(*p.frame) : "null") + ", \"seen\": [";
         first = false;
         for (std::size_t i = 0; i < p.seen.size(); ++i)
-            s += std::string(i ? ", " : "") + "{\"read\": " + std::to_string(i + 1) + ", \"covered\": " +
-                 (p.covered[i] ? "true" : "false") + ", \"frame\": " + (p.seen[i] ? json_string(hex(*p.seen[i])) : "null") +
-                 "}";
+            s += std::string(i ? ", " : "") + "{\"read\": " + std::to_string(i + 1) +
+                 ", \"covered\": " + (p.covered[i] ? "true" : "false") +
+                 ", \"frame\": " + (p.seen[i] ? json_string(hex(*p.seen[i])) : "null") + "}";
         s += "], \"written\": " +
              (p.status == tape::FrameStatus::missing ? std::string("null") : json_string(hex(p.written))) +
              ", \"candidates\": [";

@@ -11,7 +11,7 @@ namespace cli {
 
 struct RestoreReportInput {
     std::vector<std::string> names;  ///< the reads, as given
-    std::vector<std::size_t> sizes; ///< their frames
+    std::vector<std::size_t> sizes;  ///< their frames
     const tape::RestoreResult* result = nullptr;
     std::optional<tape::FrameCode> code;
     std::string code_text;  ///< "iso", "eia", or "none"

@@ -110,7 +110,8 @@ void add_options(CLI::App& app, DamageArgs& a) {
     using cli::real_number;
     using cli::whole_number;
     constexpr std::uint64_t most_frames = 1'000'000'000;  // far beyond any tape, well inside memory
-    app.add_option("image", a.input, "Tape image to damage (any format: by --format, extension or content); - for stdin")
+    app.add_option("image", a.input,
+                   "Tape image to damage (any format: by --format, extension or content); - for stdin")
         ->required();
     app.add_option("-o,--output", a.output,
                    "The damaged read, in the format of its extension (or --format; raw otherwise); - for stdout")
@@ -136,7 +137,8 @@ void add_options(CLI::App& app, DamageArgs& a) {
     app.add_option("--torn", a.torn, "Frames torn out in one piece at a random place inside the data")
         ->check(whole_number(0, most_frames));
     app.add_option("--leader", a.leader, "Blank frames added (+N) or removed (-N, no more than there are) at the start")
-        ->check(cli::signed_whole_number(-static_cast<std::int64_t>(most_frames), static_cast<std::int64_t>(most_frames)));
+        ->check(
+            cli::signed_whole_number(-static_cast<std::int64_t>(most_frames), static_cast<std::int64_t>(most_frames)));
     app.add_option("--start-late", a.start_late, "Frames not read at the start")->check(whole_number(0, most_frames));
     app.add_option("--stop-early", a.stop_early, "Frames not read at the end")->check(whole_number(0, most_frames));
     app.add_option("--format,-f", a.format,

@@ -18,8 +18,8 @@ struct AlignOptions {
     /// A stretch between anchors larger than this many cells (frames x frames) is not aligned inside:
     /// its frames stand in columns of their own. Bounds time and memory on reads that disagree long.
     std::size_t max_cells = 4 << 20;
-    /// Reads sharing fewer than this fraction of the shorter read's frames with the reference are
-    /// refused as reads of another tape.
+    /// Reads of which fewer than this fraction of the runs that occur once in each anchor in order
+    /// are refused as reads of another tape.
     double min_shared = 0.5;
 };
 
@@ -42,9 +42,7 @@ public:
     std::size_t first_column(std::size_t read) const { return first_[read]; }
     std::size_t end_column(std::size_t read) const { return end_[read]; }
     /// True when read covers column (between its first and last frame).
-    bool covers(std::size_t read, std::size_t column) const {
-        return column >= first_[read] && column < end_[read];
-    }
+    bool covers(std::size_t read, std::size_t column) const { return column >= first_[read] && column < end_[read]; }
     /// The fraction of each read's frames matched exactly with the reference's (1 for the reference).
     double shared(std::size_t read) const { return shared_[read]; }
 

@@ -34,12 +34,12 @@ struct DamageOptions {
     double flips = 0;
     double drops = 0;
     double doubles = 0;
-    double bursts = 0;              ///< chance that a burst starts at a frame
-    std::size_t burst_length = 4;   ///< frames a burst garbles; at least 1
-    std::size_t torn = 0;           ///< frames torn out inside the data; no more than the data spans
-    long leader = 0;                ///< blank frames added (+) or removed (-) at the start
-    std::size_t start_late = 0;     ///< frames not read at the start
-    std::size_t stop_early = 0;     ///< frames not read at the end
+    double bursts = 0;             ///< chance that a burst starts at a frame
+    std::size_t burst_length = 4;  ///< frames a burst garbles; at least 1
+    std::size_t torn = 0;          ///< frames torn out inside the data; no more than the data spans
+    long leader = 0;               ///< blank frames added (+) or removed (-) at the start
+    std::size_t start_late = 0;    ///< frames not read at the start
+    std::size_t stop_early = 0;    ///< frames not read at the end
     /// Tracks the tape has, 1 to 8: flips and the bytes of bursts touch tracks 1..tracks only, so that
     /// a damaged 5-track tape (give 5) still holds 5-track frames.
     int tracks = 8;
@@ -94,8 +94,8 @@ struct DamageLog {
 /// number), rates per frame adding up to more than 1, a burst_length of 0 with bursts, tracks outside 1..8.
 void check_damage_options(const DamageOptions& options);
 
-/// The tape as a damaged reader reads it; the log, when given, is replaced by what was done. Throws Error(Errc::usage) as
-/// check_damage_options does, and for torn frames that do not fit inside the data.
+/// The tape as a damaged reader reads it; the log, when given, is replaced by what was done. Throws Error(Errc::usage)
+/// as check_damage_options does, and for torn frames that do not fit inside the data.
 std::vector<Frame> damage(std::span<const Frame> tape, const DamageOptions& options, DamageLog* log = nullptr);
 
 }  // namespace tape

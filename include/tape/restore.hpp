@@ -51,18 +51,18 @@ struct RestoreProblem {
     std::optional<std::uint64_t> line{};   ///< of the decoded text, where the code is known
     /// Per read: the frame it has here, or nullopt (none, or not covering: see covered).
     std::vector<std::optional<Frame>> seen;
-    std::vector<bool> covered;     ///< per read: the read covers this place of the tape
-    Frame written = 0;             ///< what the image holds (extra: what was dropped)
-    std::vector<Frame> candidates; ///< repair candidates that fit (unresolved: none or several)
+    std::vector<bool> covered;      ///< per read: the read covers this place of the tape
+    Frame written = 0;              ///< what the image holds (extra: what was dropped)
+    std::vector<Frame> candidates;  ///< repair candidates that fit (unresolved: none or several)
     std::string reason;
 };
 
 struct RestoreResult {
-    std::vector<Frame> frames;                     ///< the restored image
-    std::vector<RestoreProblem> problems;          ///< in tape order
-    std::uint64_t counts[frame_status_count] = {}; ///< frames by status (extra: dropped ones)
-    std::size_t reference = 0;                     ///< the read the others were aligned to
-    std::vector<double> shared;                    ///< per read: frames it shares with the reference
+    std::vector<Frame> frames;                         ///< the restored image
+    std::vector<RestoreProblem> problems;              ///< in tape order
+    std::uint64_t counts[frame_status_count] = {};     ///< frames by status (extra: dropped ones)
+    std::size_t reference = 0;                         ///< the read the others were aligned to
+    std::vector<double> shared;                        ///< per read: frames it shares with the reference
     std::uint64_t missing_start = 0, missing_end = 0;  ///< 1 when the tape's start / end was read by no read
 
     std::uint64_t count(FrameStatus s) const { return counts[static_cast<std::size_t>(s)]; }

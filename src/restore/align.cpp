@@ -75,8 +75,7 @@ Pairs chain(Pairs anchors) {
 // in one column. free_start / free_end: either side may leave its beginning / end unpaired at no cost
 // (leaders of different length, a read that starts late or stops early).
 void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std::size_t ri, std::size_t a,
-                   std::size_t rj, std::size_t b, bool free_start, bool free_end, std::size_t max_cells,
-                   Pairs& out) {
+                   std::size_t rj, std::size_t b, bool free_start, bool free_end, std::size_t max_cells, Pairs& out) {
     if (a == 0 || b == 0) return;
     // Where one side is free, only the part of the other that can meet it is looked at.
     if (free_start && a > b + 64) ri += a - (b + 64), a = b + 64;
@@ -131,7 +130,7 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
 }
 
 // The pairs of ref and read frames that stand in one column, in order.
-Pairs pair_up(std::span<const Frame> ref, std::span<const Frame> read, const AlignOptions& o) {
+Pairs pair_up(std::span<const Frame> ref, std::span<const Frame> read, const AlignOptions& o, double& anchored_share) {
     std::size_t k = std::max<std::size_t>(o.anchor_length, 4);
     auto rr = unique_runs(ref, k), dr = unique_runs(read, k);
     Pairs anchors;
@@ -144,9 +143,12 @@ Pairs pair_up(std::span<const Frame> ref, std::span<const Frame> read, const Ali
             anchors.emplace_back(rr[x++].second, dr[y++].second);
     }
     // Each anchor's frames, checked (a hash may collide), become pairs on its diagonal.
-    Pairs runs;
+    Pairs runs, chained = chain(std::move(anchors));
+    // How much of what could anchor did: runs that occur once in each read, in order.
+    std::size_t could = std::min(rr.size(), dr.size());
+    anchored_share = could ? static_cast<double>(chained.size()) / static_cast<double>(could) : 0;
     std::int32_t last_i = -1, last_j = -1;
-    for (auto [i, j] : chain(std::move(anchors)))
+    for (auto [i, j] : chained)
         for (std::int32_t t = 0; t < static_cast<std::int32_t>(k); ++t)
             if (i + t > last_i && j + t > last_j && ref[i + t] == read[j + t]) {
                 runs.emplace_back(i + t, j + t);
@@ -211,7 +213,21 @@ ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const A
             for (std::size_t i = 0; i < n; ++i) at[r][i] = static_cast<std::int32_t>(i);
             continue;
         }
-        Pairs pairs = pair_up(reads[ref], reads[r], o);
+        double anchored_share = 0;
+        Pairs pairs = pair_up(reads[ref], reads[r], o, anchored_share);
+        // Where a read has a frame twice (or the reference lost one of a run), its extra frame goes to
+        // the end of the run of equal frames, the same place in every read: one column, not several.
+        {
+            const auto& rd = reads[r];
+            std::vector<std::int32_t> match(rd.size(), ReadAlignment::none);
+            for (auto [i, j] : pairs) match[static_cast<std::size_t>(j)] = i;
+            for (std::size_t j = 0; j + 1 < rd.size(); ++j)
+                if (match[j] == ReadAlignment::none && match[j + 1] != ReadAlignment::none && rd[j] == rd[j + 1])
+                    std::swap(match[j], match[j + 1]);
+            pairs.clear();
+            for (std::size_t j = 0; j < rd.size(); ++j)
+                if (match[j] != ReadAlignment::none) pairs.emplace_back(match[j], static_cast<std::int32_t>(j));
+        }
         for (auto [i, j] : pairs) at[r][static_cast<std::size_t>(i)] = j;
         // Where the reference read a frame twice, every read's gap goes to the same place: the end of
         // the run of equal frames, so that the extra frame has one column, not one per read.
@@ -221,18 +237,28 @@ ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const A
                 std::swap(at[r][i], at[r][i + 1]);
         pairs.clear();
         std::size_t same = 0;
+        // Shared punched frames: blank leader and trailer match on every tape and prove nothing.
         for (std::size_t i = 0; i < n; ++i)
             if (at[r][i] != ReadAlignment::none) {
                 pairs.emplace_back(static_cast<std::int32_t>(i), at[r][i]);
-                same += rf[i] == reads[r][static_cast<std::size_t>(at[r][i])];
+                same += rf[i] != blank_frame && rf[i] == reads[r][static_cast<std::size_t>(at[r][i])];
             }
-        std::size_t shorter = std::min(n, reads[r].size());
+        auto punched = [](std::span<const Frame> s) {
+            return static_cast<std::size_t>(
+                std::count_if(s.begin(), s.end(), [](Frame f) { return f != blank_frame; }));
+        };
+        std::size_t shorter = std::min(punched(rf), punched(reads[r]));
         double shared = shorter ? static_cast<double>(same) / static_cast<double>(shorter) : 0;
         out.set_shared(r, shared);
-        if (shared < o.min_shared)
-            throw Error(Errc::bad_image, "read " + std::to_string(r + 1) + " shares " +
-                                             std::to_string(static_cast<int>(shared * 100)) +
-                                             "% of its frames with read " + std::to_string(ref + 1) +
+        // Two programs share many characters wherever dynamic programming may pair them, but few long
+        // runs that occur once in each; reads of one tape share both. A short tape with much damage
+        // has few such runs left, but its frames still agree nearly all.
+        if (anchored_share < o.min_shared && shared < 0.8)
+            throw Error(Errc::bad_image, "read " + std::to_string(r + 1) + " shares runs of " +
+                                             std::to_string(o.anchor_length) + " frames with read " +
+                                             std::to_string(ref + 1) + " over only " +
+                                             std::to_string(static_cast<int>(anchored_share * 100)) +
+                                             "% of the runs that occur once in each" +
                                              ": they are reads of different tapes, or too damaged to align");
         // A read frame in no pair stands between the reference frames of the pairs around it.
         std::size_t p = 0;

@@ -111,13 +111,12 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
                 ++t->count;
         }
         std::size_t lost = covering - present;  // reads that cover this place but have no frame here
-        std::sort(tally.begin(), tally.end(), [](const Tally& x, const Tally& y) {
-            return x.good != y.good ? x.good : x.count > y.count;
-        });
+        std::sort(tally.begin(), tally.end(),
+                  [](const Tally& x, const Tally& y) { return x.good != y.good ? x.good : x.count > y.count; });
         Frame reference_value = 0;
         bool reference_here = a.frame(c, a.reference()) != ReadAlignment::none;
         if (reference_here) reference_value = reads[a.reference()][static_cast<std::size_t>(a.frame(c, a.reference()))];
-        auto problem = [&](FrameStatus s, Frame written, std::string reason) {
+        auto problem = [&](FrameStatus s, Frame written, std::string reason, bool dropped) {
             RestoreProblem p;
             p.status = s;
             p.column = c;
@@ -129,17 +128,29 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
                                                           : std::optional(reads[r][static_cast<std::size_t>(i)]));
                 p.covered.push_back(a.covers(r, c));
             }
-            if (s != FrameStatus::extra) p.frame = out.frames.size() + 1;
+            if (!dropped) p.frame = out.frames.size() + 1;
             p.after = out.frames.size();
             out.problems.push_back(std::move(p));
         };
         FrameStatus s;
         Frame written = tally.front().value;
         std::string reason;
-        if (present < lost) {
+        // Blank tape past the end of most reads: leader or trailer that one read has longer (a frame
+        // read twice there has nothing to align by). The length most reads have is kept.
+        bool lone_blank_end = tally.size() == 1 && tally.front().value == blank_frame && covering < a.reads() &&
+                              present * 2 <= a.reads() && a.reads() > 1;
+        if (lone_blank_end) lost = a.reads() - present;
+        if (present < lost && (present == 1 || tally.size() > 1 || !tally.front().good || lone_blank_end)) {
             s = FrameStatus::extra;
             reason = std::to_string(present) + " of " + std::to_string(covering) +
                      " reads have this frame: read twice or a splice, not written";
+        } else if (present < lost) {
+            // Two reads or more agree on a frame the others lack: read twice by both, or lost by the
+            // others, which is as likely. Written, and said.
+            s = FrameStatus::contested;
+            reason = std::to_string(present) + " of " + std::to_string(covering) +
+                     " reads agree on this frame and the others have none: lost by them, or read twice; not "
+                     "written, as most reads have none";
         } else if (!tally.front().good) {
             s = FrameStatus::unresolved;  // repaired below if exactly one change fits
             written = reference_here ? reference_value : written;
@@ -161,12 +172,13 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             reason = all_differ ? "every read saw something else"
                                 : "good readings disagree and nothing decides; the reference read's is written";
         }
+        bool dropped = s == FrameStatus::extra || (s == FrameStatus::contested && present < lost);
         ++out.counts[static_cast<std::size_t>(s)];
         if (s != FrameStatus::clean) {
             if (s == FrameStatus::unresolved) unresolved.push_back(out.problems.size());
-            problem(s, written, std::move(reason));
+            problem(s, written, std::move(reason), dropped);
         }
-        if (s != FrameStatus::extra) out.frames.push_back(written);
+        if (!dropped) out.frames.push_back(written);
     }
     // What no read has right: the single-hole changes of what the reads saw that make a character of
     // the code and fit the block. Exactly one: inferred. Otherwise it stays as read.
@@ -190,9 +202,8 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
                 if (first)
                     shared_candidates = mine;
                 else
-                    std::erase_if(shared_candidates, [&](Frame c) {
-                        return std::find(mine.begin(), mine.end(), c) == mine.end();
-                    });
+                    std::erase_if(shared_candidates,
+                                  [&](Frame c) { return std::find(mine.begin(), mine.end(), c) == mine.end(); });
                 first = false;
             }
             std::size_t at = static_cast<std::size_t>(*p.frame - 1);
@@ -229,9 +240,9 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         p.status = FrameStatus::missing;
         p.frame = start ? 1 : out.frames.size();
         p.column = start ? 0 : a.columns() - 1;
-        p.reason = start ? "no read starts with blank leader: the start of the tape may be missing; read it again "
+        p.reason = start ? "no read starts with leader: the start of the tape may be missing; read it again "
                            "from before its first punched frame"
-                         : "no read ends with blank trailer: the end of the tape may be missing; read it again to "
+                         : "no read ends with trailer: the end of the tape may be missing; read it again to "
                            "past its last punched frame";
         ++out.counts[static_cast<std::size_t>(FrameStatus::missing)];
         if (start)
@@ -239,11 +250,22 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         else
             out.problems.push_back(std::move(p));
     };
-    if (!out.frames.empty() && out.frames.front() != blank_frame) {
+    // Leader is blank tape, or (DEC binary tapes) a run of one frame, such as track 8 alone.
+    auto leader_like = [&](bool start) {
+        constexpr std::size_t run = 10;
+        if (out.frames.empty()) return true;
+        Frame end = start ? out.frames.front() : out.frames.back();
+        if (end == blank_frame) return true;
+        if (out.frames.size() < run) return false;
+        for (std::size_t i = 0; i < run; ++i)
+            if ((start ? out.frames[i] : out.frames[out.frames.size() - 1 - i]) != end) return false;
+        return true;
+    };
+    if (!leader_like(true)) {
         out.missing_start = 1;
         add_missing(true);
     }
-    if (!out.frames.empty() && out.frames.back() != blank_frame) {
+    if (!leader_like(false)) {
         out.missing_end = 1;
         add_missing(false);
     }
