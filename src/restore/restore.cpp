@@ -111,6 +111,14 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
                 ++t->count;
         }
         std::size_t lost = covering - present;  // reads that cover this place but have no frame here
+        // Whether a frame stands here at all is weighed by the good readings: a frame failing parity
+        // may be a misread of this frame or garbage a stain put between two (the reads' alignment
+        // cannot tell inside a burst), so it counts for neither side.
+        std::size_t present_good = 0, good_values = 0;
+        for (const auto& t : tally) {
+            present_good += t.good ? static_cast<std::size_t>(t.count) : 0;
+            good_values += t.good;
+        }
         std::sort(tally.begin(), tally.end(),
                   [](const Tally& x, const Tally& y) { return x.good != y.good ? x.good : x.count > y.count; });
         Frame reference_value = 0;
@@ -140,7 +148,8 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         bool lone_blank_end = tally.size() == 1 && tally.front().value == blank_frame && covering < a.reads() &&
                               present * 2 <= a.reads() && a.reads() > 1;
         if (lone_blank_end) lost = a.reads() - present;
-        if (present < lost && (present == 1 || tally.size() > 1 || !tally.front().good || lone_blank_end)) {
+        if (tally.front().good) present = present_good;
+        if (present < lost && (present <= 1 || good_values > 1 || !tally.front().good || lone_blank_end)) {
             s = FrameStatus::extra;
             reason = std::to_string(present) + " of " + std::to_string(covering) +
                      " reads have this frame: read twice or a splice, not written";
