@@ -84,9 +84,11 @@ void BM_ThreeReads(benchmark::State& state) {
         for (std::uint64_t p = 0; p < programs; ++p) {
             auto tape = generated_tape(1'000'000, p + 1);
             std::vector<std::vector<tape::Frame>> reads;
-            for (std::uint64_t k = 0; k < 3; ++k) reads.push_back(tape::damage(tape, tape::mixed_damage(0.01, p * 3 + k + 1)));
+            for (std::uint64_t k = 0; k < 3; ++k)
+                reads.push_back(tape::damage(tape, tape::mixed_damage(0.01, p * 3 + k + 1)));
             std::vector<std::span<const tape::Frame>> spans(reads.begin(), reads.end());
-            auto r = tape::restore(spans, tape::RestoreOptions{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::gost});
+            auto r = tape::restore(
+                spans, tape::RestoreOptions{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::gost});
             auto a = punched(tape), b = punched(r.frames);
             exact += a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
             frames += tape.size();
@@ -145,7 +147,8 @@ void BM_FiveReadsSpeed(benchmark::State& state) {
     for (std::uint64_t k = 0; k < 5; ++k) reads.push_back(tape::damage(tape, tape::mixed_damage(0.01, k + 50)));
     std::vector<std::span<const tape::Frame>> spans(reads.begin(), reads.end());
     for (auto _ : state) {
-        auto r = tape::restore(spans, tape::RestoreOptions{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::gost});
+        auto r =
+            tape::restore(spans, tape::RestoreOptions{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::gost});
         benchmark::DoNotOptimize(r.frames.data());
     }
     state.counters["frames_per_read"] = static_cast<double>(tape.size());
