@@ -386,6 +386,14 @@ void load_program_whole(ProgramInput& in) {
     }
 }
 
+tape::FormatSpec parse_spec_or_fail(const std::string& text) {
+    try {
+        return tape::parse_format_spec(text);
+    } catch (const tape::Error& e) {
+        fail("", e);
+    }
+}
+
 std::string json_number(const std::optional<std::uint64_t>& n) { return n ? std::to_string(*n) : "null"; }
 
 std::string finding_json(const tape::Diagnostic& f) {

@@ -13,6 +13,7 @@
 #include "tape/decode.hpp"
 #include "tape/detect.hpp"
 #include "tape/error.hpp"
+#include "tape/format_spec.hpp"
 #include "tape/image.hpp"
 #include "tape/input.hpp"
 #include "tape/program.hpp"
@@ -146,6 +147,9 @@ void load_program(ProgramInput& in, tape::ProgramVisitor& visitor, bool frames_t
 void end_program(const ProgramInput& in);
 /// The whole of IN's programs into in.tape, for the commands that need all of it at once.
 void load_program_whole(ProgramInput& in);
+
+/// SPEC in the notation of ГОСТ 20999-83 §9; a malformed one ends the program (usage, exit 2).
+tape::FormatSpec parse_spec_or_fail(const std::string& text);
 
 /// A JSON string literal for s (UTF-8 passed through, controls escaped).
 std::string json_string(const std::string& s);

@@ -3,7 +3,6 @@
 #include "commands.hpp"
 #include "restore_report.hpp"
 #include "tape/align.hpp"
-#include "tape/detect.hpp"
 
 namespace cli {
 namespace {
@@ -18,18 +17,10 @@ std::string side(const std::optional<tape::FrameCode>& code, const std::vector<t
 }
 
 void run(const DiffArgs& a) {
-    TapeInput one = read_tape(a.first, ""), two = read_tape(a.second, "");
-    std::optional<tape::FrameCode> code;
-    if (a.code == "iso" || a.code == "eia") {
-        auto c = *tape::parse_code(a.code);
-        code =
-            tape::FrameCode::make(c, c == tape::Code::eia ? tape::Parity::odd : tape::Parity::even, globals().table());
-    } else if (a.code == "auto") {
-        auto d = tape::detect_code(one.frames.size() >= two.frames.size() ? one.frames : two.frames, globals().table());
-        if (d.reading &&
-            (d.kind == tape::TapeKind::iso || d.kind == tape::TapeKind::eia || d.kind == tape::TapeKind::ascii))
-            code = tape::FrameCode::make(d.reading->code, d.reading->parity, globals().table());
-    }
+    std::vector<TapeInput> reads{read_tape(a.first, ""), read_tape(a.second, "")};
+    const TapeInput &one = reads[0], &two = reads[1];
+    std::string code_name;
+    std::optional<tape::FrameCode> code = code_for_reads(a.code, "even", reads, code_name);
     std::vector<std::span<const tape::Frame>> spans{one.frames, two.frames};
     tape::ReadAlignment al = [&] {
         try {

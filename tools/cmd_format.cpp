@@ -15,18 +15,10 @@ struct FormatArgs {
     const CLI::Option* from_option = nullptr;  // given or not: "--from ''" is an error, not "no --from"
 };
 
-tape::FormatSpec parse_spec(const std::string& text) {
-    try {
-        return tape::parse_format_spec(text);
-    } catch (const tape::Error& e) {
-        fail("", e);
-    }
-}
-
 void run(const FormatArgs& a) {
-    tape::FormatSpec spec = parse_spec(a.spec);
+    tape::FormatSpec spec = parse_spec_or_fail(a.spec);
     std::optional<tape::FormatSpec> from;
-    if (a.from_option->count() > 0) from = parse_spec(a.from);
+    if (a.from_option->count() > 0) from = parse_spec_or_fail(a.from);
     ProgramInput in = open_program(a.input, a.source);
     load_program_whole(in);
     std::vector<tape::Diagnostic> findings;

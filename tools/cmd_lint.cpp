@@ -81,13 +81,7 @@ void run(const LintArgs& a) {
         return;
     }
     std::optional<tape::FormatSpec> spec;
-    if (!a.spec.empty()) {
-        try {
-            spec = tape::parse_format_spec(a.spec);
-        } catch (const tape::Error& e) {
-            fail("", e);
-        }
-    }
+    if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     // Streamed: a tape of any length is checked in bounded memory (--max-errors findings a rule).
     ProgramInput in = open_program(a.input, a.source);
     tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors});

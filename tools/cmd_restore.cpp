@@ -14,40 +14,9 @@ struct RestoreArgs {
     bool json = false, force = false;
 };
 
-// The code to vote and repair in: given, or the one the longest read is in; none for a tape in no
-// character code (a binary tape), which is merged by alignment and vote alone.
-std::optional<tape::FrameCode> choose_code(const RestoreArgs& a, const std::vector<TapeInput>& reads,
-                                           std::string& text) {
-    text = a.code;
-    if (a.code == "none") return std::nullopt;
-    if (a.code != "auto") {
-        auto code = *tape::parse_code(a.code);
-        return tape::FrameCode::make(code, code == tape::Code::eia ? tape::Parity::odd : *tape::parse_parity(a.parity),
-                                     globals().table());
-    }
-    const TapeInput* longest = &reads.front();
-    for (const auto& r : reads)
-        if (r.frames.size() > longest->frames.size()) longest = &r;
-    tape::CodeDetection d = tape::detect_code(longest->frames, globals().table());
-    if (globals().verbosity > 0) say(display_name(longest->name), d.reason);
-    if (!d.code || !d.reading ||
-        (d.kind != tape::TapeKind::iso && d.kind != tape::TapeKind::eia && d.kind != tape::TapeKind::ascii)) {
-        text = "none";
-        return std::nullopt;
-    }
-    text = tape::reading_name(*d.reading);
-    return tape::FrameCode::make(d.reading->code, d.reading->parity, globals().table());
-}
-
 void run(const RestoreArgs& a) {
     std::optional<tape::FormatSpec> spec;
-    if (!a.spec.empty()) {
-        try {
-            spec = tape::parse_format_spec(a.spec);
-        } catch (const tape::Error& e) {
-            fail("", e);
-        }
-    }
+    if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     const tape::ImageFormat* out_format =
         a.format.empty() ? tape::image_format_for_path(a.output) : tape::find_image_format(a.format);
     if (!out_format || !out_format->can_write()) out_format = &tape::default_image_format();
@@ -55,7 +24,7 @@ void run(const RestoreArgs& a) {
     std::vector<TapeInput> reads;
     for (const auto& path : a.reads) reads.push_back(read_tape(path, ""));
     RestoreReportInput report;
-    report.code = choose_code(a, reads, report.code_text);
+    report.code = code_for_reads(a.code, a.parity, reads, report.code_text);
     std::vector<std::span<const tape::Frame>> spans;
     for (const auto& r : reads) {
         spans.emplace_back(r.frames);

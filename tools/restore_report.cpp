@@ -31,6 +31,29 @@ constexpr tape::FrameStatus all_statuses[] = {tape::FrameStatus::clean,    tape:
 
 }  // namespace
 
+std::optional<tape::FrameCode> code_for_reads(const std::string& code, const std::string& parity,
+                                              const std::vector<TapeInput>& reads, std::string& name) {
+    name = code;
+    if (code == "none") return std::nullopt;
+    if (code != "auto") {
+        auto c = *tape::parse_code(code);
+        return tape::FrameCode::make(c, c == tape::Code::eia ? tape::Parity::odd : *tape::parse_parity(parity),
+                                     globals().table());
+    }
+    const TapeInput* longest = &reads.front();
+    for (const auto& r : reads)
+        if (r.frames.size() > longest->frames.size()) longest = &r;
+    tape::CodeDetection d = tape::detect_code(longest->frames, globals().table());
+    if (globals().verbosity > 0) say(display_name(longest->name), d.reason);
+    if (!d.code || !d.reading ||
+        (d.kind != tape::TapeKind::iso && d.kind != tape::TapeKind::eia && d.kind != tape::TapeKind::ascii)) {
+        name = "none";
+        return std::nullopt;
+    }
+    name = tape::reading_name(*d.reading);
+    return tape::FrameCode::make(d.reading->code, d.reading->parity, globals().table());
+}
+
 std::string frame_text(const std::optional<tape::FrameCode>& code, tape::Frame f) {
     std::string s = tape::holes_picture(f);
     if (!code) return s;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_common.hpp"
 #include "tape/restore.hpp"
 
 namespace cli {
@@ -27,6 +28,11 @@ std::vector<RereadRange> reread_list(const tape::RestoreResult& r);
 
 std::string restore_report_text(const RestoreReportInput& in);
 std::string restore_report_json(const RestoreReportInput& in);
+
+/// The code reads are in: iso, eia (with parity for iso), none; or auto: the code of the longest read
+/// (said with -v), none for a tape in no character code (a binary tape). name: how the report says it.
+std::optional<tape::FrameCode> code_for_reads(const std::string& code, const std::string& parity,
+                                              const std::vector<TapeInput>& reads, std::string& name);
 
 /// "|o oo.   | '+'", or "|o oo.   | parity error": a frame as the report shows it.
 std::string frame_text(const std::optional<tape::FrameCode>& code, tape::Frame f);

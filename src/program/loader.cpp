@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "chars.hpp"
 #include "codec/swar.hpp"
 #include "codec/utf8.hpp"
 #include "macro.hpp"
@@ -19,8 +20,7 @@ namespace {
 
 constexpr std::size_t sniff_limit = 64 << 10;  // text looked at to choose a dialect
 
-// DC1-DC4 switch a reader or punch on and off (RS-232 captures hold them): no part of the program.
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || (c >= '\x11' && c <= '\x14'); }
+using chars::is_blank, chars::is_digit, chars::is_letter, chars::is_lower, chars::is_upper, chars::upper;
 
 // What a character can be inside a word, looked up once per character in the hot loop.
 enum class CharClass : std::uint8_t { other, digit, point, sign, blank };
@@ -32,11 +32,6 @@ constexpr auto char_class = [] {
     t[' '] = t['\t'] = t['\r'] = t[0x11] = t[0x12] = t[0x13] = t[0x14] = CharClass::blank;
     return t;
 }();
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_upper(char c) { return c >= 'A' && c <= 'Z'; }
-bool is_lower(char c) { return c >= 'a' && c <= 'z'; }
-bool is_letter(char c) { return is_upper(c) || is_lower(c); }
-char upper(char c) { return is_lower(c) ? static_cast<char>(c - 'a' + 'A') : c; }
 
 constexpr std::array<std::string_view, 9> macro_keywords = {"IF",    "GOTO",  "WHILE", "DO",   "END",
                                                             "POPEN", "PCLOS", "DPRNT", "BPRNT"};
@@ -553,6 +548,19 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
     return end < e ? end + 1 : e;
 }
 
+// A word the dialect does not know, kept as written from i: the next word of the block.
+Word& Loader::flagged_word(std::size_t i, std::string_view text) {
+    Word& w = next_word();
+    w.address = text_[i];
+    w.where = at(i);
+    w.sign = 0;
+    w.point = -1;
+    w.macro = false;
+    w.known = false;
+    w.text.assign(text);
+    return w;
+}
+
 // The first ')' outside any comment from i to e, or npos.
 std::size_t Loader::stray_close(std::size_t i, std::size_t e) const {
     bool in_comment = false;
@@ -570,15 +578,8 @@ std::size_t Loader::stray_close(std::size_t i, std::size_t e) const {
 // Something the dialect does not know, kept as one flagged word from i to to, reported once.
 std::size_t Loader::flagged(std::size_t i, std::size_t e, std::size_t to, std::string message, std::string_view rule) {
     to = std::min(std::max(to, i + 1), e);
-    Word& w = next_word();
-    w.address = text_[i];
-    w.where = at(i);
-    w.sign = 0;
-    w.point = -1;
-    w.macro = false;
-    w.known = false;
-    std::string_view span = trim_right(text_.substr(i, to - i));
-    w.text.assign(span);
+    Word& w = flagged_word(i, trim_right(text_.substr(i, to - i)));
+    std::string_view span = w.text;
     find(rule, i, blk_.ordinal, "'" + std::string(span) + "' " + std::move(message));
     return to;
 }
@@ -874,14 +875,7 @@ std::size_t Loader::unexpected(std::size_t i, std::size_t e, std::uint64_t block
             j += utf8::length(text_, j);
         j = std::min(std::max(j, i + 1), e);
     }
-    Word& w = next_word();
-    w.address = c;
-    w.where = at(i);
-    w.sign = 0;
-    w.point = -1;
-    w.macro = false;
-    w.known = false;
-    w.text.assign(text_.substr(i, j - i));
+    Word& w = flagged_word(i, text_.substr(i, j - i));
     // A bad frame read past (decode --keep-going) stands as U+FFFD; on a tape the codec reported it.
     if (!frame_of_.empty() && w.text.starts_with(bad_frame_marker)) return j;
     if (message.empty())

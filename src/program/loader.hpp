@@ -49,6 +49,7 @@ private:
     std::size_t flagged(std::size_t i, std::size_t e, std::size_t end, std::string message,
                         std::string_view rule = "unknown-word");
     std::size_t stray_close(std::size_t i, std::size_t e) const;
+    Word& flagged_word(std::size_t i, std::string_view text);
     std::size_t macro_statement(std::size_t i, std::size_t e, const std::string& keyword);
     std::size_t assignment(std::size_t i, std::size_t e);
     std::size_t o_word(std::size_t i, std::size_t e);

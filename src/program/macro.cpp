@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
+
+#include "chars.hpp"
 
 namespace tape::macro {
 namespace {
@@ -14,9 +15,7 @@ constexpr std::array<std::string_view, 14> linuxcnc_functions = {
     "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX", "FUP", "LN", "EXP", "EXISTS"};
 constexpr std::array<std::string_view, 10> operators = {"EQ", "NE", "GT", "GE", "LT", "LE", "AND", "OR", "XOR", "MOD"};
 
-bool is_letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+using chars::is_blank, chars::is_digit, chars::is_letter;
 
 bool is_function(std::string_view name, bool linuxcnc) {
     if (linuxcnc)
@@ -36,8 +35,7 @@ std::size_t skip_blanks(std::string_view s, std::size_t i) {
 
 std::string name_at(std::string_view s, std::size_t i) {
     std::string name;
-    for (; i < s.size() && is_letter(s[i]); ++i)
-        name += static_cast<char>(std::toupper(static_cast<unsigned char>(s[i])));
+    for (; i < s.size() && is_letter(s[i]); ++i) name += chars::upper(s[i]);
     return name;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 
+#include "tape/decode.hpp"
 #include "tape/lint.hpp"
 
 namespace tape {
@@ -26,7 +27,7 @@ std::string decoded(const FrameCode& code, std::span<const Frame> frames, std::s
         if (k == FrameKind::character)
             s += code.character(f);
         else if (k == FrameKind::parity_error || k == FrameKind::not_in_code)
-            s += "\xEF\xBF\xBD";
+            s += bad_frame_marker;
     }
     return s;
 }
