@@ -73,6 +73,22 @@ struct RestoreResult {
 /// Restores one tape from reads of it (any number, one or more). Throws Error as align_reads does.
 RestoreResult restore(std::span<const std::span<const Frame>> reads, const RestoreOptions& options);
 
+/// How a restoration did against the tape its reads were made from (reads damaged by tape::damage, in
+/// tests and benchmarks of restoring): the output aligned with the tape, frame by frame.
+struct RestoreCheck {
+    std::uint64_t right = 0;           ///< tape frames the output holds as punched
+    std::uint64_t silently_wrong = 0;  ///< frames wrong, added or left out where the report has no doubt
+    std::uint64_t flagged_wrong = 0;   ///< wrong where the report says it is in doubt
+    /// Blank frames of the leader or trailer added or left out: their length is voted like any run of
+    /// equal frames, and a run of a hundred has a hundred times the drops and doubles of one frame.
+    std::uint64_t blank_ends = 0;
+    bool exact = false;  ///< the punched part (first to last punched frame) is the tape's
+};
+RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& result);
+
+/// True for the statuses that say a frame is in doubt: inferred, contested, unstable, unresolved, missing.
+bool in_doubt(FrameStatus s);
+
 /// The distance of frame (1-based) from the first feed hole of the tape, in centimetres (2.54 mm pitch).
 double frame_distance_cm(std::uint64_t frame);
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <climits>
 #include <string>
 
 #include "tape/error.hpp"
@@ -13,13 +14,20 @@ namespace {
 
 using Pairs = std::vector<std::pair<std::int32_t, std::int32_t>>;  // (reference frame, read frame)
 
-// Scores: a frame misread by one hole is still the same frame, so a substitution costs less than a
-// gap on each side; a frame unlike any other (a stain) is still better in its column than as two gaps.
+// Scores: a frame misread by one hole is still the same frame, so it stays in its column; frames
+// that differ more are a stain or a splice read as other frames, and stand apart from the frames the
+// others read there (two gaps cost less). A gap costs most where it opens: a reader loses or adds a
+// stretch at once, so one run of gaps is likelier than several, and two good reads then place a
+// frame that has an equal neighbour the same way whatever damage lies further back. Frames lost next
+// to frames added are one misread stretch, kept together: a gap of one kind opens a little cheaper
+// next to a gap of the other.
 int score(Frame a, Frame b) {
-    if (a == b) return 2;
-    return std::popcount(static_cast<unsigned>(a ^ b)) == 1 ? -1 : -3;
+    if (a == b) return 4;
+    return std::popcount(static_cast<unsigned>(a ^ b)) == 1 ? -2 : -18;
 }
-constexpr int gap = -2;
+constexpr int gap_open = -8;    // the first frame of a run of gaps
+constexpr int gap_extend = -2;  // each further one
+constexpr int gap_switch = -7;  // a run of gaps of one kind opening next to one of the other
 
 // The rolling hashes of every run of k frames, sorted, with the runs that occur once kept.
 std::vector<std::pair<std::uint64_t, std::int32_t>> unique_runs(std::span<const Frame> s, std::size_t k) {
@@ -71,9 +79,10 @@ Pairs chain(Pairs anchors) {
     return out;
 }
 
-// Aligns ref[ri, ri + a) with read[rj, rj + b) by dynamic programming, appending the pairs that stand
-// in one column. free_start / free_end: either side may leave its beginning / end unpaired at no cost
-// (leaders of different length, a read that starts late or stops early).
+// Aligns ref[ri, ri + a) with read[rj, rj + b) by dynamic programming with gaps that cost most where
+// they open (Gotoh), appending the pairs that stand in one column. free_start / free_end: either side
+// may leave its beginning / end unpaired at no cost (leaders of different length, a read that starts
+// late or stops early).
 void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std::size_t ri, std::size_t a,
                    std::size_t rj, std::size_t b, bool free_start, bool free_end, std::size_t max_cells, Pairs& out) {
     if (a == 0 || b == 0) return;
@@ -83,47 +92,61 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     if (free_end && a > b + 64) a = b + 64;
     if (free_end && b > a + 64) b = a + 64;
     if ((a + 1) * (b + 1) > max_cells) return;
+    // States: a pair (M), a reference frame unpaired (X), a read frame unpaired (Y). A cell's trace
+    // holds where each state came from: bits 0-1 for M, 2-3 for X, 4-5 for Y.
+    enum : std::uint8_t { M = 0, X = 1, Y = 2 };
+    constexpr int never = INT_MIN / 4;
+    auto run = [](std::size_t len) { return gap_open + static_cast<int>(len - 1) * gap_extend; };
     std::vector<std::uint8_t> trace((a + 1) * (b + 1));
-    std::vector<int> prev(b + 1), row(b + 1);
-    for (std::size_t j = 0; j <= b; ++j) {
-        prev[j] = free_start ? 0 : static_cast<int>(j) * gap;
-        trace[j] = 2;
-    }
-    int best = prev[b];
-    std::size_t best_i = 0, best_j = b;
+    std::vector<int> pm(b + 1, never), px(b + 1, never), py(b + 1, never), cm(b + 1), cx(b + 1), cy(b + 1);
+    pm[0] = 0;
+    for (std::size_t j = 1; j <= b; ++j) py[j] = free_start ? 0 : run(j);
+    auto best3 = [](int m, int x, int y, std::uint8_t& from) {
+        from = M;
+        int s = m;
+        if (x > s) s = x, from = X;
+        if (y > s) s = y, from = Y;
+        return s;
+    };
+    int best = never;
+    std::size_t best_i = a, best_j = b;
+    std::uint8_t best_state = M;
+    auto consider = [&](int m, int x, int y, std::size_t i, std::size_t j) {
+        std::uint8_t from;
+        int s = best3(m, x, y, from);
+        if (s > best) best = s, best_i = i, best_j = j, best_state = from;
+    };
+    if (free_end) consider(pm[b], px[b], py[b], 0, b);
     for (std::size_t i = 1; i <= a; ++i) {
-        row[0] = free_start ? 0 : static_cast<int>(i) * gap;
-        trace[i * (b + 1)] = 1;
+        cm[0] = never, cy[0] = never, cx[0] = free_start ? 0 : run(i);
         Frame f = ref[ri + i - 1];
         for (std::size_t j = 1; j <= b; ++j) {
-            int diag = prev[j - 1] + score(f, read[rj + j - 1]);
-            int up = prev[j] + gap, left = row[j - 1] + gap;
-            std::uint8_t t = 0;
-            int s = diag;
-            if (up > s) s = up, t = 1;
-            if (left > s) s = left, t = 2;
-            row[j] = s;
-            trace[i * (b + 1) + j] = t;
+            std::uint8_t fm, fx, fy;
+            cm[j] = best3(pm[j - 1], px[j - 1], py[j - 1], fm) + score(f, read[rj + j - 1]);
+            cx[j] = best3(pm[j] + gap_open, px[j] + gap_extend, py[j] + gap_switch, fx);
+            cy[j] = best3(cm[j - 1] + gap_open, cx[j - 1] + gap_switch, cy[j - 1] + gap_extend, fy);
+            trace[i * (b + 1) + j] = static_cast<std::uint8_t>(fm | fx << 2 | fy << 4);
         }
-        if (free_end && row[b] > best) best = row[b], best_i = i, best_j = b;
-        std::swap(prev, row);
+        if (free_end) consider(cm[b], cx[b], cy[b], i, b);
+        std::swap(pm, cm), std::swap(px, cx), std::swap(py, cy);
     }
-    std::size_t i = a, j = b;
     if (free_end) {
-        for (std::size_t jj = 0; jj <= b; ++jj)
-            if (prev[jj] > best) best = prev[jj], best_i = a, best_j = jj;
-        i = best_i, j = best_j;
+        for (std::size_t j = 0; j <= b; ++j) consider(pm[j], px[j], py[j], a, j);
+    } else {
+        best3(pm[b], px[b], py[b], best_state);
     }
+    std::size_t i = best_i, j = best_j;
+    std::uint8_t state = best_state;
     Pairs stretch;
     while (i > 0 && j > 0) {
         std::uint8_t t = trace[i * (b + 1) + j];
-        if (t == 0) {
+        if (state == M) {
             stretch.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
-            --i, --j;
-        } else if (t == 1) {
-            --i;
+            state = t & 3, --i, --j;
+        } else if (state == X) {
+            state = (t >> 2) & 3, --i;
         } else {
-            --j;
+            state = (t >> 4) & 3, --j;
         }
     }
     out.insert(out.end(), stretch.rbegin(), stretch.rend());
@@ -169,6 +192,262 @@ Pairs pair_up(std::span<const Frame> ref, std::span<const Frame> read, const Ali
     return out;
 }
 
+// Every reference frame's partner in read (or none), from the pairs. Where a read has a frame twice
+// (or the reference lost one of a run), the extra frame goes to the end of the run of equal frames,
+// and so does the gap where the reference read one twice: the same place in every read, one column.
+std::vector<std::int32_t> partners(std::span<const Frame> ref, std::span<const Frame> read, const Pairs& pairs) {
+    std::vector<std::int32_t> match(read.size(), ReadAlignment::none);
+    for (auto [i, j] : pairs) match[static_cast<std::size_t>(j)] = i;
+    // A gap next to unpaired frames of the other side is part of a misread stretch and stays there.
+    std::int32_t last_i = -1;  // the reference frame of the last paired read frame
+    for (std::size_t j = 0; j + 1 < read.size(); ++j) {
+        if (match[j] == ReadAlignment::none && match[j + 1] != ReadAlignment::none && read[j] == read[j + 1] &&
+            match[j + 1] == last_i + 1)
+            std::swap(match[j], match[j + 1]);
+        if (match[j] != ReadAlignment::none) last_i = match[j];
+    }
+    std::vector<std::int32_t> at(ref.size(), ReadAlignment::none);
+    for (std::size_t j = 0; j < read.size(); ++j)
+        if (match[j] != ReadAlignment::none) at[static_cast<std::size_t>(match[j])] = static_cast<std::int32_t>(j);
+    std::int32_t last_j = -1;  // the read frame of the last paired reference frame
+    for (std::size_t i = 0; i + 1 < ref.size(); ++i) {
+        if (at[i] == ReadAlignment::none && at[i + 1] != ReadAlignment::none && ref[i] == ref[i + 1] &&
+            at[i + 1] == last_j + 1)
+            std::swap(at[i], at[i + 1]);
+        if (at[i] != ReadAlignment::none) last_j = at[i];
+    }
+    return at;
+}
+
+// A run of read frames that no reference frame is paired with: they stand before reference frame
+// `before` (the reference's length: after its last).
+struct Insert {
+    std::size_t before;
+    std::int32_t start, count;
+};
+
+std::vector<Insert> inserts_of(const std::vector<std::int32_t>& at, std::size_t read_size) {
+    std::vector<Insert> out;
+    std::size_t j = 0;
+    for (std::size_t i = 0; i <= at.size(); ++i) {
+        if (i < at.size() && at[i] == ReadAlignment::none) continue;
+        std::size_t to = i < at.size() ? static_cast<std::size_t>(at[i]) : read_size;
+        if (to > j) out.push_back({i, static_cast<std::int32_t>(j), static_cast<std::int32_t>(to - j)});
+        j = std::max(j, to + 1);
+    }
+    return out;
+}
+
+// Appends the columns: one per reference frame, and before it the reads' inserts, the t-th frame of
+// every read's insert in one column. offset[r] is added to read r's frame indices.
+void add_columns(ReadAlignment& out, std::size_t n, const std::vector<std::vector<std::int32_t>>& at,
+                 const std::vector<std::vector<Insert>>& inserts, std::span<const std::int32_t> offset) {
+    const std::size_t reads = at.size();
+    std::vector<std::int32_t> column(reads);
+    std::vector<std::size_t> next(reads, 0);  // each read's next insert
+    std::vector<const Insert*> here(reads);
+    auto global = [&](std::size_t r, std::int32_t i) { return i == ReadAlignment::none ? i : i + offset[r]; };
+    for (std::size_t i = 0; i <= n; ++i) {
+        std::int32_t extra = 0;
+        for (std::size_t r = 0; r < reads; ++r) {
+            here[r] = next[r] < inserts[r].size() && inserts[r][next[r]].before == i ? &inserts[r][next[r]++] : nullptr;
+            if (here[r]) extra = std::max(extra, here[r]->count);
+        }
+        for (std::int32_t t = 0; t < extra; ++t) {
+            for (std::size_t r = 0; r < reads; ++r)
+                column[r] = here[r] && t < here[r]->count ? global(r, here[r]->start + t) : ReadAlignment::none;
+            out.add_column(column);
+        }
+        if (i == n) break;
+        for (std::size_t r = 0; r < reads; ++r) column[r] = global(r, at[r][i]);
+        out.add_column(column);
+    }
+}
+
+// The reads' frames in a stretch where they disagree, aligned again around the read that agrees best
+// with the others there: the global reference may have garbled just this stretch, and frames other
+// reads have right would then stand in columns of their own, one per read, and be outvoted.
+void realign_window(std::span<const std::span<const Frame>> reads, std::span<const std::int32_t> lo,
+                    std::span<const std::int32_t> len, ReadAlignment& out) {
+    const std::size_t n_reads = reads.size();
+    std::vector<std::span<const Frame>> seq(n_reads);
+    for (std::size_t r = 0; r < n_reads; ++r)
+        seq[r] = reads[r].subspan(static_cast<std::size_t>(lo[r]), static_cast<std::size_t>(len[r]));
+    auto pairs_of = [&](std::size_t c, std::size_t r) {
+        Pairs p;
+        align_stretch(seq[c], seq[r], 0, seq[c].size(), 0, seq[r].size(), false, false, SIZE_MAX, p);
+        return p;
+    };
+    // The centre: the read that aligns best with all the others (the sum of the alignments' scores).
+    auto total = [&](std::size_t c, std::size_t r, const Pairs& p) {
+        int sum = 0;
+        std::int32_t pi = -1, pj = -1;
+        auto gaps = [&](std::int32_t from, std::int32_t to) {
+            return to > from ? gap_open + (to - from - 1) * gap_extend : 0;
+        };
+        for (auto [i, j] : p) {
+            sum += score(seq[c][static_cast<std::size_t>(i)], seq[r][static_cast<std::size_t>(j)]);
+            sum += gaps(pi + 1, i) + gaps(pj + 1, j);
+            pi = i, pj = j;
+        }
+        return sum + gaps(pi + 1, static_cast<std::int32_t>(seq[c].size())) +
+               gaps(pj + 1, static_cast<std::int32_t>(seq[r].size()));
+    };
+    std::size_t centre = 0;
+    int best = INT_MIN;
+    std::vector<std::vector<Pairs>> all(n_reads, std::vector<Pairs>(n_reads));
+    for (std::size_t c = 0; c < n_reads; ++c) {
+        int sum = 0;
+        for (std::size_t r = 0; r < n_reads; ++r) {
+            if (r == c) continue;
+            all[c][r] = pairs_of(c, r);
+            sum += total(c, r, all[c][r]);
+        }
+        if (sum > best) best = sum, centre = c;
+    }
+    std::vector<std::vector<std::int32_t>> at(n_reads);
+    std::vector<std::vector<Insert>> inserts(n_reads);
+    for (std::size_t r = 0; r < n_reads; ++r) {
+        if (r == centre) {
+            at[r].resize(seq[r].size());
+            for (std::size_t i = 0; i < seq[r].size(); ++i) at[r][i] = static_cast<std::int32_t>(i);
+        } else {
+            at[r] = partners(seq[centre], seq[r], all[centre][r]);
+            inserts[r] = inserts_of(at[r], seq[r].size());
+        }
+    }
+    add_columns(out, seq[centre].size(), at, inserts, lo);
+}
+
+// The alignment with every stretch where the reads disagree aligned again (realign_window). Stretches
+// at a read's start or end, and long ones (a leader, a torn stretch), are kept as they are.
+ReadAlignment refine(std::span<const std::span<const Frame>> reads, const ReadAlignment& a) {
+    constexpr std::int32_t longest = 64;
+    const std::size_t n_reads = a.reads();
+    ReadAlignment out(n_reads, a.reference());
+    for (std::size_t r = 0; r < n_reads; ++r) out.set_shared(r, a.shared(r));
+    auto solid = [&](std::size_t c) {
+        std::int32_t first = ReadAlignment::none;
+        for (std::size_t r = 0; r < n_reads; ++r) {
+            if (!a.covers(r, c)) continue;
+            std::int32_t i = a.frame(c, r);
+            if (i == ReadAlignment::none) return false;
+            if (first == ReadAlignment::none)
+                first = static_cast<std::int32_t>(r);
+            else if (reads[r][static_cast<std::size_t>(i)] !=
+                     reads[static_cast<std::size_t>(first)]
+                          [static_cast<std::size_t>(a.frame(c, static_cast<std::size_t>(first)))])
+                return false;
+        }
+        return true;
+    };
+    std::vector<std::int32_t> column(n_reads), lo(n_reads), len(n_reads);
+    auto copy = [&](std::size_t c) {
+        for (std::size_t r = 0; r < n_reads; ++r) column[r] = a.frame(c, r);
+        out.add_column(column);
+    };
+    for (std::size_t c = 0; c < a.columns();) {
+        if (solid(c)) {
+            copy(c++);
+            continue;
+        }
+        // A frame that happens to equal a neighbour can stand solid inside one slip (a stain read as
+        // "39" next to a real "39"): short solid runs between disagreements are part of the stretch.
+        constexpr std::size_t bridged = 2;
+        std::size_t end = c;
+        for (;;) {
+            while (end < a.columns() && !solid(end)) ++end;
+            std::size_t next = end;
+            while (next < a.columns() && next - end <= bridged && solid(next)) ++next;
+            if (next == end || next >= a.columns() || next - end > bridged) break;
+            end = next;
+        }
+        // Every read covers the whole stretch, or none of it; each has a few frames in it.
+        bool simple = true;
+        for (std::size_t r = 0; r < n_reads && simple; ++r) {
+            bool in = a.covers(r, c), whole = a.covers(r, end - 1) && c > a.first_column(r) && end < a.end_column(r);
+            if (in != a.covers(r, end - 1) || (in && !whole)) simple = false;
+            lo[r] = 0, len[r] = 0;
+            for (std::size_t x = c; x < end && simple; ++x) {
+                std::int32_t i = a.frame(x, r);
+                if (i == ReadAlignment::none) continue;
+                if (len[r] == 0) lo[r] = i;
+                ++len[r];
+            }
+            if (len[r] > longest) simple = false;
+        }
+        std::size_t with_frames = 0;
+        for (std::size_t r = 0; r < n_reads; ++r) with_frames += len[r] > 0;
+        if (!simple || with_frames < 2) {
+            for (; c < end; ++c) copy(c);
+            continue;
+        }
+        std::vector<std::span<const Frame>> covering;
+        std::vector<std::size_t> which;
+        std::vector<std::int32_t> clo, clen;
+        for (std::size_t r = 0; r < n_reads; ++r)
+            if (a.covers(r, c))
+                which.push_back(r), covering.push_back(reads[r]), clo.push_back(lo[r]), clen.push_back(len[r]);
+        ReadAlignment local(which.size(), 0);
+        realign_window(covering, clo, clen, local);
+        for (std::size_t x = 0; x < local.columns(); ++x) {
+            std::fill(column.begin(), column.end(), ReadAlignment::none);
+            for (std::size_t k = 0; k < which.size(); ++k) column[which[k]] = local.frame(x, k);
+            out.add_column(column);
+        }
+        c = end;
+    }
+    out.finish();
+    return out;
+}
+
+// Dynamic programming sets a frame that differs in more than one hole apart from the frame another
+// read has there (two gaps). Where the reads that have frames in a run of columns and those that have
+// frames in the next run are the two halves of the reads covering them, and the runs are as long,
+// the reads saw different frames in the same places: those columns are one.
+ReadAlignment merge_substitutions(const ReadAlignment& a) {
+    const std::size_t n = a.reads();
+    ReadAlignment out(n, a.reference());
+    for (std::size_t r = 0; r < n; ++r) out.set_shared(r, a.shared(r));
+    auto same_reads = [&](std::size_t x, std::size_t y) {
+        for (std::size_t r = 0; r < n; ++r)
+            if ((a.frame(x, r) == ReadAlignment::none) != (a.frame(y, r) == ReadAlignment::none)) return false;
+        return true;
+    };
+    auto halves = [&](std::size_t x, std::size_t y) {
+        for (std::size_t r = 0; r < n; ++r) {
+            bool in_x = a.frame(x, r) != ReadAlignment::none, in_y = a.frame(y, r) != ReadAlignment::none;
+            bool covers = a.covers(r, x) && a.covers(r, y);
+            if ((in_x && in_y) || (covers && !in_x && !in_y) || (!covers && (in_x || in_y))) return false;
+        }
+        return true;
+    };
+    std::vector<std::int32_t> column(n);
+    for (std::size_t c = 0; c < a.columns();) {
+        std::size_t run = c + 1;
+        while (run < a.columns() && same_reads(c, run)) ++run;
+        std::size_t len = run - c, next = run;
+        while (next < a.columns() && next - run < len && same_reads(run, next)) ++next;
+        if (next - run == len && (next == a.columns() || !same_reads(run, next)) && halves(c, run)) {
+            for (std::size_t k = 0; k < len; ++k) {
+                for (std::size_t r = 0; r < n; ++r) {
+                    std::int32_t i = a.frame(c + k, r);
+                    column[r] = i != ReadAlignment::none ? i : a.frame(run + k, r);
+                }
+                out.add_column(column);
+            }
+            c = next;
+            continue;
+        }
+        for (; c < run; ++c) {
+            for (std::size_t r = 0; r < n; ++r) column[r] = a.frame(c, r);
+            out.add_column(column);
+        }
+    }
+    out.finish();
+    return out;
+}
+
 }  // namespace
 
 void ReadAlignment::add_column(std::span<const std::int32_t> column) {
@@ -201,48 +480,22 @@ ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const A
     ReadAlignment out(reads.size(), ref);
     // For every read: its frame in each reference column, and its runs of frames between reference
     // frames (few: kept as a list, not a column each).
-    struct Insert {
-        std::size_t before;  // the reference frame they stand before (n: after the last)
-        std::int32_t start, count;
-    };
     std::vector<std::vector<std::int32_t>> at(reads.size());
     std::vector<std::vector<Insert>> inserts(reads.size());
+    const auto& rf = reads[ref];
     for (std::size_t r = 0; r < reads.size(); ++r) {
-        at[r].assign(n, ReadAlignment::none);
         if (r == ref) {
+            at[r].resize(n);
             for (std::size_t i = 0; i < n; ++i) at[r][i] = static_cast<std::int32_t>(i);
             continue;
         }
         double anchored_share = 0;
-        Pairs pairs = pair_up(reads[ref], reads[r], o, anchored_share);
-        // Where a read has a frame twice (or the reference lost one of a run), its extra frame goes to
-        // the end of the run of equal frames, the same place in every read: one column, not several.
-        {
-            const auto& rd = reads[r];
-            std::vector<std::int32_t> match(rd.size(), ReadAlignment::none);
-            for (auto [i, j] : pairs) match[static_cast<std::size_t>(j)] = i;
-            for (std::size_t j = 0; j + 1 < rd.size(); ++j)
-                if (match[j] == ReadAlignment::none && match[j + 1] != ReadAlignment::none && rd[j] == rd[j + 1])
-                    std::swap(match[j], match[j + 1]);
-            pairs.clear();
-            for (std::size_t j = 0; j < rd.size(); ++j)
-                if (match[j] != ReadAlignment::none) pairs.emplace_back(match[j], static_cast<std::int32_t>(j));
-        }
-        for (auto [i, j] : pairs) at[r][static_cast<std::size_t>(i)] = j;
-        // Where the reference read a frame twice, every read's gap goes to the same place: the end of
-        // the run of equal frames, so that the extra frame has one column, not one per read.
-        const auto& rf = reads[ref];
-        for (std::size_t i = 0; i + 1 < n; ++i)
-            if (at[r][i] == ReadAlignment::none && at[r][i + 1] != ReadAlignment::none && rf[i] == rf[i + 1])
-                std::swap(at[r][i], at[r][i + 1]);
-        pairs.clear();
+        at[r] = partners(rf, reads[r], pair_up(rf, reads[r], o, anchored_share));
         std::size_t same = 0;
         // Shared punched frames: blank leader and trailer match on every tape and prove nothing.
         for (std::size_t i = 0; i < n; ++i)
-            if (at[r][i] != ReadAlignment::none) {
-                pairs.emplace_back(static_cast<std::int32_t>(i), at[r][i]);
+            if (at[r][i] != ReadAlignment::none)
                 same += rf[i] != blank_frame && rf[i] == reads[r][static_cast<std::size_t>(at[r][i])];
-            }
         auto punched = [](std::span<const Frame> s) {
             return static_cast<std::size_t>(
                 std::count_if(s.begin(), s.end(), [](Frame f) { return f != blank_frame; }));
@@ -260,40 +513,12 @@ ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const A
                                              std::to_string(static_cast<int>(anchored_share * 100)) +
                                              "% of the runs that occur once in each" +
                                              ": they are reads of different tapes, or too damaged to align");
-        // A read frame in no pair stands between the reference frames of the pairs around it.
-        std::size_t p = 0;
-        for (std::size_t j = 0; j < reads[r].size();) {
-            while (p < pairs.size() && static_cast<std::size_t>(pairs[p].second) < j) ++p;
-            if (p < pairs.size() && static_cast<std::size_t>(pairs[p].second) == j) {
-                ++j;
-                continue;
-            }
-            std::size_t before = p < pairs.size() ? static_cast<std::size_t>(pairs[p].first) : n;
-            std::size_t to = p < pairs.size() ? static_cast<std::size_t>(pairs[p].second) : reads[r].size();
-            inserts[r].push_back({before, static_cast<std::int32_t>(j), static_cast<std::int32_t>(to - j)});
-            j = to;
-        }
+        inserts[r] = inserts_of(at[r], reads[r].size());
     }
-    std::vector<std::int32_t> column(reads.size());
-    std::vector<std::size_t> next(reads.size(), 0);  // each read's next insert
-    std::vector<const Insert*> here(reads.size());
-    for (std::size_t i = 0; i <= n; ++i) {
-        std::int32_t extra = 0;
-        for (std::size_t r = 0; r < reads.size(); ++r) {
-            here[r] = next[r] < inserts[r].size() && inserts[r][next[r]].before == i ? &inserts[r][next[r]++] : nullptr;
-            if (here[r]) extra = std::max(extra, here[r]->count);
-        }
-        for (std::int32_t t = 0; t < extra; ++t) {
-            for (std::size_t r = 0; r < reads.size(); ++r)
-                column[r] = here[r] && t < here[r]->count ? here[r]->start + t : ReadAlignment::none;
-            out.add_column(column);
-        }
-        if (i == n) break;
-        for (std::size_t r = 0; r < reads.size(); ++r) column[r] = at[r][i];
-        out.add_column(column);
-    }
+    std::vector<std::int32_t> no_offset(reads.size(), 0);
+    add_columns(out, n, at, inserts, no_offset);
     out.finish();
-    return out;
+    return reads.size() > 1 ? merge_substitutions(refine(reads, out)) : out;
 }
 
 }  // namespace tape

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "tape/decode.hpp"
 #include "tape/lint.hpp"
@@ -73,6 +74,127 @@ struct Tally {
     bool good;
 };
 
+// Per read and column: the read garbled this stretch. Where a read has frames no other read backs
+// next to places where it lacks frames the others have (a stain read as other frames, or a splice),
+// its frames there are misreadings and its gaps say nothing: it is not heard on whether a frame
+// stands there. A frame is backed when another read has the same, or when it is the only good one
+// among frames failing parity.
+std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<const std::span<const Frame>> reads,
+                                            const std::optional<FrameCode>& code) {
+    const std::size_t n = a.reads();
+    std::vector<std::uint8_t> garbled(a.columns() * n, 0);
+    auto at = [&](std::size_t c, std::size_t r) -> std::optional<Frame> {
+        std::int32_t i = a.frame(c, r);
+        if (i == ReadAlignment::none) return std::nullopt;
+        return reads[r][static_cast<std::size_t>(i)];
+    };
+    auto backed = [&](std::size_t c, std::size_t r, Frame f) {
+        bool others = false, others_good = false;
+        for (std::size_t s = 0; s < n; ++s) {
+            if (s == r) continue;
+            auto g = at(c, s);
+            if (!g) continue;
+            if (*g == f) return true;
+            others = true;
+            others_good |= good(code, *g);
+        }
+        return others && !others_good && good(code, f);
+    };
+    // A frame that happens to equal its neighbour may split one garbled stretch in two (a stain read
+    // as "33" next to a real "33"); stretches this close are one.
+    constexpr std::size_t bridged = 2;
+    struct Stretch {
+        std::size_t start, end;
+        bool unbacked, absent;
+    };
+    std::vector<Stretch> stretches;
+    for (std::size_t r = 0; r < n; ++r) {
+        stretches.clear();
+        for (std::size_t c = a.first_column(r); c < a.end_column(r);) {
+            // A stretch where the read's frames are not backed, or it has none while others have.
+            Stretch z{c, c, false, false};
+            for (; c < a.end_column(r); ++c) {
+                auto f = at(c, r);
+                if (f && backed(c, r, *f)) break;
+                z.unbacked |= f.has_value();
+                // Absent where most other reads have a frame; a frame one other read alone has (read
+                // twice) says nothing of this read.
+                if (!f) {
+                    std::size_t with = 0, without = 0;
+                    for (std::size_t s = 0; s < n; ++s)
+                        if (s != r && a.covers(s, c)) (at(c, s) ? with : without) += 1;
+                    z.absent |= with > without;
+                }
+            }
+            z.end = c;
+            if (z.end > z.start) {
+                if (!stretches.empty() && z.start - stretches.back().end <= bridged) {
+                    auto& last = stretches.back();
+                    last.end = z.end, last.unbacked |= z.unbacked, last.absent |= z.absent;
+                } else {
+                    stretches.push_back(z);
+                }
+            }
+            if (c == z.start) ++c;
+        }
+        for (const auto& z : stretches)
+            if (z.unbacked && z.absent)
+                for (std::size_t x = z.start; x < z.end; ++x) garbled[x * n + r] = 1;
+    }
+    return garbled;
+}
+
+// Per column: more than one read lost or added frames in the stretch of disagreement it stands in.
+// There one read's slip can hide another's, so whether a frame stands in such a column is never
+// decided silently by a vote.
+std::vector<bool> slips_in_several_reads(const ReadAlignment& a, std::span<const std::span<const Frame>> reads) {
+    const std::size_t n = a.reads();
+    std::vector<bool> out(a.columns(), false);
+    auto solid = [&](std::size_t c) {
+        std::optional<Frame> seen;
+        for (std::size_t r = 0; r < n; ++r) {
+            if (!a.covers(r, c)) continue;
+            std::int32_t i = a.frame(c, r);
+            if (i == ReadAlignment::none) return false;
+            Frame f = reads[r][static_cast<std::size_t>(i)];
+            if (seen && *seen != f) return false;
+            seen = f;
+        }
+        return true;
+    };
+    std::vector<bool> slipped(n);
+    for (std::size_t c = 0; c < a.columns();) {
+        if (solid(c)) {
+            ++c;
+            continue;
+        }
+        std::size_t end = c;
+        std::fill(slipped.begin(), slipped.end(), false);
+        for (; end < a.columns() && !solid(end); ++end) {
+            std::size_t covering = 0, present = 0;
+            for (std::size_t r = 0; r < n; ++r)
+                if (a.covers(r, end)) ++covering, present += a.frame(end, r) != ReadAlignment::none;
+            // A read slipped here when it is with the minority on whether a frame stands here (with a
+            // tie, every read did).
+            for (std::size_t r = 0; r < n; ++r) {
+                if (!a.covers(r, end)) continue;
+                bool has = a.frame(end, r) != ReadAlignment::none;
+                std::size_t with = has ? present : covering - present;
+                if (with * 2 <= covering) slipped[r] = true;
+            }
+        }
+        bool several = std::count(slipped.begin(), slipped.end(), true) >= 2;
+        for (; c < end; ++c) out[c] = several;
+    }
+    return out;
+}
+
+// True when the frame read r has at index i is also its neighbour in that read: a frame read twice
+// looks so, and so does a frame punched twice.
+bool repeated(std::span<const Frame> read, std::size_t i) {
+    return (i > 0 && read[i - 1] == read[i]) || (i + 1 < read.size() && read[i + 1] == read[i]);
+}
+
 }  // namespace
 
 std::string_view status_name(FrameStatus s) {
@@ -96,22 +218,47 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
     for (std::size_t r = 0; r < a.reads(); ++r) out.shared.push_back(a.shared(r));
     std::vector<std::size_t> unresolved;  // problems to try to repair once the whole image stands
     std::vector<Tally> tally;
+    const std::vector<std::uint8_t> garbled = garbled_stretches(a, reads, o.code);
+    const std::vector<bool> tangled = slips_in_several_reads(a, reads);
+    // Per column: the one read that has a frame there, or none.
+    std::vector<std::int32_t> alone(a.columns(), ReadAlignment::none);
+    for (std::size_t c = 0; c < a.columns(); ++c) {
+        std::size_t with = 0;
+        for (std::size_t r = 0; r < a.reads(); ++r)
+            if (a.frame(c, r) != ReadAlignment::none) ++with, alone[c] = static_cast<std::int32_t>(r);
+        if (with != 1) alone[c] = ReadAlignment::none;
+    }
+    auto alone_beside = [&](std::size_t c) {  // the read alone here is alone in a neighbouring column too
+        return alone[c] != ReadAlignment::none &&
+               ((c > 0 && alone[c - 1] == alone[c]) || (c + 1 < a.columns() && alone[c + 1] == alone[c]));
+    };
     for (std::size_t c = 0; c < a.columns(); ++c) {
         tally.clear();
-        std::size_t present = 0, covering = 0;
+        // present: frames heard here; lost: reads that cover this place, are heard, and have no frame.
+        std::size_t present = 0, covering = 0, lost = 0, unheard = 0;
+        bool repeat = false;  // a read has this frame next to an equal one
         for (std::size_t r = 0; r < a.reads(); ++r) {
-            covering += a.covers(r, c);
+            if (!a.covers(r, c)) continue;
+            ++covering;
+            bool heard = !garbled[c * a.reads() + r];
             std::int32_t i = a.frame(c, r);
-            if (i == ReadAlignment::none) continue;
+            if (i == ReadAlignment::none) {
+                lost += heard;
+                continue;
+            }
+            if (!heard) {
+                ++unheard;
+                continue;
+            }
             ++present;
             Frame f = reads[r][static_cast<std::size_t>(i)];
+            repeat |= repeated(reads[r], static_cast<std::size_t>(i));
             auto t = std::find_if(tally.begin(), tally.end(), [&](const Tally& x) { return x.value == f; });
             if (t == tally.end())
                 tally.push_back({f, 1, good(o.code, f)});
             else
                 ++t->count;
         }
-        std::size_t lost = covering - present;  // reads that cover this place but have no frame here
         // Whether a frame stands here at all is weighed by the good readings: a frame failing parity
         // may be a misread of this frame or garbage a stain put between two (the reads' alignment
         // cannot tell inside a burst), so it counts for neither side.
@@ -141,6 +288,20 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             p.after = out.frames.size();
             out.problems.push_back(std::move(p));
         };
+        if (tally.empty()) {  // only reads that garbled this stretch have a frame here
+            Frame seen = 0;
+            for (std::size_t r = a.reads(); r-- > 0;)
+                if (a.frame(c, r) != ReadAlignment::none) seen = reads[r][static_cast<std::size_t>(a.frame(c, r))];
+            FrameStatus s = tangled[c] ? FrameStatus::contested : FrameStatus::extra;
+            problem(s, seen,
+                    tangled[c] ? "only reads that misread this stretch have a frame here, and more than one read "
+                                 "slipped in it: not written, but nothing decides"
+                               : "a misreading: the read that has this frame lacks frames the others have next to "
+                                 "it, so it read a stain or splice as other frames; not written",
+                    true);
+            ++out.counts[static_cast<std::size_t>(s)];
+            continue;
+        }
         FrameStatus s;
         Frame written = tally.front().value;
         std::string reason;
@@ -150,7 +311,18 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
                               present * 2 <= a.reads() && a.reads() > 1;
         if (lone_blank_end) lost = a.reads() - present;
         if (tally.front().good) present = present_good;
-        if (present < lost && (present <= 1 || good_values > 1 || !tally.front().good || lone_blank_end)) {
+        // A frame read twice equals its neighbour; one that does not, only one read has, and that read
+        // read well around it, the others lost (or a splice put it there): nothing decides.
+        // (Several such frames in a row are a stretch one read misread: the others losing every one
+        // of them is far less likely.)
+        bool lone_unlike_neighbours = present == 1 && lost > 1 && tally.front().good && !repeat &&
+                                      tally.front().value != blank_frame && !lone_blank_end && !alone_beside(c);
+        if (lone_unlike_neighbours) {
+            s = FrameStatus::contested;
+            reason = "1 of " + std::to_string(covering) +
+                     " reads has this frame, not as a neighbour read twice: the others lost it, or a splice "
+                     "put it there; written";
+        } else if (present < lost && (present <= 1 || good_values > 1 || !tally.front().good || lone_blank_end)) {
             s = FrameStatus::extra;
             reason = std::to_string(present) + " of " + std::to_string(covering) +
                      " reads have this frame: read twice or a splice, not written";
@@ -165,11 +337,21 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             s = FrameStatus::unresolved;  // repaired below if exactly one change fits
             written = reference_here ? reference_value : written;
             reason = "no read has a good frame here";
-        } else if (tally.size() == 1 && lost == 0) {
+        } else if (tally.size() == 1 && lost == 0 && unheard == 0) {
             s = FrameStatus::clean;
+        } else if (unheard > 0 && present == 1 && lost == 0) {
+            s = FrameStatus::contested;
+            reason = "1 of " + std::to_string(covering) +
+                     " reads has this frame and the others misread this stretch: written, but nothing backs it";
         } else if (present == lost) {
             s = FrameStatus::contested;
             reason = "half the reads that cover this place have a frame here, half do not";
+        } else if (lost > 0 && repeat && good_values == 1) {
+            // Reads disagree on how many times a frame is punched: one lost a copy, or the others read
+            // it twice, and the frame's neighbours cannot tell which.
+            s = FrameStatus::contested;
+            reason = std::to_string(present) + " of " + std::to_string(covering) +
+                     " reads have this frame once more than the others: lost by them, or read twice; written";
         } else if (tally.size() == 1 || !tally[1].good || tally[0].count > tally[1].count) {
             s = FrameStatus::voted;
             reason = tally.size() > 1 && !tally[1].good && tally[0].count <= tally[1].count
@@ -182,7 +364,14 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             reason = all_differ ? "every read saw something else"
                                 : "good readings disagree and nothing decides; the reference read's is written";
         }
-        bool dropped = s == FrameStatus::extra || (s == FrameStatus::contested && present < lost);
+        if (tangled[c] && (s == FrameStatus::extra || (s == FrameStatus::voted && lost > 0))) {
+            reason = std::to_string(present) + " of " + std::to_string(covering) +
+                     " reads have this frame, and more than one read slipped in this stretch: " +
+                     (s == FrameStatus::extra ? "not written" : "written") + ", but nothing decides";
+            s = FrameStatus::contested;
+        }
+        bool dropped =
+            present < lost && (s == FrameStatus::extra || (s == FrameStatus::contested && !lone_unlike_neighbours));
         ++out.counts[static_cast<std::size_t>(s)];
         if (s != FrameStatus::clean) {
             if (s == FrameStatus::unresolved) unresolved.push_back(out.problems.size());
@@ -217,6 +406,22 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
                 first = false;
             }
             std::size_t at = static_cast<std::size_t>(*p.frame - 1);
+            // Blank tape on both sides (leader, trailer, or tape fed between blocks) and one hole
+            // where blank tape has none: the tape around it is the grammar that fits.
+            bool in_blank_tape = (at == 0 || out.frames[at - 1] == blank_frame) &&
+                                 (at + 1 == out.frames.size() || out.frames[at + 1] == blank_frame);
+            bool one_hole = std::all_of(p.seen.begin(), p.seen.end(), [](const std::optional<Frame>& f) {
+                return !f || std::popcount(static_cast<unsigned>(*f)) == 1;
+            });
+            if (in_blank_tape && one_hole) {
+                p.candidates = {blank_frame};
+                p.status = FrameStatus::inferred;
+                p.written = out.frames[at] = blank_frame;
+                p.reason = "blank tape on both sides: a hole where blank tape has none";
+                --out.counts[static_cast<std::size_t>(FrameStatus::unresolved)];
+                ++out.counts[static_cast<std::size_t>(FrameStatus::inferred)];
+                continue;
+            }
             for (Frame c : shared_candidates.empty() ? any : shared_candidates)
                 if (fits_block(*o.code, out.frames, at, c, dialect, o.spec)) p.candidates.push_back(c);
             if (p.candidates.size() == 1) {

@@ -1,0 +1,66 @@
+// A restoration scored against the tape its reads were made from (tape/restore.hpp).
+#include <algorithm>
+
+#include "tape/restore.hpp"
+
+namespace tape {
+namespace {
+
+std::span<const Frame> punched(std::span<const Frame> f) {
+    std::size_t a = 0, b = f.size();
+    while (a < b && f[a] == blank_frame) ++a;
+    while (b > a && f[b - 1] == blank_frame) --b;
+    return f.subspan(a, b - a);
+}
+
+}  // namespace
+
+bool in_doubt(FrameStatus s) {
+    using S = FrameStatus;
+    return s == S::inferred || s == S::contested || s == S::unstable || s == S::unresolved || s == S::missing;
+}
+
+RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) {
+    RestoreCheck out;
+    auto a = punched(tape), b = punched(r.frames);
+    out.exact = std::equal(a.begin(), a.end(), b.begin(), b.end());
+    std::vector<std::span<const Frame>> pair{tape, r.frames};
+    ReadAlignment al = align_reads(pair);
+    std::vector<FrameStatus> status(r.frames.size(), FrameStatus::clean);
+    for (const auto& p : r.problems)
+        if (p.frame && *p.frame <= status.size()) status[*p.frame - 1] = p.status;
+    // Frames not written but said to be in doubt, by the restored frame they follow.
+    std::vector<std::uint64_t> doubted;
+    for (const auto& p : r.problems)
+        if (!p.frame && in_doubt(p.status)) doubted.push_back(p.after);
+    auto data = punched(tape);
+    const auto first = static_cast<std::int64_t>(data.data() - tape.data());
+    const auto last = first + static_cast<std::int64_t>(data.size()) - 1;  // the last punched frame
+    std::uint64_t written_before = 0;
+    std::int64_t tape_before = -1;  // the last tape frame met
+    for (std::size_t c = 0; c < al.columns(); ++c) {
+        std::int32_t t = al.frame(c, 0), o = al.frame(c, 1);
+        if (o != ReadAlignment::none) ++written_before;
+        if (t != ReadAlignment::none) tape_before = t;
+        bool blank = (t == ReadAlignment::none || tape[static_cast<std::size_t>(t)] == blank_frame) &&
+                     (o == ReadAlignment::none || r.frames[static_cast<std::size_t>(o)] == blank_frame);
+        bool ends = t != ReadAlignment::none ? (t < first || t > last) : (tape_before < first || tape_before >= last);
+        if (blank && ends && (t == ReadAlignment::none || o == ReadAlignment::none)) {
+            ++out.blank_ends;
+            continue;
+        }
+        if (t != ReadAlignment::none && o != ReadAlignment::none &&
+            tape[static_cast<std::size_t>(t)] == r.frames[static_cast<std::size_t>(o)]) {
+            ++out.right;
+            continue;
+        }
+        bool doubt = o != ReadAlignment::none
+                         ? in_doubt(status[static_cast<std::size_t>(o)])
+                         : !al.covers(1, c) ||  // the ends: reported as missing
+                               std::find(doubted.begin(), doubted.end(), written_before) != doubted.end();
+        ++(doubt ? out.flagged_wrong : out.silently_wrong);
+    }
+    return out;
+}
+
+}  // namespace tape
