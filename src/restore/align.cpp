@@ -518,7 +518,12 @@ ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const A
     std::vector<std::int32_t> no_offset(reads.size(), 0);
     add_columns(out, n, at, inserts, no_offset);
     out.finish();
-    return reads.size() > 1 ? merge_substitutions(refine(reads, out)) : out;
+    if (reads.size() == 1) return out;
+    // Memory: no more than two alignments at a time (5 reads of 10^6 frames: 20 MB each).
+    at = {}, inserts = {};
+    ReadAlignment refined = refine(reads, out);
+    out = ReadAlignment(0, 0);
+    return merge_substitutions(refined);
 }
 
 }  // namespace tape
