@@ -136,6 +136,26 @@ TEST(Restore, SingleReadRepairWhenExactlyOneChangeFitsTheBlock) {
     EXPECT_EQ(r.frames, tape);
 }
 
+// Two damaged frames in one block are tried together: alone, each would be checked against a block
+// still holding the other's damage, and nothing would fit.
+TEST(Restore, DamagedFramesOfOneBlockAreRepairedTogether) {
+    auto tape = sample_tape();
+    auto a = tape;
+    std::size_t x = find_char(tape, '.', 30);  // "X+10." and "Y+20." of one block
+    std::size_t y = find_char(tape, '.', x + 1);
+    ASSERT_LT(y - x, 8U);
+    a[x] ^= 0x01;
+    a[y] ^= 0x01;
+    auto r = restore_all({a});
+    for (std::size_t i : {x, y}) {
+        const RestoreProblem* p = problem_at(r, i + 1);
+        ASSERT_NE(p, nullptr);
+        EXPECT_EQ(p->status, FrameStatus::inferred) << p->reason << " candidates " << p->candidates.size();
+        EXPECT_NE(p->reason.find("other damaged frames"), std::string::npos) << p->reason;
+    }
+    EXPECT_EQ(r.frames, tape);
+}
+
 TEST(Restore, AmbiguousRepairStaysUnresolvedAsRead) {
     auto tape = sample_tape();
     auto a = tape;

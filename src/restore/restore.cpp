@@ -6,8 +6,7 @@
 #include <array>
 #include <bit>
 
-#include "tape/decode.hpp"
-#include "tape/lint.hpp"
+#include "repair.hpp"
 
 namespace tape {
 namespace {
@@ -16,56 +15,6 @@ bool good(const std::optional<FrameCode>& code, Frame f) {
     if (!code) return true;
     FrameKind k = code->kind(f);
     return k != FrameKind::parity_error && k != FrameKind::not_in_code;
-}
-
-// The decoded text of frames [from, to), a bad frame as U+FFFD, one frame replaced by `with`.
-std::string decoded(const FrameCode& code, std::span<const Frame> frames, std::size_t from, std::size_t to,
-                    std::size_t at, Frame with) {
-    std::string s;
-    for (std::size_t i = from; i < to; ++i) {
-        Frame f = i == at ? with : frames[i];
-        FrameKind k = code.kind(f);
-        if (k == FrameKind::character)
-            s += code.character(f);
-        else if (k == FrameKind::parity_error || k == FrameKind::not_in_code)
-            s += bad_frame_marker;
-    }
-    return s;
-}
-
-// True when the block (the line) holding frame at reads with no error once the frame is `with`. The
-// next line is loaded too, as context (a '%' line needs the block after it), but only the block's
-// own lines (two, when `with` is an end of block) must be free of errors.
-bool fits_block(const FrameCode& code, std::span<const Frame> frames, std::size_t at, Frame with, Dialect dialect,
-                const FormatSpec* spec) {
-    auto is_lf = [&](std::size_t i) {
-        return code.kind(frames[i]) == FrameKind::character && code.character(frames[i]) == '\n';
-    };
-    std::size_t from = at, to = at + 1;
-    while (from > 0 && !is_lf(from - 1)) --from;
-    while (to < frames.size() && !is_lf(to)) ++to;
-    std::size_t next = to + 1;
-    while (next < frames.size() && !is_lf(next)) ++next;
-    std::string block = decoded(code, frames, from, std::min(to, frames.size()), at, with);
-    std::string context = to + 1 < frames.size() ? decoded(code, frames, to + 1, next, SIZE_MAX, 0) : "";
-    auto first = block.find_first_not_of(" \t\r");
-    bool own_start = first != std::string::npos && block[first] == '%';
-    std::uint64_t first_line = own_start ? 1 : 2;
-    std::uint64_t lines = 1 + static_cast<std::uint64_t>(std::count(block.begin(), block.end(), '\n'));
-    LoadedTape t = load((own_start ? "" : "%\n") + block + "\n" + context + "\n", {}, LoadOptions{dialect});
-    for (const auto& f : lint(t, LintOptions{spec})) {
-        std::uint64_t line = f.where.line.value_or(0);
-        if (f.severity == Severity::error && line >= first_line && line < first_line + lines) return false;
-    }
-    return true;
-}
-
-// A character a part program can hold: printable, or the ends of block and tab. Control characters
-// are never taken for a repair (a reader or controller acts on some, and none belongs in a block).
-bool program_character(const FrameCode& code, Frame f) {
-    if (code.kind(f) != FrameKind::character) return false;
-    char c = code.character(f);
-    return (c >= 0x20 && c < 0x7F) || c == '\n' || c == '\r' || c == '\t';
 }
 
 struct Tally {
@@ -379,74 +328,9 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         }
         if (!dropped) out.frames.push_back(written);
     }
-    // What no read has right: the single-hole changes of what the reads saw that make a character of
-    // the code and fit the block. Exactly one: inferred. Otherwise it stays as read.
     if (o.code) {
-        Dialect dialect = o.dialect;
-        if (dialect == Dialect::automatic)
-            dialect = guess_dialect(decoded(*o.code, out.frames, 0, out.frames.size(), SIZE_MAX, 0)).dialect;
-        for (std::size_t index : unresolved) {
-            RestoreProblem& p = out.problems[index];
-            std::vector<Frame> shared_candidates, any;
-            bool first = true;
-            for (const auto& seen : p.seen) {
-                if (!seen) continue;
-                std::vector<Frame> mine;
-                for (int bit = 0; bit < 8; ++bit) {
-                    Frame c = static_cast<Frame>(*seen ^ (1U << bit));
-                    if (program_character(*o.code, c)) mine.push_back(c);
-                }
-                for (Frame c : mine)
-                    if (std::find(any.begin(), any.end(), c) == any.end()) any.push_back(c);
-                if (first)
-                    shared_candidates = mine;
-                else
-                    std::erase_if(shared_candidates,
-                                  [&](Frame c) { return std::find(mine.begin(), mine.end(), c) == mine.end(); });
-                first = false;
-            }
-            std::size_t at = static_cast<std::size_t>(*p.frame - 1);
-            // Blank tape on both sides (leader, trailer, or tape fed between blocks) and one hole
-            // where blank tape has none: the tape around it is the grammar that fits.
-            bool in_blank_tape = (at == 0 || out.frames[at - 1] == blank_frame) &&
-                                 (at + 1 == out.frames.size() || out.frames[at + 1] == blank_frame);
-            bool one_hole = std::all_of(p.seen.begin(), p.seen.end(), [](const std::optional<Frame>& f) {
-                return !f || std::popcount(static_cast<unsigned>(*f)) == 1;
-            });
-            if (in_blank_tape && one_hole) {
-                p.candidates = {blank_frame};
-                p.status = FrameStatus::inferred;
-                p.written = out.frames[at] = blank_frame;
-                p.reason = "blank tape on both sides: a hole where blank tape has none";
-                --out.counts[static_cast<std::size_t>(FrameStatus::unresolved)];
-                ++out.counts[static_cast<std::size_t>(FrameStatus::inferred)];
-                continue;
-            }
-            for (Frame c : shared_candidates.empty() ? any : shared_candidates)
-                if (fits_block(*o.code, out.frames, at, c, dialect, o.spec)) p.candidates.push_back(c);
-            if (p.candidates.size() == 1) {
-                p.status = FrameStatus::inferred;
-                p.written = out.frames[at] = p.candidates.front();
-                p.reason = "the one single-hole change that makes a character fitting its block";
-                --out.counts[static_cast<std::size_t>(FrameStatus::unresolved)];
-                ++out.counts[static_cast<std::size_t>(FrameStatus::inferred)];
-            } else {
-                p.reason = p.candidates.empty() ? "no single-hole change makes a character that fits its block"
-                                                : std::to_string(p.candidates.size()) +
-                                                      " single-hole changes fit its block: not guessed";
-            }
-        }
-        // Lines of the restored text, for the report.
-        std::uint64_t line = 1;
-        std::size_t next = 0;
-        for (std::size_t i = 0; i < out.frames.size() && next < out.problems.size(); ++i) {
-            while (next < out.problems.size() && (!out.problems[next].frame || *out.problems[next].frame == i + 1)) {
-                if (out.problems[next].frame) out.problems[next].line = line;
-                ++next;
-            }
-            Frame f = out.frames[i];
-            if (o.code->kind(f) == FrameKind::character && o.code->character(f) == '\n') ++line;
-        }
+        detail::repair_unresolved(out, unresolved, *o.code, o.dialect, o.spec);
+        detail::number_lines(out, *o.code);
     }
     // The ends: a tape is punched with blank leader and trailer; where no read has one, its end may
     // be missing (every read started late, or stopped early).
