@@ -339,3 +339,34 @@ TEST(Restore, MixedDamageIsNeverSilentlyWrong) {
     EXPECT_LE(silently_wrong, 2U);
     EXPECT_GE(exact, sets * 9 / 10);
 }
+
+// Two good readings tied, and a third failing parity one hole from one of them: that one is written,
+// still contested.
+TEST(Restore, AParityErrorLeansATieBetweenGoodReadings) {
+    auto tape = sample_tape();
+    std::size_t x = find_char(tape, 'X', 30);
+    auto a = tape, b = tape, c = tape;
+    b[x] = *FrameCode::iso().frame_for('Y');  // good parity, two holes from X
+    c[x] ^= 0x04;                             // X with a hole lost or gained
+    auto r = restore_all({a, b, c});
+    EXPECT_EQ(r.frames, tape);
+    const RestoreProblem* p = problem_at(r, x + 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::contested) << p->reason;
+}
+
+// Two reads, one with a frame the other lacks: like its neighbour it may have been read twice, so it
+// is not written; unlike them it could not be, so it is. Either way it is contested.
+TEST(Restore, OneOfTwoReadsWithAFrameMoreWritesItOnlyUnlikeItsNeighbours) {
+    auto tape = sample_tape();
+    std::size_t x = find_char(tape, 'X', 30);
+    auto doubled = tape, dropped = tape;
+    doubled.insert(doubled.begin() + static_cast<std::ptrdiff_t>(x), tape[x]);
+    dropped.erase(dropped.begin() + static_cast<std::ptrdiff_t>(x));
+    auto r = restore_all({doubled, tape});
+    EXPECT_EQ(r.frames, tape);
+    EXPECT_EQ(r.count(FrameStatus::contested), 1U);
+    auto s = restore_all({tape, dropped});
+    EXPECT_EQ(s.frames, tape);
+    EXPECT_EQ(s.count(FrameStatus::contested), 1U);
+}

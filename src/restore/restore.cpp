@@ -138,6 +138,22 @@ std::vector<bool> slips_in_several_reads(const ReadAlignment& a, std::span<const
     return out;
 }
 
+// Among good readings tied at the top of the tally (sorted: good first, most first): the one that a
+// reading failing parity is one hole from, when that is true of just one.
+std::optional<Frame> leaning(const std::vector<Tally>& tally) {
+    std::optional<Frame> out;
+    for (const auto& t : tally) {
+        if (!t.good || t.count != tally.front().count) continue;
+        bool near = std::any_of(tally.begin(), tally.end(), [&](const Tally& bad) {
+            return !bad.good && std::popcount(static_cast<unsigned>(bad.value ^ t.value)) == 1;
+        });
+        if (!near) continue;
+        if (out) return std::nullopt;
+        out = t.value;
+    }
+    return out;
+}
+
 // True when the frame read r has at index i is also its neighbour in that read: a frame read twice
 // looks so, and so does a frame punched twice.
 bool repeated(std::span<const Frame> read, std::size_t i) {
@@ -252,6 +268,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             continue;
         }
         FrameStatus s;
+        bool half_dropped = false;
         Frame written = tally.front().value;
         std::string reason;
         // Blank tape past the end of most reads: leader or trailer that one read has longer (a frame
@@ -293,8 +310,13 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             reason = "1 of " + std::to_string(covering) +
                      " reads has this frame and the others misread this stretch: written, but nothing backs it";
         } else if (present == lost) {
+            // A frame like its neighbour may be one read twice; one unlike them cannot be.
             s = FrameStatus::contested;
-            reason = "half the reads that cover this place have a frame here, half do not";
+            half_dropped = repeat;
+            reason = repeat ? "half the reads that cover this place have a frame here, half do not; like its "
+                              "neighbour, it may be read twice: not written"
+                            : "half the reads that cover this place have a frame here, half do not; unlike its "
+                              "neighbours, it cannot be read twice: written";
         } else if (lost > 0 && repeat && good_values == 1) {
             // Reads disagree on how many times a frame is punched: one lost a copy, or the others read
             // it twice, and the frame's neighbours cannot tell which.
@@ -312,6 +334,13 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             if (reference_here && good(o.code, reference_value)) written = reference_value;
             reason = all_differ ? "every read saw something else"
                                 : "good readings disagree and nothing decides; the reference read's is written";
+            // A reading failing parity one hole from just one of the tied good readings leans to it.
+            if (auto lean = leaning(tally)) {
+                written = *lean;
+                reason =
+                    "good readings disagree; a reading failing parity is one hole from this one, which "
+                    "is written";
+            }
         }
         if (tangled[c] && (s == FrameStatus::extra || (s == FrameStatus::voted && lost > 0))) {
             reason = std::to_string(present) + " of " + std::to_string(covering) +
@@ -320,7 +349,8 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             s = FrameStatus::contested;
         }
         bool dropped =
-            present < lost && (s == FrameStatus::extra || (s == FrameStatus::contested && !lone_unlike_neighbours));
+            half_dropped ||
+            (present < lost && (s == FrameStatus::extra || (s == FrameStatus::contested && !lone_unlike_neighbours)));
         ++out.counts[static_cast<std::size_t>(s)];
         if (s != FrameStatus::clean) {
             if (s == FrameStatus::unresolved) unresolved.push_back(out.problems.size());
