@@ -145,7 +145,7 @@ void repair_block(RestoreResult& out, std::span<RestoreProblem* const> block, co
     std::size_t choices = 1;
     for (const RestoreProblem* p : block) {
         options.push_back(single_hole_changes(code, *p));
-        choices *= std::max<std::size_t>(options.back().size(), 1);
+        choices = std::min(choices * std::max<std::size_t>(options.back().size(), 1), most_choices + 1);
     }
     std::vector<std::vector<Frame>> fitting(block.size());
     auto add = [](std::vector<Frame>& list, Frame f) {

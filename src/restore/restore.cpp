@@ -26,12 +26,11 @@ struct Tally {
 // Per read and column: the read garbled this stretch. Where a read has frames no other read backs
 // next to places where it lacks frames the others have (a stain read as other frames, or a splice),
 // its frames there are misreadings and its gaps say nothing: it is not heard on whether a frame
-// stands there. A frame is backed when another read has the same, or when it is the only good one
-// among frames failing parity.
+// stands there. A frame is backed when another read has the same, or one hole from it (the same
+// frame misread), or when it is the only good one among frames failing parity.
 std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<const std::span<const Frame>> reads,
                                             const std::optional<FrameCode>& code) {
     const std::size_t n = a.reads();
-    std::vector<std::uint8_t> garbled(a.columns() * n, 0);
     auto at = [&](std::size_t c, std::size_t r) -> std::optional<Frame> {
         std::int32_t i = a.frame(c, r);
         if (i == ReadAlignment::none) return std::nullopt;
@@ -43,7 +42,7 @@ std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<co
             if (s == r) continue;
             auto g = at(c, s);
             if (!g) continue;
-            if (*g == f) return true;
+            if (std::popcount(static_cast<unsigned>(*g ^ f)) <= 1) return true;
             others = true;
             others_good |= good(code, *g);
         }
@@ -53,19 +52,21 @@ std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<co
     // as "33" next to a real "33"); stretches this close are one.
     constexpr std::size_t bridged = 2;
     struct Stretch {
-        std::size_t start, end;
-        bool unbacked, absent;
+        std::size_t read, start, end;
+        bool unbacked = false, absent = false;
+        std::size_t failing = 0;  // frames failing parity
     };
-    std::vector<Stretch> stretches;
+    std::vector<Stretch> garbled_ones;
     for (std::size_t r = 0; r < n; ++r) {
-        stretches.clear();
+        std::vector<Stretch> stretches;
         for (std::size_t c = a.first_column(r); c < a.end_column(r);) {
             // A stretch where the read's frames are not backed, or it has none while others have.
-            Stretch z{c, c, false, false};
+            Stretch z{r, c, c};
             for (; c < a.end_column(r); ++c) {
                 auto f = at(c, r);
                 if (f && backed(c, r, *f)) break;
                 z.unbacked |= f.has_value();
+                z.failing += f && !good(code, *f);
                 // Absent where most other reads have a frame; a frame one other read alone has (read
                 // twice) says nothing of this read.
                 if (!f) {
@@ -80,6 +81,7 @@ std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<co
                 if (!stretches.empty() && z.start - stretches.back().end <= bridged) {
                     auto& last = stretches.back();
                     last.end = z.end, last.unbacked |= z.unbacked, last.absent |= z.absent;
+                    last.failing += z.failing;
                 } else {
                     stretches.push_back(z);
                 }
@@ -87,9 +89,29 @@ std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<co
             if (c == z.start) ++c;
         }
         for (const auto& z : stretches)
-            if (z.unbacked && z.absent)
-                for (std::size_t x = z.start; x < z.end; ++x) garbled[x * n + r] = 1;
+            if (z.unbacked && z.absent) garbled_ones.push_back(z);
     }
+    std::vector<std::uint8_t> garbled(a.columns() * n, 0);
+    for (const auto& z : garbled_ones)
+        for (std::size_t x = z.start; x < z.end; ++x) garbled[x * n + z.read] = 1;
+    // Where every read garbled the same stretch by that measure (two reads, one of them stained), parity
+    // tells them apart: a read whose frames there all hold parity is heard when another's fail it.
+    if (!code) return garbled;
+    auto others_garbled = [&](const Stretch& z) {
+        bool failing = false;
+        for (const auto& o : garbled_ones)
+            if (o.read != z.read && o.start < z.end && z.start < o.end) failing |= o.failing > 0;
+        if (!failing) return false;
+        for (std::size_t x = z.start; x < z.end; ++x)
+            for (std::size_t s = 0; s < n; ++s)
+                if (s != z.read && a.covers(s, x) && !garbled[x * n + s]) return false;
+        return true;
+    };
+    std::vector<const Stretch*> heard;
+    for (const auto& z : garbled_ones)
+        if (z.failing == 0 && others_garbled(z)) heard.push_back(&z);
+    for (const Stretch* z : heard)
+        for (std::size_t x = z->start; x < z->end; ++x) garbled[x * n + z->read] = 0;
     return garbled;
 }
 
@@ -185,6 +207,16 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
     std::vector<Tally> tally;
     const std::vector<std::uint8_t> garbled = garbled_stretches(a, reads, o.code);
     const std::vector<bool> tangled = slips_in_several_reads(a, reads);
+    // The columns from the first to the last where a read has a frame of more than one hole (one hole
+    // in blank tape is more likely a misread blank).
+    std::size_t punched_from = a.columns(), punched_to = 0;
+    for (std::size_t c = 0; c < a.columns(); ++c)
+        for (std::size_t r = 0; r < a.reads(); ++r)
+            if (a.frame(c, r) != ReadAlignment::none &&
+                std::popcount(static_cast<unsigned>(reads[r][static_cast<std::size_t>(a.frame(c, r))])) > 1) {
+                punched_from = std::min(punched_from, c);
+                punched_to = c + 1;
+            }
     // Per column: the one read that has a frame there, or none.
     std::vector<std::int32_t> alone(a.columns(), ReadAlignment::none);
     for (std::size_t c = 0; c < a.columns(); ++c) {
@@ -208,7 +240,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             bool heard = !garbled[c * a.reads() + r];
             std::int32_t i = a.frame(c, r);
             if (i == ReadAlignment::none) {
-                lost += heard;
+                ++(heard ? lost : unheard);
                 continue;
             }
             if (!heard) {
@@ -273,9 +305,13 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         std::string reason;
         // Blank tape past the end of most reads: leader or trailer that one read has longer (a frame
         // read twice there has nothing to align by). The length most reads have is kept.
-        bool lone_blank_end = tally.size() == 1 && tally.front().value == blank_frame && covering < a.reads() &&
-                              present * 2 <= a.reads() && a.reads() > 1;
-        if (lone_blank_end) lost = a.reads() - present;
+        // (Leader and trailer are blank tape whose length no one needs: the reads disagree on it, and
+        // a read that started later or stopped sooner did not see all of it; never in doubt.)
+        bool in_blank_ends = c < punched_from || c >= punched_to;
+        bool lone_blank_end = a.reads() > 1 && tally.size() == 1 && tally.front().value == blank_frame &&
+                              ((covering < a.reads() && present * 2 <= a.reads()) || in_blank_ends);
+        const std::size_t lost_here = lost;  // by reads that cover this place
+        if (lone_blank_end && covering < a.reads()) lost = a.reads() - present;
         if (tally.front().good) present = present_good;
         // A frame read twice equals its neighbour; one that does not, only one read has, and that read
         // read well around it, the others lost (or a splice put it there): nothing decides.
@@ -283,7 +319,10 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         // of them is far less likely.)
         bool lone_unlike_neighbours = present == 1 && lost > 1 && tally.front().good && !repeat &&
                                       tally.front().value != blank_frame && !lone_blank_end && !alone_beside(c);
-        if (lone_unlike_neighbours) {
+        if (lone_blank_end && present >= lost) {
+            s = lost_here + unheard == 0 ? FrameStatus::clean : FrameStatus::voted;
+            reason = "blank leader or trailer, of a length the reads disagree on: written";
+        } else if (lone_unlike_neighbours) {
             s = FrameStatus::contested;
             reason = "1 of " + std::to_string(covering) +
                      " reads has this frame, not as a neighbour read twice: the others lost it, or a splice "
@@ -312,7 +351,8 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         } else if (present == lost) {
             // A frame like its neighbour may be one read twice; one unlike them cannot be.
             s = FrameStatus::contested;
-            half_dropped = repeat;
+            // (A read lacking a whole stretch, torn or slipped, is decided as one: written.)
+            half_dropped = repeat && !alone_beside(c) && tally.front().value != blank_frame;
             reason = repeat ? "half the reads that cover this place have a frame here, half do not; like its "
                               "neighbour, it may be read twice: not written"
                             : "half the reads that cover this place have a frame here, half do not; unlike its "
@@ -335,14 +375,14 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             reason = all_differ ? "every read saw something else"
                                 : "good readings disagree and nothing decides; the reference read's is written";
             // A reading failing parity one hole from just one of the tied good readings leans to it.
-            if (auto lean = leaning(tally)) {
+            if (auto lean = leaning(tally); lean && !all_differ) {
                 written = *lean;
                 reason =
                     "good readings disagree; a reading failing parity is one hole from this one, which "
                     "is written";
             }
         }
-        if (tangled[c] && (s == FrameStatus::extra || (s == FrameStatus::voted && lost > 0))) {
+        if (tangled[c] && !lone_blank_end && (s == FrameStatus::extra || (s == FrameStatus::voted && lost > 0))) {
             reason = std::to_string(present) + " of " + std::to_string(covering) +
                      " reads have this frame, and more than one read slipped in this stretch: " +
                      (s == FrameStatus::extra ? "not written" : "written") + ", but nothing decides";

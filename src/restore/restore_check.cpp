@@ -36,6 +36,45 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
     auto data = punched(tape);
     const auto first = static_cast<std::int64_t>(data.data() - tape.data());
     const auto last = first + static_cast<std::int64_t>(data.size()) - 1;  // the last punched frame
+    auto matched = [&](std::size_t c) {
+        std::int32_t t = al.frame(c, 0), o = al.frame(c, 1);
+        return t != ReadAlignment::none && o != ReadAlignment::none &&
+               tape[static_cast<std::size_t>(t)] == r.frames[static_cast<std::size_t>(o)];
+    };
+    // A tape frame the output lacks next to an output frame in doubt is that frame, misread: the two
+    // stand in columns of their own when they differ in more than one hole. So a frame left out counts
+    // as in doubt when the stretch of columns that do not match around it holds a frame in doubt.
+    std::vector<bool> stretch_doubted(al.columns(), false);
+    for (std::size_t c = 0; c < al.columns();) {
+        if (matched(c)) {
+            ++c;
+            continue;
+        }
+        std::size_t end = c;
+        bool doubt = false;
+        for (; end < al.columns() && !matched(end); ++end) {
+            std::int32_t o = al.frame(end, 1);
+            doubt |= o != ReadAlignment::none && in_doubt(status[static_cast<std::size_t>(o)]);
+        }
+        std::fill(stretch_doubted.begin() + static_cast<std::ptrdiff_t>(c),
+                  stretch_doubted.begin() + static_cast<std::ptrdiff_t>(end), doubt);
+        c = end;
+    }
+    // A frame left out in doubt after output frame `after` may stand anywhere in the run of equal
+    // frames there: the alignment puts a gap at the end of a run.
+    std::sort(doubted.begin(), doubted.end());
+    auto doubted_here = [&](std::size_t c, std::uint64_t written_before) {
+        std::int32_t t = al.frame(c, 0);
+        for (auto d = std::upper_bound(doubted.begin(), doubted.end(), written_before); d != doubted.begin();) {
+            std::uint64_t after = *--d;
+            if (after == written_before) return true;
+            // Output frames after..written_before - 1 (0-based) all equal to the frame left out.
+            for (std::uint64_t i = after; i < written_before; ++i)
+                if (t == ReadAlignment::none || r.frames[i] != tape[static_cast<std::size_t>(t)]) return false;
+            return true;
+        }
+        return false;
+    };
     std::uint64_t written_before = 0;
     std::int64_t tape_before = -1;  // the last tape frame met
     for (std::size_t c = 0; c < al.columns(); ++c) {
@@ -49,15 +88,13 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
             ++out.blank_ends;
             continue;
         }
-        if (t != ReadAlignment::none && o != ReadAlignment::none &&
-            tape[static_cast<std::size_t>(t)] == r.frames[static_cast<std::size_t>(o)]) {
+        if (matched(c)) {
             ++out.right;
             continue;
         }
-        bool doubt = o != ReadAlignment::none
-                         ? in_doubt(status[static_cast<std::size_t>(o)])
-                         : !al.covers(1, c) ||  // the ends: reported as missing
-                               std::find(doubted.begin(), doubted.end(), written_before) != doubted.end();
+        bool doubt = o != ReadAlignment::none ? in_doubt(status[static_cast<std::size_t>(o)])
+                                              : !al.covers(1, c) ||  // the ends: reported as missing
+                                                    stretch_doubted[c] || doubted_here(c, written_before);
         ++(doubt ? out.flagged_wrong : out.silently_wrong);
     }
     return out;
