@@ -370,3 +370,52 @@ TEST(Restore, OneOfTwoReadsWithAFrameMoreWritesItOnlyUnlikeItsNeighbours) {
     EXPECT_EQ(s.frames, tape);
     EXPECT_EQ(s.count(FrameStatus::contested), 1U);
 }
+
+// Two reads: one read a frame twice, the other misread a hole three frames on. The extra frame is
+// never written as clean, and the frames both reads have are not put in doubt.
+TEST(Restore, ADoubleNearAFlipInTheOtherOfTwoReads) {
+    auto tape = sample_tape();
+    std::size_t x = find_char(tape, 'X', 30);
+    auto a = tape, b = tape;
+    a.insert(a.begin() + static_cast<std::ptrdiff_t>(x), tape[x]);
+    b[x + 3] ^= 0x02;
+    auto r = restore_all({a, b});
+    EXPECT_EQ(r.frames, tape);
+    for (const auto& p : r.problems) {
+        if (p.frame && *p.frame != x + 4) {
+            EXPECT_NE(p.status, FrameStatus::clean);
+        }
+    }
+}
+
+// Two reads, one stained over a long stretch: the stain fails parity in places, the other read's
+// frames hold it everywhere, so the other read is heard there and its frames are written.
+TEST(Restore, ALongStainInOneOfTwoReadsKeepsTheOther) {
+    auto tape = sample_tape();
+    auto stained = tape;
+    std::mt19937 rng(3);
+    for (std::size_t i = 60; i < 120; ++i) stained[i] = static_cast<Frame>(rng());
+    auto r = restore_all({stained, tape});
+    EXPECT_EQ(r.frames, tape);
+}
+
+// A stretch torn from one of two reads is written whole from the other, in doubt.
+TEST(Restore, AStretchTornFromOneOfTwoReadsIsWrittenWhole) {
+    auto tape = sample_tape();
+    auto torn = tape;
+    torn.erase(torn.begin() + 60, torn.begin() + 100);
+    auto r = restore_all({torn, tape});
+    EXPECT_EQ(r.frames, tape);
+    EXPECT_EQ(r.count(FrameStatus::contested), 40U);
+}
+
+// Clean reads with leaders of different length: nothing is in doubt.
+TEST(Restore, LeadersOfDifferentLengthAreNotInDoubt) {
+    auto tape = sample_tape();
+    auto longer = tape;
+    longer.insert(longer.begin(), 150, blank_frame);
+    longer[40] = 0x10;  // and a hole in it
+    auto r = restore_all({longer, tape});
+    EXPECT_TRUE(r.complete());
+    EXPECT_EQ(r.count(FrameStatus::contested), 0U);
+}

@@ -198,11 +198,12 @@ Pairs pair_up(std::span<const Frame> ref, std::span<const Frame> read, const Ali
 std::vector<std::int32_t> partners(std::span<const Frame> ref, std::span<const Frame> read, const Pairs& pairs) {
     std::vector<std::int32_t> match(read.size(), ReadAlignment::none);
     for (auto [i, j] : pairs) match[static_cast<std::size_t>(j)] = i;
-    // A gap next to unpaired frames of the other side is part of a misread stretch and stays there.
+    // A gap next to unpaired frames of the other side is part of a misread stretch, and the last of a
+    // run of gaps part of a stretch lost: they stay there.
     std::int32_t last_i = -1;  // the reference frame of the last paired read frame
     for (std::size_t j = 0; j + 1 < read.size(); ++j) {
         if (match[j] == ReadAlignment::none && match[j + 1] != ReadAlignment::none && read[j] == read[j + 1] &&
-            match[j + 1] == last_i + 1)
+            match[j + 1] == last_i + 1 && (j == 0 || match[j - 1] != ReadAlignment::none))
             std::swap(match[j], match[j + 1]);
         if (match[j] != ReadAlignment::none) last_i = match[j];
     }
@@ -212,7 +213,7 @@ std::vector<std::int32_t> partners(std::span<const Frame> ref, std::span<const F
     std::int32_t last_j = -1;  // the read frame of the last paired reference frame
     for (std::size_t i = 0; i + 1 < ref.size(); ++i) {
         if (at[i] == ReadAlignment::none && at[i + 1] != ReadAlignment::none && ref[i] == ref[i + 1] &&
-            at[i + 1] == last_j + 1)
+            at[i + 1] == last_j + 1 && (i == 0 || at[i - 1] != ReadAlignment::none))
             std::swap(at[i], at[i + 1]);
         if (at[i] != ReadAlignment::none) last_j = at[i];
     }

@@ -225,6 +225,17 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             if (a.frame(c, r) != ReadAlignment::none) ++with, alone[c] = static_cast<std::int32_t>(r);
         if (with != 1) alone[c] = ReadAlignment::none;
     }
+    // Every read that covers column c and lacks a frame there has frames in the columns beside it: it
+    // lost one frame (or the others read one twice), not a stretch.
+    auto lone_gaps = [&](std::size_t c) {
+        for (std::size_t r = 0; r < a.reads(); ++r) {
+            if (!a.covers(r, c) || a.frame(c, r) != ReadAlignment::none) continue;
+            if ((c > 0 && a.covers(r, c - 1) && a.frame(c - 1, r) == ReadAlignment::none) ||
+                (c + 1 < a.columns() && a.covers(r, c + 1) && a.frame(c + 1, r) == ReadAlignment::none))
+                return false;
+        }
+        return true;
+    };
     auto alone_beside = [&](std::size_t c) {  // the read alone here is alone in a neighbouring column too
         return alone[c] != ReadAlignment::none &&
                ((c > 0 && alone[c - 1] == alone[c]) || (c + 1 < a.columns() && alone[c + 1] == alone[c]));
@@ -352,11 +363,13 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             // A frame like its neighbour may be one read twice; one unlike them cannot be.
             s = FrameStatus::contested;
             // (A read lacking a whole stretch, torn or slipped, is decided as one: written.)
-            half_dropped = repeat && !alone_beside(c) && tally.front().value != blank_frame;
-            reason = repeat ? "half the reads that cover this place have a frame here, half do not; like its "
-                              "neighbour, it may be read twice: not written"
-                            : "half the reads that cover this place have a frame here, half do not; unlike its "
-                              "neighbours, it cannot be read twice: written";
+            half_dropped = repeat && !alone_beside(c) && tally.front().value != blank_frame && lone_gaps(c);
+            reason = half_dropped ? "half the reads that cover this place have a frame here, half do not; like its "
+                                    "neighbour, it may be read twice: not written"
+                     : repeat     ? "half the reads that cover this place have a frame here, half do not; the others "
+                                    "lack a stretch here: written"
+                                  : "half the reads that cover this place have a frame here, half do not; unlike its "
+                                    "neighbours, it cannot be read twice: written";
         } else if (lost > 0 && repeat && good_values == 1) {
             // Reads disagree on how many times a frame is punched: one lost a copy, or the others read
             // it twice, and the frame's neighbours cannot tell which.
