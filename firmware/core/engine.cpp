@@ -3,10 +3,11 @@
 namespace tapefw {
 namespace {
 
-constexpr std::uint16_t line_faults =
-    status::tape_out | status::low_tape | status::chad_full | status::motor_fault | status::offline;
+constexpr std::uint16_t line_faults = status::tape_out | status::low_tape | status::chad_full | status::motor_fault |
+                                      status::offline | status::punch_tape_out;
 // What stops the punch: low tape is a warning only.
-constexpr std::uint16_t punch_faults = status::tape_out | status::chad_full | status::motor_fault | status::offline;
+constexpr std::uint16_t punch_faults =
+    status::punch_tape_out | status::chad_full | status::motor_fault | status::offline;
 
 bool elapsed(std::uint32_t now, std::uint32_t since, std::uint32_t us) { return now - since >= us; }
 
@@ -73,7 +74,7 @@ void Engine::poll() {
 
     if (reading_) {
         std::uint32_t read = head_ - start_frame_;
-        if (lines & status::tape_out) {
+        if (lines & (status::tape_out | status::motor_fault | status::offline)) {
             reading_ = false;
             set_drive(false);
             send_rows(true);

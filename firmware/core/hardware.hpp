@@ -29,7 +29,8 @@ public:
     virtual bool punch_ready() = 0;
     /// Sets the punch magnets to row for Config::punch_pulse_us and starts a cycle.
     virtual void punch(std::uint8_t row) = 0;
-    /// The status inputs the board has, as status bits (tape_out, low_tape, chad_full, motor_fault, offline).
+    /// The status inputs the board has, as status bits (tape_out, low_tape, chad_full, motor_fault, offline,
+    /// punch_tape_out).
     virtual std::uint16_t status_lines() = 0;
     /// The new line settings, for the board to apply to its pins and timers.
     virtual void configure(const Config& config) = 0;

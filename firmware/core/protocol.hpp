@@ -56,18 +56,19 @@ const char* error_name(ErrorCode code);
 
 /// Status bits, as STATUS reports them (an event bit is set in the one report of the event).
 namespace status {
-inline constexpr std::uint16_t tape_out = 1 << 0;     ///< no tape in the reader (or the punch's supply ran out)
-inline constexpr std::uint16_t torn = 1 << 1;         ///< event: no sprocket within the time-out while driving
-inline constexpr std::uint16_t low_tape = 1 << 2;     ///< the punch's supply roll is nearly empty
-inline constexpr std::uint16_t chad_full = 1 << 3;    ///< the punch's chad box is full
-inline constexpr std::uint16_t motor_fault = 1 << 4;  ///< a motor did not come up to speed
-inline constexpr std::uint16_t offline = 1 << 5;      ///< the unit is switched off-line
-inline constexpr std::uint16_t watchdog = 1 << 6;     ///< event: the host was silent; reader and punch stopped
-inline constexpr std::uint16_t reading = 1 << 7;      ///< the reader is driving tape
-inline constexpr std::uint16_t punching = 1 << 8;     ///< the punch has rows to punch
-inline constexpr std::uint16_t read_done = 1 << 9;    ///< event: max_rows read, the reader stopped
+inline constexpr std::uint16_t tape_out = 1 << 0;         ///< no tape in the reader: its end has passed the head
+inline constexpr std::uint16_t torn = 1 << 1;             ///< event: no sprocket within the time-out while driving
+inline constexpr std::uint16_t low_tape = 1 << 2;         ///< the punch's supply roll is nearly empty
+inline constexpr std::uint16_t chad_full = 1 << 3;        ///< the punch's chad box is full
+inline constexpr std::uint16_t motor_fault = 1 << 4;      ///< a motor did not come up to speed
+inline constexpr std::uint16_t offline = 1 << 5;          ///< the unit is switched off-line
+inline constexpr std::uint16_t watchdog = 1 << 6;         ///< event: the host was silent; reader and punch stopped
+inline constexpr std::uint16_t reading = 1 << 7;          ///< the reader is driving tape
+inline constexpr std::uint16_t punching = 1 << 8;         ///< the punch has rows to punch
+inline constexpr std::uint16_t read_done = 1 << 9;        ///< event: max_rows read, the reader stopped
+inline constexpr std::uint16_t punch_tape_out = 1 << 10;  ///< the punch's supply roll ran out
 /// The bits that stop a run.
-inline constexpr std::uint16_t faults = tape_out | torn | chad_full | motor_fault | offline | watchdog;
+inline constexpr std::uint16_t faults = tape_out | torn | chad_full | motor_fault | offline | watchdog | punch_tape_out;
 }  // namespace status
 
 /// Capability bits in Info::capabilities.
