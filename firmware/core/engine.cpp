@@ -13,7 +13,8 @@ bool elapsed(std::uint32_t now, std::uint32_t since, std::uint32_t us) { return 
 
 }  // namespace
 
-Engine::Engine(Hardware& hw, const Identity& id, Framing framing) : hw_(hw), id_(id), framing_(framing) {
+Engine::Engine(Hardware& hw, const Identity& id, Framing framing, const Config& defaults)
+    : hw_(hw), id_(id), framing_(framing), config_(defaults) {
     hw_.configure(config_);
     hw_.drive(Drive::stop);
     last_status_ = static_cast<std::uint16_t>(hw_.status_lines() & line_faults);
@@ -170,6 +171,7 @@ void Engine::handle(const Packet& p) {
                 return reply_error(p, ErrorCode::bad_payload, 0);
             head_ = 0;
             base_ = sent_ = start_frame_ = 0;
+            last_event_ = Status{};
             overrun_ = paused_ = false;
             reverse_ = r.reverse;
             max_rows_ = r.max_rows;
@@ -214,6 +216,8 @@ void Engine::handle(const Packet& p) {
             if (f.frame < base_ || f.frame > head_) return reply_error(p, ErrorCode::resend_gone, base_);
             sent_ = f.frame;
             send_rows(true);
+            // A run that ended: its STATUS may be what the host lost, so it comes again.
+            if (!reading_ && last_event_.bits) send_packet_status(last_event_);
             return;
         }
         case Msg::reset:
@@ -222,6 +226,7 @@ void Engine::handle(const Packet& p) {
             base_ = sent_ = 0;
             punch_next_ = punch_tail_ = punched_ = credited_punched_ = 0;
             overrun_ = false;
+            last_event_ = Status{};
             return reply_ok(p);
         case Msg::echo: {
             Packet out = p;
@@ -255,10 +260,15 @@ void Engine::reply_error(const Packet& request, ErrorCode code, std::uint32_t fr
 }
 
 void Engine::send_status(std::uint16_t event_bits, std::uint32_t frame) {
-    Packet out;
     Status s;
     s.bits = static_cast<std::uint16_t>(status_bits() | event_bits);
     s.frame = frame;
+    last_event_ = s;
+    send_packet_status(s);
+}
+
+void Engine::send_packet_status(const Status& s) {
+    Packet out;
     s.encode(out);
     out.seq = seq_++;
     send_packet(out);

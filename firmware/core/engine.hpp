@@ -42,7 +42,8 @@ public:
     static constexpr std::uint32_t rows_flush_us = 10000;     ///< a partial ROWS packet waits at most this
     static constexpr std::uint32_t credit_every_us = 100000;  ///< CREDIT while the punch drains
 
-    Engine(Hardware& hw, const Identity& id, Framing framing = Framing::stream);
+    /// defaults: the line settings until the host sends a CONFIG (a board may keep its unit's in flash).
+    Engine(Hardware& hw, const Identity& id, Framing framing = Framing::stream, const Config& defaults = {});
 
     /// Bytes from the OUT endpoint: a stream piece (Framing::stream) or one whole packet.
     void receive(const std::uint8_t* bytes, std::size_t n);
@@ -92,12 +93,14 @@ private:
     std::uint32_t last_credit_us_ = 0, credited_punched_ = 0;
 
     std::uint16_t last_status_ = 0;
+    Status last_event_{};  ///< the last STATUS sent, sent again on a RESEND after the run ended
 
     void handle(const Packet& p);
     bool send_packet(const Packet& p);
     void reply_ok(const Packet& request);
     void reply_error(const Packet& request, ErrorCode code, std::uint32_t frame);
     void send_status(std::uint16_t event_bits, std::uint32_t frame);
+    void send_packet_status(const Status& s);
     void send_credit(std::uint8_t seq);
     void send_rows(bool partial);
     void set_drive(bool on);

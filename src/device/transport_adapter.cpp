@@ -1,0 +1,114 @@
+// adapter:PATH — a tape adapter (firmware/core) on a USB CDC serial port, /dev/ttyACM0, or on the
+// pseudo-terminal of tape-adapter-sim. Packets travel COBS-framed on the byte stream; the protocol
+// itself is adapter::Session's, shared with the usb: and hid: backends.
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include "adapter_session.hpp"
+#include "device_backends.hpp"
+#include "serial_termios.hpp"
+#include "tape/error.hpp"
+#include "transport_posix.hpp"
+
+namespace tape {
+namespace {
+
+class CdcPipe : public adapter::PacketPipe {
+public:
+    explicit CdcPipe(std::string path) : path_(std::move(path)) {
+        fd_ = ::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+        if (fd_ < 0) posix::fail(name(), "cannot open");
+        SerialSettings s;
+        s.path = path_;
+        s.baud = 115200;  // a CDC port ignores it; a real UART bridge would use it
+        s.flow = Flow::none;
+        termios t = make_termios(s);
+        if (::tcsetattr(fd_, TCSANOW, &t) != 0 && errno != ENOTTY) {
+            int saved = errno;
+            ::close(fd_);
+            errno = saved;
+            posix::fail(name(), "cannot set raw mode");
+        }
+        // A zero ends whatever partial packet the adapter holds from before: the RESET that follows is read whole.
+        std::uint8_t zero = 0;
+        write_all({&zero, 1});
+    }
+    ~CdcPipe() override { ::close(fd_); }
+
+    void send(const tapefw::Packet& p) override {
+        std::uint8_t out[tapefw::max_framed];
+        write_all({out, tapefw::frame_packet(p, out)});
+    }
+
+    std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout) override {
+        auto deadline = std::chrono::steady_clock::now() + timeout;
+        for (;;) {
+            while (at_ < used_) {
+                auto e = decoder_.feed(buffer_[at_++]);
+                if (e == tapefw::StreamDecoder::Event::packet) return decoder_.packet();
+                if (e == tapefw::StreamDecoder::Event::fault) ++bad_;
+            }
+            auto left =
+                std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+            ReadResult r = posix::read_fd(fd_, buffer_, std::max(left, std::chrono::milliseconds(0)), name());
+            if (r.end) throw Error(Errc::io, name() + ": the adapter is gone (unplugged?)");
+            at_ = 0;
+            used_ = r.count;
+            if (r.count == 0 && left.count() <= 0) return std::nullopt;
+        }
+    }
+
+    std::uint64_t bad_packets() const override { return bad_; }
+    std::string name() const override { return "adapter:" + path_; }
+
+private:
+    std::string path_;
+    int fd_ = -1;
+    std::uint8_t buffer_[512];
+    std::size_t at_ = 0, used_ = 0;
+    tapefw::StreamDecoder decoder_;
+    std::uint64_t bad_ = 0;
+
+    void write_all(std::span<const std::uint8_t> bytes) {
+        try {
+            posix::write_fd(fd_, bytes, name());
+        } catch (const Error&) {
+            throw Error(Errc::io, name() + ": the adapter is gone (unplugged?)");
+        }
+    }
+};
+
+// The adapter as a Transport: reads are the reader's rows, writes the punch's.
+class AdapterTransport : public Transport {
+public:
+    AdapterTransport(std::unique_ptr<adapter::PacketPipe> pipe, DeviceUse use) : use_(use), session_(std::move(pipe)) {}
+
+    ReadResult read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override {
+        if (use_ == DeviceUse::write) return session_.punch_input(timeout);
+        return session_.read(buffer, timeout);
+    }
+    void write(std::span<const std::uint8_t> bytes) override {
+        // A reader being stopped is asked in band by a DC3 on other lines; here the session stops it.
+        if (use_ == DeviceUse::read) throw Error(Errc::io, name() + ": opened for reading: nothing is punched");
+        session_.punch(bytes);
+    }
+    void drain() override {
+        if (use_ != DeviceUse::read) session_.drain();
+    }
+    std::string name() const override { return session_.name(); }
+
+private:
+    DeviceUse use_;
+    adapter::Session session_;
+};
+
+}  // namespace
+
+std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool) {
+    if (rest.empty() || rest.find('?') != std::string_view::npos)
+        throw Error(Errc::usage, "adapter:" + std::string(rest) + ": give the port's path, as adapter:/dev/ttyACM0");
+    return std::make_unique<AdapterTransport>(std::make_unique<CdcPipe>(std::string(rest)), use);
+}
+
+}  // namespace tape
