@@ -1,12 +1,13 @@
-// adapter:PATH — a tape adapter (firmware/core) on a USB CDC serial port, /dev/ttyACM0, or on the
-// pseudo-terminal of tape-adapter-sim. Packets travel COBS-framed on the byte stream; the protocol
-// itself is adapter::Session's, shared with the usb: and hid: backends.
+// adapter:PATH?tracks=8&invert=0&watchdog=500 — a tape adapter (firmware/core) on a USB CDC serial port, /dev/ttyACM0,
+// or on the pseudo-terminal of tape-adapter-sim. Packets travel COBS-framed on the byte stream; the protocol itself is
+// adapter::Session's, shared with the usb: and hid: backends.
 #include <fcntl.h>
 #include <termios.h>
 #include <unistd.h>
 
 #include "adapter_session.hpp"
 #include "device_backends.hpp"
+#include "device_query.hpp"
 #include "serial_termios.hpp"
 #include "tape/error.hpp"
 #include "transport_posix.hpp"
@@ -97,6 +98,7 @@ public:
         if (use_ != DeviceUse::read) session_.drain();
     }
     std::string name() const override { return session_.name(); }
+    void configure(const tapefw::Config& c) { session_.configure(c); }
 
 private:
     DeviceUse use_;
@@ -105,10 +107,30 @@ private:
 
 }  // namespace
 
+constexpr std::string_view adapter_keys[] = {"tracks", "invert", "watchdog", "sprocket-timeout"};
+
 std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool) {
-    if (rest.empty() || rest.find('?') != std::string_view::npos)
-        throw Error(Errc::usage, "adapter:" + std::string(rest) + ": give the port's path, as adapter:/dev/ttyACM0");
-    return std::make_unique<AdapterTransport>(std::make_unique<CdcPipe>(std::string(rest)), use);
+    DeviceQuery q("adapter", rest, adapter_keys);
+    if (q.path().empty()) q.fail("no path, e.g. adapter:/dev/ttyACM0");
+    // The unit's line settings, sent as CONFIG when any is given (the adapter keeps its own otherwise).
+    tapefw::Config c;
+    c.tracks = static_cast<std::uint8_t>(q.number("tracks", c.tracks));
+    if (c.tracks < 5 || c.tracks > 8) q.bad_value("tracks", *q.value("tracks"), "is not 5 to 8");
+    unsigned invert = q.number("invert", 0);
+    if (invert > 255) q.bad_value("invert", *q.value("invert"), "is no mask of 8 data lines (0 to 255)");
+    c.data_invert = static_cast<std::uint8_t>(invert);
+    unsigned watchdog = q.number("watchdog", c.watchdog_ms);
+    if (watchdog > 65535) q.bad_value("watchdog", *q.value("watchdog"), "is not 0 to 65535 milliseconds");
+    c.watchdog_ms = static_cast<std::uint16_t>(watchdog);
+    unsigned sprocket = q.number("sprocket-timeout", c.sprocket_timeout_ms);
+    if (sprocket < 1 || sprocket > 65535)
+        q.bad_value("sprocket-timeout", *q.value("sprocket-timeout"), "is not 1 to 65535 milliseconds");
+    c.sprocket_timeout_ms = static_cast<std::uint16_t>(sprocket);
+    bool configure = false;
+    for (auto key : adapter_keys) configure = configure || q.value(key).has_value();
+    auto t = std::make_unique<AdapterTransport>(std::make_unique<CdcPipe>(q.path()), use);
+    if (configure) t->configure(c);
+    return t;
 }
 
 }  // namespace tape
