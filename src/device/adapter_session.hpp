@@ -32,6 +32,10 @@ public:
     virtual std::string name() const = 0;
 };
 
+/// The pipe to the adapter a device string names (adapter:PATH for now). Throws Error(Errc::usage)
+/// for a string that names no adapter, Error(Errc::io) when it cannot be opened.
+std::unique_ptr<PacketPipe> open_pipe(std::string_view device);
+
 /// Timing of the host's side; tests shorten nothing, they are the protocol's own numbers.
 struct SessionTiming {
     std::chrono::milliseconds reply{300};         ///< wait for a reply before asking again
