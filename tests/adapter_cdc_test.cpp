@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "process_util.hpp"
+#include "tape/adapter.hpp"
 #include "tape/device.hpp"
 #include "tape/error.hpp"
 #include "test_util.hpp"
@@ -308,4 +309,33 @@ TEST(AdapterCdc, TenMinutesOfTapeAtFifteenHundredFramesASecondNoneLostNorDoubled
     EXPECT_LT(s, 60.0);
     sim.stop();
     EXPECT_NE(sim.err().find("1 packet(s) dropped"), std::string::npos) << sim.err();
+}
+
+TEST(AdapterCdc, InfoAndSelftestThroughTheCli) {
+    TempDir dir;
+    SIM_OR_SKIP(sim, dir, {"--serial", "TP0042", "--no-punch"});
+    {
+        Process tape({"adapter", "info", sim.device}, dir);
+        EXPECT_EQ(tape.wait(10s), 0) << tape.err();
+        std::string out = read_text(dir.file("stdout"));
+        EXPECT_NE(out.find("serial\tTP0042\n"), std::string::npos) << out;
+        EXPECT_NE(out.find("protocol\t1\n"), std::string::npos) << out;
+        EXPECT_NE(out.find("reader\tyes, 1500 frames/s\n"), std::string::npos) << out;
+        EXPECT_NE(out.find("punch\tno\n"), std::string::npos) << out;
+    }
+    {
+        Process tape({"adapter", "selftest", sim.device, "--seconds", "0.5"}, dir);
+        EXPECT_EQ(tape.wait(10s), 0) << tape.err();
+        std::string out = read_text(dir.file("stdout"));
+        EXPECT_NE(out.find("0 wrong, 0 bad packets in, 0 out"), std::string::npos) << out;
+        auto echoes = std::stoull(out);
+        EXPECT_GT(echoes, 50u) << out;
+    }
+    {
+        auto r = tape::adapter_selftest(sim.device, 300ms, 5);
+        EXPECT_GT(r.packets, 10u);
+        EXPECT_EQ(r.bytes, r.packets * 56);
+        EXPECT_EQ(r.mismatches, 0u);
+        EXPECT_EQ(r.bad_in, 0u);
+    }
 }

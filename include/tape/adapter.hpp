@@ -42,3 +42,20 @@ struct AdapterSelftest {
 AdapterSelftest adapter_selftest(std::string_view device, std::chrono::milliseconds duration, std::uint32_t seed = 1);
 
 }  // namespace tape
+
+namespace tape {
+
+/// A USB serial port found in sysfs: a tape adapter (by its vendor and product id) or another.
+struct AttachedPort {
+    std::string device;  ///< "adapter:/dev/ttyACM0" or "serial:/dev/ttyUSB0"
+    std::uint16_t vendor = 0, product = 0;
+    std::string serial;       ///< the USB serial string ("" when it has none)
+    std::string description;  ///< manufacturer and product strings
+    bool adapter = false;     ///< 1209:0001, a tape adapter
+};
+
+/// The USB serial ports under sysfs_root (/sys: class/tty/NAME/device, up to the USB device with its
+/// idVendor), named under dev_root (/dev), sorted by device. Reads files only: no port is opened.
+std::vector<AttachedPort> attached_ports(const std::string& sysfs_root = "/sys", const std::string& dev_root = "/dev");
+
+}  // namespace tape

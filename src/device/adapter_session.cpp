@@ -82,7 +82,9 @@ Session::~Session() {
 }
 
 void Session::fail(std::uint64_t frame, const std::string& what) const {
-    throw Error(Errc::io, name() + ": frame " + std::to_string(frame) + ": " + what);
+    // Before a run has started no frame is concerned: opening, info, self-test.
+    bool run = reading_ || !rows_.empty() || expected_ > 0;
+    throw Error(Errc::io, name() + ": " + (run ? "frame " + std::to_string(frame) + ": " : "") + what);
 }
 
 std::uint64_t Session::position() const { return (reading_ || rows_.empty() ? expected_ : punched_) + 1; }

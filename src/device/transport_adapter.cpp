@@ -107,15 +107,16 @@ private:
 
 }  // namespace
 
+constexpr std::string_view adapter_keys[] = {"tracks", "invert", "watchdog", "sprocket-timeout"};
+
+// The settings are the unit's, for reading and punching; asking the adapter about itself needs none.
 std::unique_ptr<adapter::PacketPipe> adapter::open_pipe(std::string_view device) {
     if (!device.starts_with("adapter:"))
         throw Error(Errc::usage, "'" + std::string(device) + "' names no adapter: give adapter:/dev/ttyACM0");
-    DeviceQuery q("adapter", device.substr(8), {});
+    DeviceQuery q("adapter", device.substr(8), adapter_keys);
     if (q.path().empty()) q.fail("no path, e.g. adapter:/dev/ttyACM0");
     return std::make_unique<CdcPipe>(q.path());
 }
-
-constexpr std::string_view adapter_keys[] = {"tracks", "invert", "watchdog", "sprocket-timeout"};
 
 std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool) {
     DeviceQuery q("adapter", rest, adapter_keys);
