@@ -339,3 +339,25 @@ TEST(AdapterCdc, InfoAndSelftestThroughTheCli) {
         EXPECT_EQ(r.bad_in, 0u);
     }
 }
+
+TEST(AdapterCdc, PunchVerifyReadsTheTapeBackAndNamesAFrameThatDiffers) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 400, &frames);
+    {
+        SIM_OR_SKIP(sim, dir, {"--loop", "--speed", "8"});
+        Process tape({"-v", "punch", in, sim.device, "--verify", sim.device, "--verify-timeout", "1"}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_NE(tape.err().find("verified 400 frames"), std::string::npos) << tape.err();
+    }
+    {
+        // Frame 123 is punched with its lowest hole missing (a worn pin): the read-back names it.
+        SIM_OR_SKIP(sim, dir, {"--loop", "--speed", "8", "--miss-hole-at", "123"});
+        Process tape({"punch", in, sim.device, "--verify", sim.device, "--verify-timeout", "1"}, dir);
+        EXPECT_EQ(tape.wait(20s), 1) << tape.err();
+        std::uint8_t want = frames[122], got = static_cast<std::uint8_t>(want & (want - 1));
+        char expected[128];
+        std::snprintf(expected, sizeof expected, "frame 123: punched 0x%02X, read back 0x%02X\n", want, got);
+        EXPECT_EQ(tape.err(), "tape: " + sim.device + ": " + expected);
+    }
+}

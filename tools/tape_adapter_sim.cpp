@@ -32,8 +32,8 @@ struct SimArgs {
     std::string reader, punch, serial = "SIM0001", link;
     double speed = 1, read_rate = 1500, punch_rate = 150;
     std::uint32_t stop_frames = 1;
-    std::uint64_t unplug_after = 0, torn_at = 0, chad_full_after = 0;
-    bool torn = false, no_reader = false, no_punch = false;
+    std::uint64_t miss_hole_at = 0, unplug_after = 0, torn_at = 0, chad_full_after = 0;
+    bool torn = false, no_reader = false, no_punch = false, loop = false;
     tapesim::Faults faults;
 };
 
@@ -76,6 +76,8 @@ int run(const SimArgs& a) {
     so.punch_rate = a.punch_rate;
     so.stop_frames = a.stop_frames;
     if (a.torn) so.torn_at = a.torn_at;
+    so.loop = a.loop;
+    so.miss_hole_at = a.miss_hole_at;
     tapesim::SimHardware hw(tape, so);
     tapefw::Identity id;
     id.serial = a.serial.c_str();
@@ -106,13 +108,18 @@ int run(const SimArgs& a) {
     std::size_t punched_written = 0;
     while (!stop_flag) {
         std::uint64_t target = virtual_now();
+        // The chad box fills at an exact row: looked at after each turn, which punches one row at most.
+        auto chad = [&] {
+            if (a.chad_full_after && hw.punched().size() >= a.chad_full_after)
+                hw.forced_status |= tapefw::status::chad_full;
+        };
         while (hw.now() < target) {
             hw.advance_to(std::min(target, hw.now() + step), engine);
             engine.poll();
+            chad();
         }
         engine.poll();
-        if (a.chad_full_after && hw.punched().size() >= a.chad_full_after)
-            hw.forced_status |= tapefw::status::chad_full;
+        chad();
         if (punched_out && hw.punched().size() > punched_written) {
             std::fwrite(hw.punched().data() + punched_written, 1, hw.punched().size() - punched_written, punched_out);
             std::fflush(punched_out);
@@ -177,6 +184,10 @@ int main(int argc, char** argv) {
     app.add_option("--stop-frames", a.stop_frames, "Frames that pass the head while the reader brakes")
         ->check(whole_number(0, 100))
         ->capture_default_str();
+    app.add_flag(
+           "--loop", a.loop,
+           "The punched tape goes on into the reader, which reads it back (tape punch --verify); not with --reader")
+        ->excludes("--reader");
     app.add_flag("--no-reader", a.no_reader, "An adapter with a punch only");
     app.add_flag("--no-punch", a.no_punch, "An adapter with a reader only");
     app.add_option("--unplug-after", a.unplug_after, "Unplug (hang the line up and end) after N frames read")
@@ -185,6 +196,8 @@ int main(int argc, char** argv) {
         ->check(whole_number(0, most))
         ->each([&a](const std::string&) { a.torn = true; });
     app.add_option("--chad-full-after", a.chad_full_after, "The chad box is full after N rows punched")
+        ->check(whole_number(1, most));
+    app.add_option("--miss-hole-at", a.miss_hole_at, "Row N (from 1) is punched with its lowest hole missing")
         ->check(whole_number(1, most));
     app.add_option("--drop-packet", a.faults.drop_rows_packet, "Do not send the K-th ROWS packet (from 1)")
         ->check(whole_number(1, most));

@@ -27,12 +27,13 @@ void SimHardware::drive(tapefw::Drive d) {
 void SimHardware::advance_to(std::uint64_t t, tapefw::Engine& engine) {
     while (moving_ && next_row_at_ <= t) {
         now_ = next_row_at_;
-        bool sprocket = position_ < tape_.size() && !(o_.torn_at && position_ >= *o_.torn_at);
+        const auto& tape = reader_tape();
+        bool sprocket = position_ < tape.size() && !(o_.torn_at && position_ >= *o_.torn_at);
         if (sprocket) {
             // The board gives the levels on the lines, as this unit's wiring makes them.
-            engine.on_row(static_cast<std::uint8_t>(tape_[position_] ^ o_.active_low));
+            engine.on_row(static_cast<std::uint8_t>(tape[position_] ^ o_.active_low));
         }
-        if (position_ < tape_.size()) ++position_;
+        if (position_ < tape.size()) ++position_;
         next_row_at_ += period_us_;
         if (drive_ == tapefw::Drive::stop && (braking_left_ == 0 || --braking_left_ == 0)) moving_ = false;
     }
@@ -50,6 +51,7 @@ std::uint64_t SimHardware::next_event() const {
 bool SimHardware::punch_ready() { return !punched_once_ || now_ >= last_punch_ + punch_period_us_; }
 
 void SimHardware::punch(std::uint8_t row) {
+    if (punched_.size() + 1 == o_.miss_hole_at) row = static_cast<std::uint8_t>(row & (row - 1));
     punched_.push_back(row);
     last_punch_ = now_;
     punched_once_ = true;
@@ -57,7 +59,7 @@ void SimHardware::punch(std::uint8_t row) {
 
 std::uint16_t SimHardware::status_lines() {
     std::uint16_t bits = forced_status;
-    if (position_ >= tape_.size()) bits |= tapefw::status::tape_out;
+    if (position_ >= reader_tape().size()) bits |= tapefw::status::tape_out;
     return bits;
 }
 

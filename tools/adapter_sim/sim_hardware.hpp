@@ -24,6 +24,8 @@ struct SimOptions {
     std::uint32_t start_us = 2000;           ///< from a start to the first row (the clutch engaging)
     std::optional<std::uint64_t> torn_at{};  ///< no sprocket from this frame (0-based) on
     std::uint8_t active_low = 0;             ///< the unit's data lines that read a hole as a low level (its wiring)
+    bool loop = false;                       ///< the tape the punch punches goes on into the reader (to read it back)
+    std::uint64_t miss_hole_at = 0;          ///< row N (from 1) is punched with its lowest hole missing (a worn pin)
 };
 
 class SimHardware final : public tapefw::Hardware {
@@ -71,6 +73,7 @@ private:
     std::vector<std::uint8_t> punched_;
     tapefw::Config config_{};
     std::uint64_t starts_ = 0;
+    const std::vector<std::uint8_t>& reader_tape() const { return o_.loop ? punched_ : tape_; }
 };
 
 }  // namespace tapesim
