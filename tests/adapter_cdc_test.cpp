@@ -361,3 +361,36 @@ TEST(AdapterCdc, PunchVerifyReadsTheTapeBackAndNamesAFrameThatDiffers) {
         EXPECT_EQ(tape.err(), "tape: " + sim.device + ": " + expected);
     }
 }
+
+TEST(AdapterCdc, AStalledHostIsStoppedByTheWatchdogAndToldSo) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 6000, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in});
+    std::vector<std::uint8_t> got;
+    std::string error;
+    try {
+        auto t = tape::open_device(sim.device, tape::DeviceUse::read);
+        std::uint8_t buf[512];
+        auto end = std::chrono::steady_clock::now() + 10s;
+        while (got.size() < 300 && std::chrono::steady_clock::now() < end) {
+            auto r = t->read(buf, 100ms);
+            got.insert(got.end(), buf, buf + r.count);
+        }
+        // The host stalls for 0.8 s: the adapter's watchdog (500 ms) stops the reader.
+        std::this_thread::sleep_for(800ms);
+        while (std::chrono::steady_clock::now() < end) {
+            auto r = t->read(buf, 100ms);
+            got.insert(got.end(), buf, buf + r.count);
+            if (r.end) break;
+        }
+    } catch (const tape::Error& e) {
+        error = e.what();
+    }
+    EXPECT_NE(error.find("frame " + std::to_string(got.size() + 1) +
+                         ": the adapter's watchdog stopped the reader and the punch (the host was silent)"),
+              std::string::npos)
+        << error;
+    EXPECT_LT(got.size(), 2000u) << "the reader stopped within the watchdog's time";
+    EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.begin())) << "every row before it is kept";
+}
