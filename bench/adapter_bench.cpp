@@ -60,8 +60,8 @@ std::string make_tape(std::size_t n, std::vector<std::uint8_t>& frames) {
     frames.resize(n);
     for (std::size_t i = 0; i < n; ++i) frames[i] = static_cast<std::uint8_t>((i * 131 + i / 977) & 0xFF);
     std::string path = "/tmp/adapter_bench_tape.ptp";
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(frames.data()),
-                                                static_cast<std::streamsize>(n));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(n));
     return path;
 }
 

@@ -394,3 +394,15 @@ TEST(AdapterCdc, AStalledHostIsStoppedByTheWatchdogAndToldSo) {
     EXPECT_LT(got.size(), 2000u) << "the reader stopped within the watchdog's time";
     EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.begin())) << "every row before it is kept";
 }
+
+TEST(AdapterCdc, ARecoveredPacketIsNamedWithVerbose) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 1500, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in, "--drop-packet", "5"});
+    Process tape({"-v", "read", sim.device, "-o", dir.file("out.ptp")}, dir);
+    EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+    EXPECT_EQ(bytes_of(read_text(dir.file("out.ptp"))), frames);
+    EXPECT_NE(tape.err().find(" came again after a lost or damaged packet\n"), std::string::npos) << tape.err();
+    EXPECT_NE(tape.err().find(": frames "), std::string::npos) << tape.err();
+}

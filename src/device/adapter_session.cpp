@@ -204,7 +204,8 @@ void Session::handle_rows(const Packet& p) {
     for (std::uint32_t f = expected_; f < end; ++f) ready_.push_back(r.rows[f - r.first]);
     if (end > expected_) expected_ = end;
     if (gap_tries_ && (!gap_end_ || expected_ >= *gap_end_)) {
-        recovered_.emplace_back(gap_first_ + 1, gap_end_.value_or(expected_));
+        // Only a gap seen is named: a resend after a damaged packet may have had nothing to fill.
+        if (gap_end_) recovered_.emplace_back(gap_first_ + 1, *gap_end_);
         gap_end_.reset();
         gap_tries_ = 0;
     }

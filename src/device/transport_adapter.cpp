@@ -99,10 +99,19 @@ public:
     }
     std::string name() const override { return session_.name(); }
     void configure(const tapefw::Config& c) { session_.configure(c); }
+    std::vector<std::string> take_notes() override {
+        std::vector<std::string> notes;
+        const auto& r = session_.recovered();
+        for (; noted_ < r.size(); ++noted_)
+            notes.push_back("frames " + std::to_string(r[noted_].first) + "-" + std::to_string(r[noted_].second) +
+                            " came again after a lost or damaged packet");
+        return notes;
+    }
 
 private:
     DeviceUse use_;
     adapter::Session session_;
+    std::size_t noted_ = 0;
 };
 
 }  // namespace
