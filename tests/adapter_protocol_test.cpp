@@ -26,7 +26,7 @@ Packet make(Msg type, std::uint8_t seq, std::vector<std::uint8_t> payload) {
     p.type = static_cast<std::uint8_t>(type);
     p.seq = seq;
     p.length = static_cast<std::uint8_t>(payload.size());
-    std::memcpy(p.payload, payload.data(), payload.size());
+    if (!payload.empty()) std::memcpy(p.payload, payload.data(), payload.size());
     return p;
 }
 
