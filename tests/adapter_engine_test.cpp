@@ -443,3 +443,76 @@ TEST(AdapterEngine, EchoReturnsThePayload) {
     ASSERT_EQ(r->length, max_payload);
     EXPECT_TRUE(std::equal(r->payload, r->payload + max_payload, p.payload));
 }
+
+TEST(AdapterEngine, ARateBelowTheReadersIsKeptByStartingAndStopping) {
+    Bench b(test_tape(5000));
+    Packet p;
+    ReadStart{0, 300, 0}.encode(p);
+    b.send(p);
+    std::vector<std::uint8_t> got;
+    for (int i = 0; i < 200; ++i) {  // 2 s
+        b.run(10000);
+        ASSERT_TRUE(take_rows(b, got));
+        Packet ack;
+        FrameNumber{static_cast<std::uint32_t>(got.size())}.encode(ack, Msg::ack);
+        b.send(ack);
+    }
+    // 300 rows a second for two seconds, give or take a stopping distance each second.
+    EXPECT_GE(got.size(), 590u);
+    EXPECT_LE(got.size(), 610u);
+    EXPECT_GE(b.hw.starts(), 2u);
+}
+
+TEST(AdapterEngine, OnePacketPerTransferForHidAndBulk) {
+    tapesim::SimHardware hw(test_tape(200), {});
+    std::vector<std::vector<std::uint8_t>> transfers;
+    hw.on_send = [&](const std::uint8_t* b, std::size_t n) {
+        transfers.emplace_back(b, b + n);
+        return true;
+    };
+    Engine engine(hw, Identity{}, Framing::packets);
+    auto send = [&](const Packet& p) {
+        std::uint8_t raw[max_packet];
+        engine.receive(raw, encode_packet(p, raw));
+    };
+    Packet p;
+    p.type = static_cast<std::uint8_t>(Msg::get_info);
+    p.seq = 9;
+    send(p);
+    ASSERT_EQ(transfers.size(), 1u);
+    EXPECT_LE(transfers[0].size(), 64u);
+    Packet reply;
+    ASSERT_EQ(decode_packet(transfers[0].data(), transfers[0].size(), reply), PacketFault::none);
+    EXPECT_EQ(reply.type, static_cast<std::uint8_t>(Msg::info));
+    EXPECT_EQ(reply.seq, 9);
+    ReadStart{}.encode(p);
+    send(p);
+    for (int i = 0; i < 300; ++i) {
+        hw.advance_to(hw.now() + 1000, engine);
+        engine.poll();
+    }
+    std::vector<std::uint8_t> got;
+    for (const auto& t : transfers) {
+        Packet q;
+        ASSERT_EQ(decode_packet(t.data(), t.size(), q), PacketFault::none);
+        Rows r;
+        if (!r.decode(q)) continue;
+        ASSERT_EQ(r.first, got.size());
+        got.insert(got.end(), r.rows, r.rows + r.count);
+    }
+    EXPECT_EQ(got, test_tape(200));
+    // A damaged transfer is reported, not taken.
+    transfers.clear();
+    std::uint8_t raw[max_packet];
+    p.type = static_cast<std::uint8_t>(Msg::echo);
+    p.length = 0;
+    std::size_t n = encode_packet(p, raw);
+    raw[n - 1] ^= 0xFF;
+    engine.receive(raw, n);
+    ASSERT_EQ(transfers.size(), 1u);
+    Packet e;
+    ASSERT_EQ(decode_packet(transfers[0].data(), transfers[0].size(), e), PacketFault::none);
+    ErrorReply er;
+    ASSERT_TRUE(er.decode(e));
+    EXPECT_EQ(er.code, ErrorCode::bad_packet);
+}
