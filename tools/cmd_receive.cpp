@@ -67,6 +67,8 @@ tape::ReceiveResult::End receive_into_image(const std::string& device, const std
         fail("", e);
     }
     out->sync();
+    if (globals().verbosity > 0)
+        for (const auto& note : line->take_notes()) say(line->name(), note);
     if (globals().verbosity >= 0)
         say(device, std::to_string(r.frames) + " frames " + verb + " into " + output + " (" + end_text(r.end) + ")");
     return r.end;

@@ -21,5 +21,6 @@ void add_punch(CLI::App& app);
 void add_devices(CLI::App& app);
 void add_restore(CLI::App& app);
 void add_diff(CLI::App& app);
+void add_adapter(CLI::App& app);
 
 }  // namespace cli

@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tape {
 
@@ -55,6 +56,9 @@ public:
     virtual bool seven_bit() const { return false; }
     /// As given, for messages.
     virtual std::string name() const = 0;
+    /// What the transport recovered from on its own since the last call (frames a USB adapter sent
+    /// again after a lost or damaged packet), one line each, for a verbose report. Empty for most.
+    virtual std::vector<std::string> take_notes() { return {}; }
 };
 
 /// What a backend is opened for.

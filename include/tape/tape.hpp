@@ -2,6 +2,7 @@
 // Each header below also stands alone; include only those you need to keep builds quick.
 #pragma once
 
+#include "tape/adapter.hpp"
 #include "tape/charset.hpp"
 #include "tape/clock.hpp"
 #include "tape/code.hpp"

@@ -9,6 +9,8 @@ const DeviceBackend backends[] = {
     {"file", "a tape image file: reads its frames, or writes a new image", "file:PATH", open_file_device},
     {"serial", "a serial port or pseudo-terminal, raw mode",
      "serial:PATH?baud=9600&bits=8&parity=none&stop=1&flow=xonxoff|rtscts|none", open_serial_device},
+    {"adapter", "a USB tape adapter (reader, punch) on its CDC serial port, or tape-adapter-sim's",
+     "adapter:PATH?tracks=8&invert=0&watchdog=500&sprocket-timeout=50", open_adapter_device},
 };
 
 }  // namespace

@@ -10,5 +10,6 @@ namespace tape {
 
 std::unique_ptr<Transport> open_file_device(std::string_view rest, DeviceUse use, bool replace);
 std::unique_ptr<Transport> open_serial_device(std::string_view rest, DeviceUse use, bool replace);
+std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool replace);
 
 }  // namespace tape

@@ -1,0 +1,61 @@
+// USB tape adapters (docs/adapter-protocol.md): what one says about itself, and a self-test of its
+// link. Reading and punching go through the ordinary devices (tape/device.hpp, adapter:PATH).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tape {
+
+/// An adapter's INFO reply.
+struct AdapterInfo {
+    int protocol = 0;
+    std::string firmware;  ///< "1.2.3"
+    std::string serial;
+    bool reader = false, punch = false, reverse = false, row_flags = false;
+    std::vector<int> tracks;                         ///< tape widths it handles, from 5 to 8
+    unsigned max_read_rate = 0, max_punch_rate = 0;  ///< frames per second
+    unsigned read_buffer = 0, punch_buffer = 0;      ///< rows
+};
+
+/// Opens the adapter ("adapter:PATH"), resets it and asks for its info. Blocks up to about a second.
+/// Throws Error(Errc::usage) for a device string that names no adapter, Error(Errc::io) when it does
+/// not answer or speaks another protocol version.
+AdapterInfo adapter_info(std::string_view device);
+
+/// What a link self-test measured.
+struct AdapterSelftest {
+    std::uint64_t packets = 0;     ///< echoes sent and answered
+    std::uint64_t bytes = 0;       ///< payload bytes each way
+    std::uint64_t mismatches = 0;  ///< echoes that came back different (each one is a link fault)
+    std::uint64_t bad_in = 0;      ///< packets from the adapter that failed their CRC
+    std::uint64_t bad_out = 0;     ///< packets of ours the adapter reported as failing theirs
+    double seconds = 0;
+    double round_trip_ms = 0;  ///< the mean time from an echo sent to its answer
+};
+
+/// Sends pseudo-random payloads (from seed) to the adapter's ECHO for duration and checks every answer.
+/// Throws as adapter_info does, and Error(Errc::io) when an echo is not answered after retries.
+AdapterSelftest adapter_selftest(std::string_view device, std::chrono::milliseconds duration, std::uint32_t seed = 1);
+
+}  // namespace tape
+
+namespace tape {
+
+/// A USB serial port found in sysfs: a tape adapter (by its vendor and product id) or another.
+struct AttachedPort {
+    std::string device;  ///< "adapter:/dev/ttyACM0" or "serial:/dev/ttyUSB0"
+    std::uint16_t vendor = 0, product = 0;
+    std::string serial;       ///< the USB serial string ("" when it has none)
+    std::string description;  ///< manufacturer and product strings
+    bool adapter = false;     ///< 1209:0001, a tape adapter
+};
+
+/// The USB serial ports under sysfs_root (/sys: class/tty/NAME/device, up to the USB device with its
+/// idVendor), named under dev_root (/dev), sorted by device. Reads files only: no port is opened.
+std::vector<AttachedPort> attached_ports(const std::string& sysfs_root = "/sys", const std::string& dev_root = "/dev");
+
+}  // namespace tape

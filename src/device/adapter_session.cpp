@@ -1,0 +1,405 @@
+// The host's side of the tape adapter protocol: requests with replies matched by seq and retried,
+// rows taken in frame order with gaps asked for again (RESEND), punching by credit, keep-alives for
+// the adapter's watchdog. Every end of a run is decided only once every row before it is here.
+#include "adapter_session.hpp"
+
+#include <algorithm>
+
+#include "tape/error.hpp"
+
+namespace tape::adapter {
+
+using namespace std::chrono_literals;
+using tapefw::Msg;
+using tapefw::Packet;
+
+namespace {
+
+std::string msg_name(std::uint8_t type) {
+    switch (static_cast<Msg>(type)) {
+        case Msg::get_info:
+            return "GET_INFO";
+        case Msg::config:
+            return "CONFIG";
+        case Msg::read_start:
+            return "READ_START";
+        case Msg::read_stop:
+            return "READ_STOP";
+        case Msg::punch:
+            return "PUNCH";
+        case Msg::feed:
+            return "FEED";
+        case Msg::reset:
+            return "RESET";
+        case Msg::echo:
+            return "ECHO";
+        default:
+            return "message " + std::to_string(type);
+    }
+}
+
+// What stopped a run, in words, from the status bits (the first that applies).
+std::string fault_text(std::uint16_t bits) {
+    namespace s = tapefw::status;
+    if (bits & s::torn) return "torn tape: no sprocket hole within the time-out";
+    if (bits & s::watchdog) return "the adapter's watchdog stopped the reader and the punch (the host was silent)";
+    if (bits & s::motor_fault) return "motor fault";
+    if (bits & s::offline) return "the unit is off-line";
+    if (bits & s::chad_full) return "the chad box is full";
+    if (bits & s::punch_tape_out) return "the punch is out of tape";
+    if (bits & s::tape_out) return "tape out";
+    return "stopped";
+}
+
+}  // namespace
+
+Session::Session(std::unique_ptr<PacketPipe> pipe, SessionTiming timing) : pipe_(std::move(pipe)), t_(timing) {
+    // RESET first: whatever a previous run left (a reader running, a half-sent packet), both sides
+    // start again in step, on every transport, without unplugging.
+    Packet p;
+    p.type = static_cast<std::uint8_t>(Msg::reset);
+    request(p, Msg::ok);
+    p = Packet{};
+    p.type = static_cast<std::uint8_t>(Msg::get_info);
+    Packet reply = request(p, Msg::info);
+    if (!info_.decode(reply)) fail(0, "the adapter's INFO reply is malformed");
+    if (info_.protocol != tapefw::protocol_version)
+        throw Error(Errc::io, name() + ": the adapter speaks protocol version " + std::to_string(info_.protocol) +
+                                  ", this tape speaks version " + std::to_string(tapefw::protocol_version) +
+                                  ": update " +
+                                  (info_.protocol < tapefw::protocol_version ? "the adapter's firmware" : "tape"));
+    credit_free_ = info_.punch_buffer;
+}
+
+Session::~Session() {
+    if (!reading_) return;
+    try {
+        Packet p;
+        p.type = static_cast<std::uint8_t>(Msg::read_stop);
+        send(p);
+    } catch (const Error&) {  // an adapter already gone has no reader to stop
+    }
+}
+
+void Session::fail(std::uint64_t frame, const std::string& what) const {
+    // Before a run has started no frame is concerned: opening, info, self-test.
+    bool run = reading_ || !rows_.empty() || expected_ > 0;
+    throw Error(Errc::io, name() + ": " + (run ? "frame " + std::to_string(frame) + ": " : "") + what);
+}
+
+std::uint64_t Session::position() const { return (reading_ || rows_.empty() ? expected_ : punched_) + 1; }
+
+// The pipe's failures (an adapter unplugged) get the frame position the session knows.
+[[noreturn]] void Session::rethrow(const Error& e) const {
+    std::string what = e.what();
+    std::string prefix = name() + ": ";
+    if (what.starts_with(prefix)) what = what.substr(prefix.size());
+    fail(position(), what);
+}
+
+std::uint8_t Session::send(Packet p) {
+    p.seq = ++seq_;
+    try {
+        pipe_->send(p);
+    } catch (const Error& e) {
+        rethrow(e);
+    }
+    last_sent_ = clock::now();
+    return p.seq;
+}
+
+std::optional<Packet> Session::receive(std::chrono::milliseconds timeout) {
+    try {
+        return pipe_->receive(timeout);
+    } catch (const Error& e) {
+        rethrow(e);
+    }
+}
+
+Packet Session::request(const Packet& p, Msg reply) {
+    for (int attempt = 0; attempt < t_.tries; ++attempt) {
+        std::uint8_t seq = send(p);
+        auto deadline = clock::now() + t_.reply;
+        for (auto now = clock::now(); now < deadline; now = clock::now()) {
+            auto got = receive(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now) + 1ms);
+            if (!got) continue;
+            last_heard_ = clock::now();
+            if (got->seq == seq && got->type == static_cast<std::uint8_t>(reply)) return *got;
+            tapefw::ErrorReply e;
+            if (got->seq == seq && e.decode(*got) && e.about == p.type)
+                fail(expected_ + 1, "the adapter refused " + msg_name(p.type) + ": " + tapefw::error_name(e.code));
+            handle(*got);
+        }
+    }
+    fail(expected_ + 1, "no answer to " + msg_name(p.type) + " after " + std::to_string(t_.tries) +
+                            " tries: time-out (is it a tape adapter?)");
+}
+
+void Session::configure(const tapefw::Config& config) {
+    Packet p;
+    config.encode(p);
+    request(p, Msg::ok);
+}
+
+void Session::handle(const Packet& p) {
+    switch (static_cast<Msg>(p.type)) {
+        case Msg::rows:
+            return handle_rows(p);
+        case Msg::status:
+            return handle_status(p);
+        case Msg::credit: {
+            tapefw::Credit c;
+            if (!c.decode(p)) return;
+            credit_next_ = std::max(credit_next_, c.next);
+            credit_free_ = c.free;
+            punched_ = std::max(punched_, c.punched);
+            last_credit_ = clock::now();
+            return;
+        }
+        case Msg::error: {
+            tapefw::ErrorReply e;
+            if (!e.decode(p)) return;
+            switch (e.code) {
+                case tapefw::ErrorCode::bad_packet:
+                    // One of ours was damaged on the way: the time-outs send it again.
+                    ++bad_out_;
+                    return;
+                case tapefw::ErrorCode::out_of_order:
+                    sent_to_ = std::min(sent_to_, e.frame);  // a PUNCH was lost: from the one expected
+                    return;
+                case tapefw::ErrorCode::resend_gone:
+                    fail(expected_ + 1, "frames " + std::to_string(expected_ + 1) + "-" +
+                                            std::to_string(gap_end_.value_or(expected_ + 1)) +
+                                            " lost: the adapter no longer holds them");
+                case tapefw::ErrorCode::overrun:
+                    if (!pending_) pending_ = Pending{e.frame, "the adapter's buffer overran: frames lost from here"};
+                    return;
+                default:
+                    fail(expected_ + 1, std::string("the adapter reports: ") + tapefw::error_name(e.code));
+            }
+        }
+        default:
+            return;  // OK and replies to requests already given up
+    }
+}
+
+void Session::handle_rows(const Packet& p) {
+    tapefw::Rows r;
+    if (!reading_ || !r.decode(p)) return;
+    if (r.first > expected_) {
+        // Rows missing before these: asked for again, these dropped (the resend brings them too).
+        // The missing rows end where the first packet seen after them starts.
+        gap_end_ = std::min(gap_end_.value_or(r.first), r.first);
+        if (gap_tries_ == 0) {
+            gap_first_ = expected_;
+            gap_tries_ = 1;
+            gap_asked_ = clock::now();
+            Packet q;
+            tapefw::FrameNumber{expected_}.encode(q, Msg::resend);
+            send(q);
+        }
+        return;
+    }
+    std::uint32_t end = r.first + r.count;
+    for (std::uint32_t f = expected_; f < end; ++f) ready_.push_back(r.rows[f - r.first]);
+    if (end > expected_) expected_ = end;
+    if (gap_tries_ && (!gap_end_ || expected_ >= *gap_end_)) {
+        // Only a gap seen is named: a resend after a damaged packet may have had nothing to fill.
+        if (gap_end_) recovered_.emplace_back(gap_first_ + 1, *gap_end_);
+        gap_end_.reset();
+        gap_tries_ = 0;
+    }
+}
+
+void Session::handle_status(const Packet& p) {
+    tapefw::Status s;
+    if (!s.decode(p)) return;
+    namespace st = tapefw::status;
+    if (reading_) {
+        if (s.bits & (st::torn | st::watchdog | st::motor_fault | st::offline)) {
+            if (!pending_) pending_ = Pending{s.frame, fault_text(s.bits)};
+        } else if (s.bits & (st::tape_out | st::read_done)) {
+            end_at_ = s.frame;
+        } else {
+            return;
+        }
+        // Rows before the end not here yet: they are asked for as a gap.
+        if (expected_ < s.frame && gap_tries_ == 0) {
+            gap_end_ = s.frame;
+            gap_first_ = expected_;
+            gap_tries_ = 1;
+            gap_asked_ = clock::now();
+            Packet q;
+            tapefw::FrameNumber{expected_}.encode(q, Msg::resend);
+            send(q);
+        }
+        return;
+    }
+    if (!rows_.empty() || feeds_) {
+        std::uint16_t stop = st::punch_tape_out | st::chad_full | st::motor_fault | st::offline | st::watchdog;
+        if (s.bits & stop) fail(std::uint64_t{s.frame} + 1, fault_text(s.bits & stop));
+    }
+}
+
+void Session::keep_alive() {
+    // Also after a quarter of the adapter's buffer: a fast link must not wait for the period to free it.
+    bool many = expected_ - acked_ >= std::max<std::uint32_t>(1, info_.read_buffer / 4);
+    if (!many && clock::now() - last_sent_ < t_.ack_every) return;
+    Packet p;
+    tapefw::FrameNumber{expected_}.encode(p, Msg::ack);
+    send(p);
+    acked_ = expected_;
+}
+
+void Session::check_gap() {
+    // A packet of ours or of the adapter's damaged: a gap may be there with nothing after it to show
+    // it, so the adapter is asked from the next row expected (a no-op when nothing is missing).
+    std::uint64_t bad = pipe_->bad_packets();
+    if (bad != bad_seen_) {
+        bad_seen_ = bad;
+        if (reading_ && gap_tries_ == 0) {
+            gap_first_ = expected_;
+            gap_tries_ = 1;
+            gap_asked_ = clock::now();
+            Packet q;
+            tapefw::FrameNumber{expected_}.encode(q, Msg::resend);
+            send(q);
+        }
+    }
+    if (!gap_tries_ || clock::now() - gap_asked_ < t_.resend_after) return;
+    if (!gap_end_ && !end_at_ && !pending_) {
+        // A resend after a damaged packet that showed no gap: nothing was missing.
+        gap_tries_ = 0;
+        return;
+    }
+    if (gap_tries_ >= t_.resend_tries)
+        fail(gap_first_ + 1, "frames " + std::to_string(gap_first_ + 1) + "-" +
+                                 std::to_string(gap_end_.value_or(end_at_.value_or(gap_first_ + 1))) +
+                                 " lost: not received after " + std::to_string(gap_tries_) +
+                                 " requests to resend (CRC failures or a bad link)");
+    ++gap_tries_;
+    gap_asked_ = clock::now();
+    Packet q;
+    tapefw::FrameNumber{expected_}.encode(q, Msg::resend);
+    send(q);
+}
+
+ReadResult Session::read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout,
+                         const tapefw::ReadStart& start) {
+    if (!reading_) {
+        if (!(info_.capabilities & tapefw::caps::reader)) fail(1, "this adapter has no reader");
+        Packet p;
+        start.encode(p);
+        request(p, Msg::ok);
+        reading_ = true;
+        last_heard_ = clock::now();
+    }
+    auto deadline = clock::now() + timeout;
+    for (;;) {
+        if (!ready_.empty()) {
+            std::size_t n = std::min(buffer.size(), ready_.size());
+            std::copy_n(ready_.begin(), n, buffer.begin());
+            ready_.erase(ready_.begin(), ready_.begin() + static_cast<std::ptrdiff_t>(n));
+            return {n, false};
+        }
+        if (pending_ && expected_ >= pending_->frame) fail(std::uint64_t{pending_->frame} + 1, pending_->what);
+        if (end_at_ && expected_ >= *end_at_) {
+            reading_ = false;
+            return {0, true};
+        }
+        check_gap();
+        keep_alive();
+        auto now = clock::now();
+        if (now - last_heard_ > t_.silent) fail(expected_ + 1, "the adapter stopped answering: time-out");
+        auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
+        auto got = receive(std::clamp(left, 0ms, 20ms));
+        if (got) {
+            last_heard_ = clock::now();
+            handle(*got);
+        } else if (clock::now() >= deadline) {
+            return {};
+        }
+    }
+}
+
+void Session::pump(std::chrono::milliseconds wait) {
+    while (sent_to_ < rows_.size() && sent_to_ < credit_next_ + credit_free_) {
+        tapefw::Punch pu;
+        pu.first = sent_to_;
+        std::size_t n = std::min<std::size_t>(
+            {tapefw::Punch::max_rows, rows_.size() - sent_to_, credit_next_ + credit_free_ - sent_to_});
+        pu.count = static_cast<std::uint8_t>(n);
+        std::copy_n(rows_.begin() + sent_to_, n, pu.rows);
+        Packet p;
+        pu.encode(p);
+        send(p);
+        sent_to_ += static_cast<std::uint32_t>(n);
+    }
+    keep_alive();
+    auto got = receive(wait);
+    while (got) {
+        last_heard_ = clock::now();
+        handle(*got);
+        got = receive(0ms);
+    }
+    // Rows sent but neither taken nor refused: a PUNCH or its CREDIT was lost; from the one expected again.
+    if (sent_to_ > credit_next_ && clock::now() - last_credit_ > t_.reply) {
+        sent_to_ = credit_next_;
+        last_credit_ = clock::now();
+    }
+}
+
+void Session::punch(std::span<const std::uint8_t> rows) {
+    if (!(info_.capabilities & tapefw::caps::punch)) fail(1, "this adapter has no punch");
+    if (rows_.empty()) last_heard_ = last_credit_ = clock::now();
+    rows_.insert(rows_.end(), rows.begin(), rows.end());
+    pump(0ms);
+    // The host stays at most one queue ahead of the punch, so that a caller's pacing and progress mean something.
+    while (rows_.size() - credit_next_ > info_.punch_buffer) {
+        pump(20ms);
+        if (clock::now() - last_heard_ > t_.silent)
+            fail(std::uint64_t{punched_} + 1, "the adapter stopped answering: time-out");
+    }
+}
+
+ReadResult Session::punch_input(std::chrono::milliseconds timeout) {
+    pump(timeout);
+    return {};
+}
+
+void Session::feed(std::uint16_t count) {
+    drain();
+    Packet p;
+    tapefw::Feed{count}.encode(p);
+    request(p, Msg::ok);
+    feeds_ += count;
+    drain();
+}
+
+void Session::drain() {
+    std::uint32_t total = static_cast<std::uint32_t>(rows_.size()) + feeds_;
+    auto last_progress = clock::now();
+    std::uint32_t seen = punched_;
+    while (punched_ < total) {
+        pump(20ms);
+        if (punched_ != seen) {
+            seen = punched_;
+            last_progress = clock::now();
+        } else if (clock::now() - last_progress > t_.silent) {
+            fail(std::uint64_t{punched_} + 1, "the punch punched nothing for " +
+                                                  std::to_string(t_.silent.count() / 1000.0).substr(0, 3) +
+                                                  " s: time-out");
+        }
+    }
+}
+
+std::vector<std::uint8_t> Session::echo(std::span<const std::uint8_t> payload) {
+    Packet p;
+    p.type = static_cast<std::uint8_t>(Msg::echo);
+    p.length = static_cast<std::uint8_t>(std::min(payload.size(), tapefw::max_payload));
+    std::copy_n(payload.begin(), p.length, p.payload);
+    Packet r = request(p, Msg::echo_reply);
+    return {r.payload, r.payload + r.length};
+}
+
+}  // namespace tape::adapter

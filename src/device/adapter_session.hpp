@@ -1,0 +1,139 @@
+// The host's side of the tape adapter protocol (firmware/core/protocol.hpp), once for every transport:
+// the CDC, libusb and hidapi backends differ only in the PacketPipe they give it.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/packet.hpp"
+#include "core/protocol.hpp"
+#include "tape/device.hpp"
+#include "tape/error.hpp"
+
+namespace tape::adapter {
+
+/// How packets reach one adapter: COBS on a byte stream (CDC), or one packet per transfer (bulk, HID).
+class PacketPipe {
+public:
+    virtual ~PacketPipe() = default;
+    /// Sends one packet. Throws Error(Errc::io) when the adapter is gone.
+    virtual void send(const tapefw::Packet& p) = 0;
+    /// Waits up to timeout for one packet: nullopt on time-out. Packets failing their CRC or framing
+    /// are counted (bad_packets) and skipped. Throws Error(Errc::io) when the adapter is gone.
+    virtual std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout) = 0;
+    virtual std::uint64_t bad_packets() const = 0;
+    /// As the device string gave it, for messages.
+    virtual std::string name() const = 0;
+};
+
+/// The pipe to the adapter a device string names (adapter:PATH for now). Throws Error(Errc::usage)
+/// for a string that names no adapter, Error(Errc::io) when it cannot be opened.
+std::unique_ptr<PacketPipe> open_pipe(std::string_view device);
+
+/// Timing of the host's side; tests shorten nothing, they are the protocol's own numbers.
+struct SessionTiming {
+    std::chrono::milliseconds reply{300};         ///< wait for a reply before asking again
+    int tries = 3;                                ///< requests are sent at most this often
+    std::chrono::milliseconds ack_every{50};      ///< ACK (and keep-alive) period while reading or punching
+    std::chrono::milliseconds resend_after{150};  ///< a gap not filled after this long is asked for again
+    int resend_tries = 5;                         ///< then the frames count as lost
+    std::chrono::milliseconds silent{2000};       ///< an adapter silent this long while it should talk is dead
+};
+
+/// One adapter, opened: reset and asked for its info at once (a protocol mismatch is refused there).
+/// Reading and punching as the Transport interface wants them. All failures throw Error(Errc::io)
+/// with a message "NAME: frame N: what", where N counts from 1.
+class Session {
+public:
+    explicit Session(std::unique_ptr<PacketPipe> pipe, SessionTiming timing = {});
+    ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    const tapefw::Info& info() const { return info_; }
+    std::string name() const { return pipe_->name(); }
+
+    /// Sends a CONFIG and waits for its OK.
+    void configure(const tapefw::Config& config);
+
+    /// Rows read, in order, each once; starts the reader on the first call. Waits up to timeout for
+    /// the first row. end = true once the tape is out or max_rows are read and every row before is here.
+    ReadResult read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout,
+                    const tapefw::ReadStart& start = {});
+    /// Queues rows to punch; blocks while the adapter's queue is full.
+    void punch(std::span<const std::uint8_t> rows);
+    /// Blank frames, after everything queued.
+    void feed(std::uint16_t count);
+    /// Waits until every row queued is punched.
+    void drain();
+    /// While punching, what a reader of the line would see: nothing, but credits and faults are taken
+    /// (a fault throws). Waits up to timeout.
+    ReadResult punch_input(std::chrono::milliseconds timeout);
+    /// The payload echoed back, or an error. For the link self-test.
+    std::vector<std::uint8_t> echo(std::span<const std::uint8_t> payload);
+
+    /// Rows read or punched so far.
+    std::uint64_t rows_read() const { return expected_; }
+    std::uint64_t rows_punched() const { return punched_; }
+    /// Frame ranges (from, to, counted from 1) that were missing or damaged and then came again.
+    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& recovered() const { return recovered_; }
+    /// Packets from the adapter that failed their CRC, and ours it reported as such.
+    std::uint64_t bad_packets_in() const { return pipe_->bad_packets(); }
+    std::uint64_t bad_packets_out() const { return bad_out_; }
+
+private:
+    using clock = std::chrono::steady_clock;
+    std::unique_ptr<PacketPipe> pipe_;
+    SessionTiming t_;
+    tapefw::Info info_{};
+    std::uint8_t seq_ = 0;
+    std::uint64_t bad_out_ = 0;
+    clock::time_point last_sent_{}, last_heard_{};
+
+    // Reading.
+    bool reading_ = false;
+    std::uint32_t expected_ = 0;
+    std::uint32_t acked_ = 0;  ///< the last ACK sent
+    std::deque<std::uint8_t> ready_;
+    std::optional<std::uint32_t> end_at_;   ///< the tape ended (or max_rows) after this many rows
+    std::optional<std::uint32_t> gap_end_;  ///< rows expected_.. gap_end_-1 are missing
+    clock::time_point gap_asked_{};
+    int gap_tries_ = 0;
+    std::uint32_t gap_first_ = 0;
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> recovered_;
+    std::uint64_t bad_seen_ = 0;
+    /// A fault that ends the run once every row before its frame is here.
+    struct Pending {
+        std::uint32_t frame;
+        std::string what;
+    };
+    std::optional<Pending> pending_;
+
+    // Punching: rows_ holds every row queued; frame numbers index it.
+    std::vector<std::uint8_t> rows_;
+    std::uint32_t sent_to_ = 0, credit_next_ = 0, punched_ = 0;
+    std::uint32_t credit_free_ = 0;
+    clock::time_point last_credit_{};
+    std::uint32_t feeds_ = 0;
+
+    std::uint8_t send(tapefw::Packet p);
+    std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout);
+    std::uint64_t position() const;
+    [[noreturn]] void rethrow(const Error& e) const;
+    tapefw::Packet request(const tapefw::Packet& p, tapefw::Msg reply);
+    void handle(const tapefw::Packet& p);
+    void handle_rows(const tapefw::Packet& p);
+    void handle_status(const tapefw::Packet& p);
+    void pump(std::chrono::milliseconds wait);
+    void keep_alive();
+    void check_gap();
+    [[noreturn]] void fail(std::uint64_t frame, const std::string& what) const;
+};
+
+}  // namespace tape::adapter

@@ -1,0 +1,408 @@
+// The adapter: backend end to end: the real tape-adapter-sim process (the firmware core with a
+// simulated reader and punch) on a real pseudo-terminal, the library's Transport and the tape CLI on
+// the other side, with every fault the simulator can inject.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "process_util.hpp"
+#include "tape/adapter.hpp"
+#include "tape/device.hpp"
+#include "tape/error.hpp"
+#include "test_util.hpp"
+
+using namespace std::chrono_literals;
+
+namespace {
+
+// tape-adapter-sim running on its own pseudo-terminal; killed (SIGTERM, then SIGKILL) at the end.
+class Sim {
+public:
+    Sim(const TempDir& dir, std::vector<std::string> args) : dir_(dir) {
+        std::vector<std::string> argv_s = {TAPE_ADAPTER_SIM};
+        argv_s.insert(argv_s.end(), args.begin(), args.end());
+        std::vector<char*> argv;
+        for (auto& a : argv_s) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t fa;
+        posix_spawn_file_actions_init(&fa);
+        posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+        posix_spawn_file_actions_addopen(&fa, 1, dir.file("sim.out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        posix_spawn_file_actions_addopen(&fa, 2, dir.file("sim.err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (posix_spawn(&pid_, argv[0], &fa, nullptr, argv.data(), environ) != 0) pid_ = -1;
+        posix_spawn_file_actions_destroy(&fa);
+        // It prints its device string once the pseudo-terminal is there.
+        auto end = std::chrono::steady_clock::now() + 10s;
+        while (pid_ > 0 && std::chrono::steady_clock::now() < end) {
+            std::string out = read_text(dir.file("sim.out"));
+            if (out.find('\n') != std::string::npos) {
+                device = out.substr(0, out.find('\n'));
+                break;
+            }
+            std::this_thread::sleep_for(5ms);
+        }
+    }
+    ~Sim() { stop(); }
+    Sim(const Sim&) = delete;
+    Sim& operator=(const Sim&) = delete;
+
+    /// Ends it; its exit status (-1 when it had to be killed).
+    int stop() {
+        if (pid_ <= 0) return status_;
+        ::kill(pid_, SIGTERM);
+        auto end = std::chrono::steady_clock::now() + 5s;
+        int status = 0;
+        while (std::chrono::steady_clock::now() < end) {
+            if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+                pid_ = -1;
+                return status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+            }
+            std::this_thread::sleep_for(5ms);
+        }
+        ::kill(pid_, SIGKILL);
+        ::waitpid(pid_, nullptr, 0);
+        pid_ = -1;
+        return status_ = -1;
+    }
+    std::string err() const { return read_text(dir_.file("sim.err")); }
+
+    std::string device;  ///< "adapter:/dev/pts/N", empty when it did not start
+
+private:
+    const TempDir& dir_;
+    pid_t pid_ = -1;
+    int status_ = -1;
+};
+
+#define SIM_OR_SKIP(name, dir, ...)                                                   \
+    Sim name(dir, __VA_ARGS__);                                                       \
+    if (name.device.empty()) {                                                        \
+        std::string why = name.err();                                                 \
+        if (why.find("no pseudo-terminal") != std::string::npos) GTEST_SKIP() << why; \
+        FAIL() << "tape-adapter-sim did not start: " << why;                          \
+    }
+
+std::vector<std::uint8_t> bytes_of(const std::string& s) { return {s.begin(), s.end()}; }
+
+// A tape of n frames, every value in it, written as a raw image.
+std::string write_tape(const TempDir& dir, std::size_t n, std::vector<std::uint8_t>* frames = nullptr) {
+    std::string data(n, '\0');
+    for (std::size_t i = 0; i < n; ++i) data[i] = static_cast<char>((i * 131 + i / 977) & 0xFF);
+    if (frames) *frames = bytes_of(data);
+    std::ofstream(dir.file("in.ptp"), std::ios::binary) << data;
+    return dir.file("in.ptp");
+}
+
+struct ReadOutcome {
+    std::vector<std::uint8_t> rows;
+    std::string error;  ///< what the read threw, empty when it ended normally
+    std::chrono::steady_clock::duration took{};
+};
+
+// Reads through the library's Transport, as tape read does, until the end, an error or the deadline.
+ReadOutcome read_all(const std::string& device, std::chrono::seconds limit = 60s) {
+    ReadOutcome r;
+    auto start = std::chrono::steady_clock::now();
+    try {
+        auto t = tape::open_device(device, tape::DeviceUse::read);
+        std::uint8_t buf[4096];
+        while (std::chrono::steady_clock::now() - start < limit) {
+            auto got = t->read(buf, 100ms);
+            r.rows.insert(r.rows.end(), buf, buf + got.count);
+            if (got.end) break;
+        }
+    } catch (const tape::Error& e) {
+        r.error = e.what();
+    }
+    r.took = std::chrono::steady_clock::now() - start;
+    return r;
+}
+
+}  // namespace
+
+TEST(AdapterCdc, ReadsATapeWholeAtTheReadersSpeed) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 3000, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in});
+    auto r = read_all(sim.device);
+    EXPECT_EQ(r.error, "");
+    EXPECT_EQ(r.rows, frames);
+    // 3000 frames at 1500 frames/s: 2 s, and not much more.
+    double s = std::chrono::duration<double>(r.took).count();
+    EXPECT_GT(s, 1.9);
+    EXPECT_LT(s, 4.0);
+}
+
+TEST(AdapterCdc, RecoversADroppedADuplicatedAndADamagedPacket) {
+    for (std::vector<std::string> fault :
+         std::vector<std::vector<std::string>>{{"--drop-packet", "5"},
+                                               {"--duplicate-packet", "5"},
+                                               {"--corrupt-packet", "5"},
+                                               {"--corrupt-packet", "5", "--corrupt-times", "3"},
+                                               {"--drop-packet", "5", "--drop-times", "3"}}) {
+        TempDir dir;
+        std::vector<std::uint8_t> frames;
+        std::string in = write_tape(dir, 2000, &frames);
+        std::vector<std::string> args = {"--reader", in, "--speed", "4"};
+        args.insert(args.end(), fault.begin(), fault.end());
+        SIM_OR_SKIP(sim, dir, args);
+        auto r = read_all(sim.device);
+        EXPECT_EQ(r.error, "") << fault[0];
+        EXPECT_EQ(r.rows.size(), frames.size()) << fault[0];
+        EXPECT_TRUE(r.rows == frames) << fault[0] << ": the frame counter lets no row be lost or doubled";
+    }
+}
+
+TEST(AdapterCdc, FramesLostForGoodAreReportedWithTheirRangeWithinASecond) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 3000, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in, "--drop-packet", "4", "--drop-times", "1000000"});
+    auto r = read_all(sim.device);
+    // The rows before the lost packet are kept, and the message names the rows lost.
+    ASSERT_GT(r.rows.size(), 0u);
+    EXPECT_TRUE(std::equal(r.rows.begin(), r.rows.end(), frames.begin()));
+    std::string first = std::to_string(r.rows.size() + 1);
+    std::string head = "frame " + first + ": frames " + first + "-";
+    auto at = r.error.find(head);
+    ASSERT_NE(at, std::string::npos) << r.error;
+    std::uint64_t last = std::stoull(r.error.substr(at + head.size()));
+    EXPECT_GE(last, r.rows.size() + 1);
+    EXPECT_LE(last, r.rows.size() + 51) << "one packet holds 51 rows at most";
+    EXPECT_NE(r.error.find(" lost: not received after 5 requests to resend"), std::string::npos) << r.error;
+    // The fourth packet leaves within 0.1 s of the start, the loss is seen at the next (10 ms later)
+    // and reported after 5 requests 150 ms apart: within a second of the loss.
+    EXPECT_LT(std::chrono::duration<double>(r.took).count(), 1.1);
+}
+
+TEST(AdapterCdc, TornTapeTapeOutAndUnplugging) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 2000, &frames);
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--torn-at", "700"});
+        auto r = read_all(sim.device);
+        EXPECT_EQ(r.rows.size(), 700u) << "every row before the tear is kept";
+        EXPECT_NE(r.error.find("frame 701: torn tape"), std::string::npos) << r.error;
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--unplug-after", "900"});
+        auto r = read_all(sim.device);
+        EXPECT_LE(r.rows.size(), 900u);
+        EXPECT_GT(r.rows.size(), 800u);
+        EXPECT_TRUE(std::equal(r.rows.begin(), r.rows.end(), frames.begin()));
+        EXPECT_NE(r.error.find(": frame " + std::to_string(r.rows.size() + 1) + ": the adapter is gone (unplugged?)"),
+                  std::string::npos)
+            << r.error;
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--protocol", "7"});
+        auto r = read_all(sim.device);
+        EXPECT_NE(r.error.find("the adapter speaks protocol version 7, this tape speaks version 1: update tape"),
+                  std::string::npos)
+            << r.error;
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--no-reader"});
+        auto r = read_all(sim.device);
+        EXPECT_NE(r.error.find("this adapter has no reader"), std::string::npos) << r.error;
+    }
+}
+
+TEST(AdapterCdc, ASecondRunOnTheSameAdapterStartsInStep) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 3000, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in});
+    // The first run stops half way (as Ctrl-C would): the next one resets the adapter and goes on
+    // from where the tape stands, without replugging.
+    std::vector<std::uint8_t> first;
+    {
+        auto t = tape::open_device(sim.device, tape::DeviceUse::read);
+        std::uint8_t buf[512];
+        auto end = std::chrono::steady_clock::now() + 10s;
+        while (first.size() < 1000 && std::chrono::steady_clock::now() < end) {
+            auto got = t->read(buf, 100ms);
+            first.insert(first.end(), buf, buf + got.count);
+        }
+    }
+    auto r = read_all(sim.device);
+    EXPECT_EQ(r.error, "");
+    ASSERT_GE(first.size(), 1000u);
+    // The reader stopped within its stopping distance: what the first run did not take is lost with
+    // the reset (the tape moved on), the rest comes in order.
+    std::vector<std::uint8_t> all = first;
+    all.insert(all.end(), r.rows.begin(), r.rows.end());
+    EXPECT_LE(all.size(), frames.size());
+    EXPECT_GE(all.size(), frames.size() - 100);
+    EXPECT_TRUE(std::equal(first.begin(), first.end(), frames.begin()));
+    EXPECT_TRUE(std::equal(r.rows.rbegin(), r.rows.rend(), frames.rbegin())) << "the second run reads to the end";
+}
+
+TEST(AdapterCdc, PunchesThroughTheCliAndAChadBoxFullStopsIt) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 600, &frames);
+    {
+        SIM_OR_SKIP(sim, dir, {"--punch", dir.file("punched.raw"), "--speed", "4"});
+        Process tape({"punch", in, sim.device}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        sim.stop();
+        EXPECT_EQ(bytes_of(read_text(dir.file("punched.raw"))), frames);
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--punch", dir.file("punched2.raw"), "--chad-full-after", "250", "--speed", "4"});
+        Process tape({"punch", in, sim.device}, dir);
+        EXPECT_EQ(tape.wait(20s), 3);
+        EXPECT_NE(tape.err().find("frame 251: the chad box is full"), std::string::npos) << tape.err();
+        sim.stop();
+        EXPECT_EQ(read_text(dir.file("punched2.raw")).size(), 250u);
+    }
+}
+
+TEST(AdapterCdc, ReadThroughTheCliKeepsEveryFrameBeforeAFault) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 1500, &frames);
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in});
+        Process tape({"read", sim.device, "-o", dir.file("out.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_EQ(bytes_of(read_text(dir.file("out.ptp"))), frames);
+        EXPECT_NE(tape.err().find("1500 frames read"), std::string::npos) << tape.err();
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--torn-at", "1000"});
+        Process tape({"read", sim.device, "-o", dir.file("torn.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 3);
+        EXPECT_EQ(tape.err(),
+                  "tape: " + sim.device + ": frame 1001: torn tape: no sprocket hole within the time-out\n");
+        auto got = bytes_of(read_text(dir.file("torn.ptp")));
+        ASSERT_EQ(got.size(), 1000u);
+        EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.begin()));
+    }
+}
+
+TEST(AdapterCdc, TenMinutesOfTapeAtFifteenHundredFramesASecondNoneLostNorDoubled) {
+    // 900,000 frames: 10 minutes of a ФС-1501 reading start-stop, run 30 times faster than real time
+    // (about 20 s), with one packet dropped on the way; the frame counter proves every row came once.
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 900000, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in, "--speed", "30", "--drop-packet", "10000"});
+    auto r = read_all(sim.device, 100s);
+    EXPECT_EQ(r.error, "");
+    ASSERT_EQ(r.rows.size(), frames.size());
+    EXPECT_TRUE(r.rows == frames);
+    double s = std::chrono::duration<double>(r.took).count();
+    std::cout << "[ figure ] 900000 frames (600 s of tape at 1500 frames/s) in " << s
+              << " s at 30x: " << static_cast<double>(frames.size()) / s / 30
+              << " simulated frames/s, 0 lost, 0 doubled\n";
+    EXPECT_LT(s, 60.0);
+    sim.stop();
+    EXPECT_NE(sim.err().find("1 packet(s) dropped"), std::string::npos) << sim.err();
+}
+
+TEST(AdapterCdc, InfoAndSelftestThroughTheCli) {
+    TempDir dir;
+    SIM_OR_SKIP(sim, dir, {"--serial", "TP0042", "--no-punch"});
+    {
+        Process tape({"adapter", "info", sim.device}, dir);
+        EXPECT_EQ(tape.wait(10s), 0) << tape.err();
+        std::string out = read_text(dir.file("stdout"));
+        EXPECT_NE(out.find("serial\tTP0042\n"), std::string::npos) << out;
+        EXPECT_NE(out.find("protocol\t1\n"), std::string::npos) << out;
+        EXPECT_NE(out.find("reader\tyes, 1500 frames/s\n"), std::string::npos) << out;
+        EXPECT_NE(out.find("punch\tno\n"), std::string::npos) << out;
+    }
+    {
+        Process tape({"adapter", "selftest", sim.device, "--seconds", "0.5"}, dir);
+        EXPECT_EQ(tape.wait(10s), 0) << tape.err();
+        std::string out = read_text(dir.file("stdout"));
+        EXPECT_NE(out.find("0 wrong, 0 bad packets in, 0 out"), std::string::npos) << out;
+        auto echoes = std::stoull(out);
+        EXPECT_GT(echoes, 50u) << out;
+    }
+    {
+        auto r = tape::adapter_selftest(sim.device, 300ms, 5);
+        EXPECT_GT(r.packets, 10u);
+        EXPECT_EQ(r.bytes, r.packets * 56);
+        EXPECT_EQ(r.mismatches, 0u);
+        EXPECT_EQ(r.bad_in, 0u);
+    }
+}
+
+TEST(AdapterCdc, PunchVerifyReadsTheTapeBackAndNamesAFrameThatDiffers) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 400, &frames);
+    {
+        SIM_OR_SKIP(sim, dir, {"--loop", "--speed", "8"});
+        Process tape({"-v", "punch", in, sim.device, "--verify", sim.device, "--verify-timeout", "1"}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_NE(tape.err().find("verified 400 frames"), std::string::npos) << tape.err();
+    }
+    {
+        // Frame 123 is punched with its lowest hole missing (a worn pin): the read-back names it.
+        SIM_OR_SKIP(sim, dir, {"--loop", "--speed", "8", "--miss-hole-at", "123"});
+        Process tape({"punch", in, sim.device, "--verify", sim.device, "--verify-timeout", "1"}, dir);
+        EXPECT_EQ(tape.wait(20s), 1) << tape.err();
+        std::uint8_t want = frames[122], got = static_cast<std::uint8_t>(want & (want - 1));
+        char expected[128];
+        std::snprintf(expected, sizeof expected, "frame 123: punched 0x%02X, read back 0x%02X\n", want, got);
+        EXPECT_EQ(tape.err(), "tape: " + sim.device + ": " + expected);
+    }
+}
+
+TEST(AdapterCdc, AStalledHostIsStoppedByTheWatchdogAndToldSo) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 6000, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in});
+    std::vector<std::uint8_t> got;
+    std::string error;
+    try {
+        auto t = tape::open_device(sim.device, tape::DeviceUse::read);
+        std::uint8_t buf[512];
+        auto end = std::chrono::steady_clock::now() + 10s;
+        while (got.size() < 300 && std::chrono::steady_clock::now() < end) {
+            auto r = t->read(buf, 100ms);
+            got.insert(got.end(), buf, buf + r.count);
+        }
+        // The host stalls for 0.8 s: the adapter's watchdog (500 ms) stops the reader.
+        std::this_thread::sleep_for(800ms);
+        while (std::chrono::steady_clock::now() < end) {
+            auto r = t->read(buf, 100ms);
+            got.insert(got.end(), buf, buf + r.count);
+            if (r.end) break;
+        }
+    } catch (const tape::Error& e) {
+        error = e.what();
+    }
+    EXPECT_NE(error.find("frame " + std::to_string(got.size() + 1) +
+                         ": the adapter's watchdog stopped the reader and the punch (the host was silent)"),
+              std::string::npos)
+        << error;
+    EXPECT_LT(got.size(), 2000u) << "the reader stopped within the watchdog's time";
+    EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.begin())) << "every row before it is kept";
+}
+
+TEST(AdapterCdc, ARecoveredPacketIsNamedWithVerbose) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 1500, &frames);
+    SIM_OR_SKIP(sim, dir, {"--reader", in, "--drop-packet", "5"});
+    Process tape({"-v", "read", sim.device, "-o", dir.file("out.ptp")}, dir);
+    EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+    EXPECT_EQ(bytes_of(read_text(dir.file("out.ptp"))), frames);
+    EXPECT_NE(tape.err().find(" came again after a lost or damaged packet\n"), std::string::npos) << tape.err();
+    EXPECT_NE(tape.err().find(": frames "), std::string::npos) << tape.err();
+}

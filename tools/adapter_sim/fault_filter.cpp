@@ -1,0 +1,53 @@
+#include "fault_filter.hpp"
+
+#include "core/protocol.hpp"
+
+namespace tapesim {
+
+void FaultFilter::emit(const tapefw::Packet& p, std::string& out, bool corrupt) {
+    std::uint8_t framed[tapefw::max_framed];
+    std::size_t n = tapefw::frame_packet(p, framed);
+    // One byte in the middle changed, never to a zero (that would cut the packet in two instead).
+    if (corrupt) {
+        framed[n / 2] ^= 0x01;
+        if (framed[n / 2] == 0) framed[n / 2] = 0x02;
+    }
+    out.append(reinterpret_cast<const char*>(framed), n);
+}
+
+void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& out) {
+    for (std::size_t i = 0; i < n; ++i) {
+        if (decoder_.feed(bytes[i]) != tapefw::StreamDecoder::Event::packet) continue;
+        tapefw::Packet p = decoder_.packet();
+        if (p.type == static_cast<std::uint8_t>(tapefw::Msg::info) && f_.protocol >= 0) {
+            p.payload[0] = static_cast<std::uint8_t>(f_.protocol);
+        }
+        if (p.type != static_cast<std::uint8_t>(tapefw::Msg::rows)) {
+            emit(p, out, false);
+            continue;
+        }
+        ++rows_packets_;
+        std::uint32_t first = static_cast<std::uint32_t>(p.payload[0] | p.payload[1] << 8 | p.payload[2] << 16 |
+                                                         static_cast<std::uint32_t>(p.payload[3]) << 24);
+        if (rows_packets_ == f_.drop_rows_packet) {
+            drop_first_ = first;
+            dropped_ = 0;
+        }
+        if (f_.drop_rows_packet && rows_packets_ >= f_.drop_rows_packet && first == drop_first_ &&
+            dropped_ < f_.drop_times) {
+            ++dropped_;
+            continue;
+        }
+        if (rows_packets_ == f_.corrupt_rows_packet) {
+            corrupt_first_ = first;
+            corrupted_ = 0;
+        }
+        bool corrupt = f_.corrupt_rows_packet && rows_packets_ >= f_.corrupt_rows_packet && first == corrupt_first_ &&
+                       corrupted_ < f_.corrupt_times;
+        if (corrupt) ++corrupted_;
+        emit(p, out, corrupt);
+        if (rows_packets_ == f_.duplicate_rows_packet) emit(p, out, false);
+    }
+}
+
+}  // namespace tapesim

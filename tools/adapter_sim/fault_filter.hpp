@@ -1,0 +1,39 @@
+// Faults injected on the simulated adapter's way out: the engine's COBS stream is cut into packets,
+// and chosen ROWS packets are dropped, sent twice or damaged before they go on the line; an INFO
+// can claim another protocol version.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/packet.hpp"
+
+namespace tapesim {
+
+struct Faults {
+    std::uint64_t drop_rows_packet = 0;  ///< the K-th ROWS packet (from 1) is not sent; 0: none
+    std::uint64_t drop_times = 1;        ///< ...nor its next resends, this many sendings in all
+    std::uint64_t duplicate_rows_packet = 0;
+    std::uint64_t corrupt_rows_packet = 0;  ///< one byte of it flipped: the host sees a CRC failure
+    std::uint64_t corrupt_times = 1;        ///< ...and of its next resends, this many sendings in all
+    int protocol = -1;                      ///< INFO claims this protocol version (-1: the real one)
+};
+
+class FaultFilter {
+public:
+    explicit FaultFilter(Faults f) : f_(f) {}
+    /// Takes the engine's bytes; appends what goes on the line to out.
+    void pass(const std::uint8_t* bytes, std::size_t n, std::string& out);
+    std::uint64_t rows_packets() const { return rows_packets_; }
+    std::uint64_t dropped() const { return dropped_; }
+    std::uint64_t corrupted() const { return corrupted_; }
+
+private:
+    Faults f_;
+    tapefw::StreamDecoder decoder_;
+    std::uint64_t rows_packets_ = 0, dropped_ = 0, corrupted_ = 0;
+    std::uint32_t drop_first_ = 0, corrupt_first_ = 0;  ///< the first frame of the packet hit
+    void emit(const tapefw::Packet& p, std::string& out, bool corrupt);
+};
+
+}  // namespace tapesim

@@ -1,0 +1,66 @@
+#include "sim_hardware.hpp"
+
+#include <cmath>
+
+namespace tapesim {
+
+SimHardware::SimHardware(std::vector<std::uint8_t> tape, SimOptions options)
+    : tape_(std::move(tape)),
+      o_(options),
+      period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.read_rate))),
+      punch_period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.punch_rate))) {}
+
+void SimHardware::drive(tapefw::Drive d) {
+    if (d == drive_) return;
+    drive_ = d;
+    if (d == tapefw::Drive::forward) {
+        ++starts_;
+        braking_left_ = 0;
+        if (!moving_) next_row_at_ = now_ + o_.start_us;
+        moving_ = true;
+    } else if (moving_) {
+        braking_left_ = o_.stop_frames;
+        if (braking_left_ == 0) moving_ = false;
+    }
+}
+
+void SimHardware::advance_to(std::uint64_t t, tapefw::Engine& engine) {
+    while (moving_ && next_row_at_ <= t) {
+        now_ = next_row_at_;
+        const auto& tape = reader_tape();
+        bool sprocket = position_ < tape.size() && !(o_.torn_at && position_ >= *o_.torn_at);
+        if (sprocket) {
+            // The board gives the levels on the lines, as this unit's wiring makes them.
+            engine.on_row(static_cast<std::uint8_t>(tape[position_] ^ o_.active_low));
+        }
+        if (position_ < tape.size()) ++position_;
+        next_row_at_ += period_us_;
+        if (drive_ == tapefw::Drive::stop && (braking_left_ == 0 || --braking_left_ == 0)) moving_ = false;
+    }
+    if (t > now_) now_ = t;
+}
+
+std::uint64_t SimHardware::next_event() const {
+    std::uint64_t next = now_ + 1000;
+    if (moving_ && next_row_at_ < next) next = next_row_at_;
+    if (punched_once_ && last_punch_ + punch_period_us_ < next && last_punch_ + punch_period_us_ > now_)
+        next = last_punch_ + punch_period_us_;
+    return next;
+}
+
+bool SimHardware::punch_ready() { return !punched_once_ || now_ >= last_punch_ + punch_period_us_; }
+
+void SimHardware::punch(std::uint8_t row) {
+    if (punched_.size() + 1 == o_.miss_hole_at) row = static_cast<std::uint8_t>(row & (row - 1));
+    punched_.push_back(row);
+    last_punch_ = now_;
+    punched_once_ = true;
+}
+
+std::uint16_t SimHardware::status_lines() {
+    std::uint16_t bits = forced_status;
+    if (position_ >= reader_tape().size()) bits |= tapefw::status::tape_out;
+    return bits;
+}
+
+}  // namespace tapesim
