@@ -46,6 +46,8 @@ int main(int argc, char** argv) {
     cli::add_devices(app);
     cli::add_restore(app);
     cli::add_diff(app);
+    cli::add_label(app);
+    cli::add_render(app);
     cli::install_output_cleanup();
     try {
         app.parse(argc, argv);
