@@ -42,7 +42,7 @@ void add_label(CLI::App& app) {
     auto* sub = app.add_subcommand(
         "label",
         "Punch a leader label alone: text as letters of holes, readable along the tape, 10 blank frames each side");
-    sub->add_option("text", a->text, "Latin or Cyrillic capitals, digits, space, - . / (at most 64)")->required();
+    sub->add_option("text", a->text, "Latin or Cyrillic capitals, digits, space, - . / (at most 80)")->required();
     sub->add_option("-o,--output", a->output, "Tape image to write; - for stdout (raw refuses a terminal)");
     sub->add_option("--code,-c", a->code, "iso or eia: the layout of the letters")
         ->check(CLI::IsMember({"iso", "eia"}))

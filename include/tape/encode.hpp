@@ -30,7 +30,7 @@ struct EncodeOptions {
     const CodeTable* eia_table = nullptr;  ///< a corrected EIA table; nullptr = built-in
     /// Punched into the leader as letters of holes (tape/label.hpp), label_blank_around frames from its
     /// start; empty: none. The leader keeps its length, so the program starts at the same frame.
-    std::string label;
+    std::string label{};
 };
 
 /// Each text line is a block: LF or CR LF in the text, LF (EIA: EOB) on tape. A UTF-8 byte-order

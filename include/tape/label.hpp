@@ -26,7 +26,7 @@
 
 namespace tape {
 
-inline constexpr std::size_t label_max_chars = 64;     ///< characters of one label
+inline constexpr std::size_t label_max_chars = 80;     ///< characters of one label
 inline constexpr std::size_t label_glyph_frames = 6;   ///< a marker frame and 5 glyph frames a character
 inline constexpr std::size_t label_glyph_rows = 6;     ///< tracks a glyph is drawn on
 inline constexpr std::size_t label_blank_around = 10;  ///< blank frames kept before and after a label in a leader

@@ -25,7 +25,7 @@ std::string_view mark_name(MarkKind kind);
 struct FrameMark {
     std::uint64_t frame = 0;  ///< 1-based
     MarkKind kind = MarkKind::restored;
-    std::string note;  ///< shown as the mark's tooltip (an SVG <title>)
+    std::string note{};  ///< shown as the mark's tooltip (an SVG <title>)
 };
 
 struct RenderOptions {
@@ -34,7 +34,7 @@ struct RenderOptions {
     std::uint64_t to = 0;             ///< last frame drawn; 0: the end of the tape
     double strip_mm = 254;            ///< tape drawn in strips of this length, one under the other
     bool mirror = false;              ///< seen from the other side: track 1 on top instead of track 8
-    std::vector<FrameMark> marks;     ///< in any order
+    std::vector<FrameMark> marks{};   ///< in any order
 };
 
 /// Geometry shared by the drawing and its tests, in hundredths of a millimetre (the SVG's user unit).

@@ -1,6 +1,6 @@
 // The label font. Capitals 5 x 6, so that a letter is 12.7 mm wide and 15 mm high on tape. Zero is
-// slashed and every glyph differs from every other of its set (tests/label_test.cpp checks), so that a
-// label reads back as what was punched.
+// slashed, У has no bowl (its columns would be rows 3 and 5 alone: the EIA rewind stop), and every glyph differs from
+// every other of its set (tests/label_test.cpp checks), so that a label reads back as what was punched.
 #include "codec/label_font.hpp"
 
 namespace tape::label_font {
@@ -71,7 +71,7 @@ constexpr Glyph cyrillic_glyphs[] = {
     {U'Р', {"####.", "#...#", "#...#", "####.", "#....", "#...."}},
     {U'С', {".####", "#....", "#....", "#....", "#....", ".####"}},
     {U'Т', {"#####", "..#..", "..#..", "..#..", "..#..", "..#.."}},
-    {U'У', {"#...#", "#...#", "#...#", ".####", "....#", "####."}},
+    {U'У', {"#...#", "#...#", ".#.#.", "..#..", ".#...", "#...."}},
     {U'Ф', {".###.", "#.#.#", "#.#.#", ".###.", "..#..", "..#.."}},
     {U'Х', {"#...#", ".#.#.", "..#..", "..#..", ".#.#.", "#...#"}},
     {U'Ц', {"#..#.", "#..#.", "#..#.", "#..#.", "#####", "....#"}},
