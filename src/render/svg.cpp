@@ -101,7 +101,10 @@ std::string frame_text(const FrameCode& code, Frame f) {
 
 std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
     std::uint64_t last = o.to ? o.to : frames.size();
-    if (o.from < 1 || o.from > last + 1 || last > frames.size())
+    if (o.from > last && last <= frames.size())
+        throw Error(Errc::usage, "the first frame drawn (" + std::to_string(o.from) + ") is after the last (" +
+                                     std::to_string(last) + ")");
+    if (o.from < 1 || last > frames.size())
         throw Error(Errc::usage, "frames " + std::to_string(o.from) + " to " + std::to_string(last) +
                                      ": the tape has " + std::to_string(frames.size()) + " frames");
     auto drawn = frames.subspan(o.from - 1, last + 1 - o.from);
