@@ -26,6 +26,7 @@ struct FrameMark {
     std::uint64_t frame = 0;  ///< 1-based
     MarkKind kind = MarkKind::restored;
     std::string note{};  ///< shown as the mark's tooltip (an SVG <title>)
+    std::string link{};  ///< when set, the mark links there (a page's "#p12")
 };
 
 struct RenderOptions {
@@ -57,8 +58,9 @@ Point hole_centre(std::uint64_t n, int track, std::uint64_t per_strip, bool mirr
 }  // namespace svg_geometry
 
 /// The frames' picture as a whole SVG document, the same bytes for the same input. Bad frames (of
-/// options.code) and options.marks are shaded in the legend's colours, each with an id "fN" (N the
-/// frame number) for links. Throws Error(Errc::usage) for from after to, or a range past the end.
+/// options.code, where options.marks has no mark for them) and options.marks are shaded in the legend's colours, each
+/// with an id "fN" (N the frame number) for links. Throws Error(Errc::usage) for from after to, or a range past the
+/// end.
 std::string render_svg(std::span<const Frame> frames, const RenderOptions& options);
 
 }  // namespace tape

@@ -123,7 +123,8 @@ std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
     if (o.code) {
         for (std::size_t i = 0; i < drawn.size(); ++i) {
             auto k = o.code->kind(drawn[i]);
-            if (k == FrameKind::parity_error || k == FrameKind::not_in_code)
+            // A frame the caller marked is said by its mark (a restoration's verdict says more).
+            if ((k == FrameKind::parity_error || k == FrameKind::not_in_code) && !marks.contains(o.from + i))
                 found.push_back({o.from + i, MarkKind::parity,
                                  k == FrameKind::parity_error ? "parity error" : "not a character of the code"});
         }
@@ -180,6 +181,11 @@ std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
         out += "\" height=\"2540\" fill=\"#f3e6bf\" stroke=\"#a8925a\" stroke-width=\"20\"/>\n";
         for (auto it = marks.lower_bound(o.from + begin); it != marks.end() && it->first < o.from + end; ++it) {
             const FrameMark& m = *it->second;
+            if (!m.link.empty()) {
+                out += "<a href=\"";
+                put_escaped(out, m.link);
+                out += "\">";
+            }
             out += "<rect id=\"f";
             put(out, static_cast<std::int64_t>(m.frame));
             if (it != marks.begin() && std::prev(it)->first == it->first) {  // ids stay unique
@@ -198,7 +204,8 @@ std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
             put(out, static_cast<std::int64_t>(m.frame));
             out += ": ";
             put_escaped(out, m.note.empty() ? mark_name(m.kind) : std::string_view(m.note));
-            out += "</title></rect>\n";
+            out += "</title></rect>";
+            out += m.link.empty() ? "\n" : "</a>\n";
         }
         out += "<g fill=\"#1b1b1b\">\n";
         for (std::uint64_t n = begin; n < end; ++n) {

@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """The tape as a browser draws it: `tape render` output opened in headless Chromium, screenshot to PNG,
-and the pixels looked at where the holes of a known tape are and where they are not.
+and the pixels looked at where the holes of a known tape are and where they are not; then the page of
+`tape restore --html`: it loads with no console message (no script, nothing fetched), and each problem
+frame of the JSON report is marked on the drawn tape in its colour, where the report says.
 
 Usage: browser_check.py TAPE_BINARY. Exit 0 passed, 1 failed, 77 skipped (Chromium missing or unable to
 start: the reason is printed). Only the standard library: PNG read with zlib and struct.
@@ -95,6 +97,97 @@ def screenshot(chromium, page, png, width, height, extra=()):
         shutil.rmtree(profile, ignore_errors=True)
 
 
+GREEN = (153, 197, 138)  # the legend's colours at 45% over the paper
+ORANGE = (237, 196, 118)
+PAPER = (243, 230, 191)
+RED = (234, 148, 124)
+
+
+def nearest(p):
+    colours = {"paper": PAPER, "restored": GREEN, "doubtful": ORANGE, "parity": RED}
+    return min(colours, key=lambda k: sum((a - b) ** 2 for a, b in zip(p, colours[k])))
+
+
+def console_messages(chromium, page):
+    """Lines Chromium logs for the page's console (errors, CSP violations, failed loads)."""
+    profile = tempfile.mkdtemp(prefix="tape-chromium-")
+    try:
+        args = ["timeout", "60", chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                "--enable-logging=stderr", "--v=0", f"--user-data-dir={profile}", "--dump-dom", "file://" + page]
+        r = subprocess.run(args, capture_output=True, text=True, timeout=90)
+        return r.stdout, [line for line in r.stderr.splitlines() if "CONSOLE" in line]
+    finally:
+        shutil.rmtree(profile, ignore_errors=True)
+
+
+def check_restore_page(tape, chromium, work, failures):
+    import json
+    damage = os.path.join(os.path.dirname(tape), "tape-damage")
+    sample = os.path.join(os.path.dirname(os.path.realpath(__file__)), "..", "..", "tapes",
+                          "gost-20999-format-example.iso.ptp")
+    # The console check must be able to fail: a page with a console error is seen to have one.
+    control = os.path.join(work, "control.html")
+    open(control, "w").write("<!DOCTYPE html><html><body><script>console.error('control')</script></body></html>")
+    if not console_messages(chromium, control)[1]:
+        failures.append("a console error on a control page was not seen: the console check sees nothing")
+    cases = {"three": [11, 12, 13], "one": [5]}
+    for name, seeds in cases.items():
+        reads = []
+        for seed in seeds:
+            path = os.path.join(work, f"{name}-{seed}.ptp")
+            damage_rate = "0.02" if len(seeds) > 1 else "0.03"
+            subprocess.run([damage, sample, "-o", path, "--seed", str(seed), "--damage", damage_rate], check=True,
+                           timeout=60)
+            reads.append(path)
+        page = os.path.join(work, f"{name}.html")
+        report = os.path.join(work, f"{name}.json")
+        r = subprocess.run([tape, "restore", *reads, "-o", os.path.join(work, f"{name}-out.ptp"), "--json",
+                            "--report", report, "--html", page], timeout=60)
+        if r.returncode not in (0, 1):
+            failures.append(f"{name}: restore exit {r.returncode}")
+            continue
+        problems = [p for p in json.load(open(report))["problems"] if p["frame"]]
+        dom, console = console_messages(chromium, page)
+        if console:
+            failures.append(f"{name}: console messages: {console[:3]}")
+        for p in problems:
+            if f'id="p{p["frame"]}"' not in dom or f'href="#f{p["frame"]}"' not in dom:
+                failures.append(f"{name}: frame {p['frame']}: no table row linked to the tape")
+        png = os.path.join(work, f"{name}.png")
+        screenshot(chromium, page, png, 1300, 1600)  # the page holds strips of 263 mm, 994 px
+        w, h, rows = read_png(png)
+        # The first strip's top-left corner: the first paper-coloured pixel from the top.
+        corner = next(((x, y) for y in range(h) for x in range(w)
+                       if all(abs(a - b) <= 3 for a, b in zip(rows[y][x], PAPER))), None)
+        if corner is None:
+            failures.append(f"{name}: no tape found in the screenshot")
+            continue
+        top_units = LEGEND + NUMBERS
+        print(f"{name}: tape found at {corner} in a {w}x{h} screenshot")
+
+        def at(frame, per_strip=100):
+            # Between the tape's edge and track 8 (whose holes begin 1.62 mm in): no hole is ever there,
+            # only the mark's colour.
+            x, y = hole_centre(frame - 1, 8, per_strip)
+            y -= PITCH - 75
+            return rows[corner[1] + round((y - top_units) * PX_PER_UNIT)][corner[0] + round((x - LEFT) * PX_PER_UNIT)]
+
+        marked = set()
+        for p in problems:
+            want = "restored" if p["status"] in ("voted", "inferred") else "doubtful"
+            got = nearest(at(p["frame"]))
+            marked.add(p["frame"])
+            if got != want:
+                failures.append(f"{name}: frame {p['frame']} ({p['status']}): {want} mark expected, {got} {at(p['frame'])}")
+        clean = [f for f in range(2, 390, 7) if not ({f - 1, f, f + 1} & marked)]
+        for f in clean:
+            if nearest(at(f)) != "paper":
+                failures.append(f"{name}: frame {f} (clean): paper expected, pixel {at(f)}")
+        print(f"restore --html ({name} read(s)): {len(problems)} problem frames marked where the report says, "
+              f"{len(clean)} clean frames unmarked, no console message")
+
+
 def main():
     tape = os.path.realpath(sys.argv[1])
     chromium = find_chromium()
@@ -167,6 +260,7 @@ def main():
         if shaded == plain:
             failures.append("frame 3 (parity error) looks like frame 2 (good)")
         print(f"parity error shading {shaded}, good frame {plain}")
+        check_restore_page(tape, chromium, work, failures)
     for f in failures[:40]:
         print("FAIL:", f)
     return 1 if failures else 0
