@@ -125,3 +125,23 @@ TEST(Render, TheSameBytesEveryRunAndValidXml) {
     cmd = "timeout 30 xmllint --noout " + dir.file("m.svg") + " 2>" + dir.file("err");
     EXPECT_EQ(std::system(cmd.c_str()), 0) << read_text(dir.file("err"));
 }
+
+TEST(Render, AMarkMayLinkAndSaysMoreThanTheParityShading) {
+    auto code = FrameCode::iso();
+    std::vector<Frame> frames = {0x25, 0x26, 0x27};  // all three fail even parity
+    RenderOptions o{.code = &code, .marks = {{2, MarkKind::doubtful, "unresolved", "#p2"}}};
+    std::string svg = render_svg(frames, o);
+    EXPECT_NE(svg.find("<a href=\"#p2\"><rect id=\"f2\" class=\"mark doubtful\""), std::string::npos);
+    EXPECT_EQ(count(svg, "class=\"mark parity\""), 2U);  // frames 1 and 3; frame 2 has its own mark
+    EXPECT_EQ(count(svg, "id=\"f2"), 1U);
+}
+
+TEST(Render, ALeaderLabelHasNoCharactersAndNoBadFrameShading) {
+    auto code = FrameCode::eia();
+    std::vector<Frame> frames = {0x00, 0x03, 0x13, 0x00};  // 0x03: even holes, a parity error in EIA
+    std::string plain = render_svg(frames, RenderOptions{.code = &code});
+    EXPECT_NE(plain.find("class=\"mark parity\""), std::string::npos);
+    std::string labelled = render_svg(frames, RenderOptions{.code = &code, .label_first = 2, .label_frames = 2});
+    EXPECT_EQ(labelled.find("class=\"mark"), std::string::npos);
+    EXPECT_EQ(labelled.find(">!<"), std::string::npos);
+}

@@ -20,13 +20,13 @@ void run(const RenderArgs& a) {
     TapeInput in = read_tape(a.input, a.format);
     std::string name = display_name(a.input);
     std::optional<tape::FrameCode> code;
+    auto label = tape::find_label(in.frames);
     if (a.code == "iso" || a.code == "eia") {
         code = tape::FrameCode::make(*tape::parse_code(a.code), *tape::parse_parity(a.parity), globals().table());
     } else if (a.code == "auto") {
         // The code is told from the tape without its leader label, as decoding tells it.
         std::vector<tape::Frame> scratch;
-        auto d = tape::detect_code(tape::without_label(in.frames, 0, tape::find_label(in.frames), scratch),
-                                   globals().table());
+        auto d = tape::detect_code(tape::without_label(in.frames, 0, label, scratch), globals().table());
         if (d.code)
             code = tape::FrameCode::make(*d.code, *d.code == tape::Code::eia ? tape::Parity::odd : tape::Parity::even,
                                          globals().table());
@@ -42,6 +42,10 @@ void run(const RenderArgs& a) {
     o.to = a.to;
     o.strip_mm = a.strip_mm;
     o.mirror = a.mirror;
+    if (label) {
+        o.label_first = label->first + 1;
+        o.label_frames = label->frames;
+    }
     std::string svg;
     try {
         svg = tape::render_svg(in.frames, o);

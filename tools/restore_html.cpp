@@ -3,6 +3,7 @@
 
 #include <cstdio>
 
+#include "tape/label.hpp"
 #include "tape/render.hpp"
 
 namespace cli {
@@ -90,6 +91,10 @@ std::string restore_report_html(const RestoreReportInput& in) {
         if (p.frame && *p.frame >= 1 && *p.frame <= r.frames.size())
             o.marks.push_back({*p.frame, mark_for(p.status), std::string(tape::status_name(p.status)) + ": " + p.reason,
                                "#p" + std::to_string(*p.frame)});
+    if (auto label = tape::find_label(r.frames)) {
+        o.label_first = label->first + 1;
+        o.label_frames = label->frames;
+    }
     std::string svg = tape::render_svg(r.frames, o);
     svg.erase(0, svg.find("<svg"));  // the XML declaration has no place inside HTML
     s += "<h2>The restored tape</h2>\n<div class=\"tape\" id=\"tape\">\n" + svg + "</div>\n";

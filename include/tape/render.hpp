@@ -36,6 +36,9 @@ struct RenderOptions {
     double strip_mm = 254;            ///< tape drawn in strips of this length, one under the other
     bool mirror = false;              ///< seen from the other side: track 1 on top instead of track 8
     std::vector<FrameMark> marks{};   ///< in any order
+    /// A leader label's frames (tape/label.hpp; first 1-based, 0: none): drawn with no character and
+    /// never shaded as bad frames, since their holes are letters.
+    std::uint64_t label_first = 0, label_frames = 0;
 };
 
 /// Geometry shared by the drawing and its tests, in hundredths of a millimetre (the SVG's user unit).

@@ -115,6 +115,9 @@ std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
     const std::int64_t width = std::max<std::int64_t>(left + strip_frames * pitch + 300, 19000);
     const std::int64_t height = legend + static_cast<std::int64_t>(strips) * strip_pitch;
 
+    auto in_label = [&](std::uint64_t frame) {
+        return frame >= o.label_first && frame < o.label_first + o.label_frames;
+    };
     // The marks of the frames drawn, by frame: the caller's, then the bad frames the code shows.
     std::multimap<std::uint64_t, const FrameMark*> marks;
     for (const auto& m : o.marks)
@@ -124,7 +127,8 @@ std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
         for (std::size_t i = 0; i < drawn.size(); ++i) {
             auto k = o.code->kind(drawn[i]);
             // A frame the caller marked is said by its mark (a restoration's verdict says more).
-            if ((k == FrameKind::parity_error || k == FrameKind::not_in_code) && !marks.contains(o.from + i))
+            if ((k == FrameKind::parity_error || k == FrameKind::not_in_code) && !marks.contains(o.from + i) &&
+                !in_label(o.from + i))
                 found.push_back({o.from + i, MarkKind::parity,
                                  k == FrameKind::parity_error ? "parity error" : "not a character of the code"});
         }
@@ -238,7 +242,7 @@ std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
         if (o.code) {
             out += "<g font-size=\"200\" text-anchor=\"middle\">\n";
             for (std::uint64_t n = begin; n < end; ++n) {
-                std::string t = frame_text(*o.code, drawn[n]);
+                std::string t = in_label(o.from + n) ? std::string() : frame_text(*o.code, drawn[n]);
                 if (t.empty()) continue;
                 out += "<text x=\"";
                 put(out, left + static_cast<std::int64_t>(n - begin) * pitch + pitch / 2);
