@@ -128,7 +128,7 @@ TEST(Render, TheSameBytesEveryRunAndValidXml) {
 
 TEST(Render, AMarkMayLinkAndSaysMoreThanTheParityShading) {
     auto code = FrameCode::iso();
-    std::vector<Frame> frames = {0x25, 0x26, 0x27};  // all three fail even parity
+    std::vector<Frame> frames = {0x25, 0x26, 0x29};  // all three fail even parity (3 holes each)
     RenderOptions o{.code = &code, .marks = {{2, MarkKind::doubtful, "unresolved", "#p2"}}};
     std::string svg = render_svg(frames, o);
     EXPECT_NE(svg.find("<a href=\"#p2\"><rect id=\"f2\" class=\"mark doubtful\""), std::string::npos);
