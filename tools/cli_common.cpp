@@ -437,4 +437,17 @@ std::string position_text(const tape::Location& where, bool from_tape) {
     return "line " + std::to_string(where.line);
 }
 
+std::string label_text(const tape::LeaderLabel& label) {
+    return label.text + " (frames " + std::to_string(label.first + 1) + "-" +
+           std::to_string(label.first + label.frames) + ", " + (label.code == tape::Code::eia ? "EIA" : "ISO") +
+           " letters)";
+}
+
+std::string label_json(const std::optional<tape::LeaderLabel>& label) {
+    if (!label) return "null";
+    return "{\"text\": " + json_string(label->text) + ", \"first_frame\": " + std::to_string(label->first + 1) +
+           ", \"frames\": " + std::to_string(label->frames) +
+           ", \"code\": " + json_string(std::string(tape::code_name(label->code))) + "}";
+}
+
 }  // namespace cli

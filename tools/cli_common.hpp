@@ -16,6 +16,7 @@
 #include "tape/format_spec.hpp"
 #include "tape/image.hpp"
 #include "tape/input.hpp"
+#include "tape/label.hpp"
 #include "tape/program.hpp"
 
 namespace cli {
@@ -157,6 +158,11 @@ std::string json_string(const std::string& s);
 std::string json_number(const std::optional<std::uint64_t>& n);
 /// {"rule", "severity", "frame", "line", "column", "block", "message"}: one finding as tape(1) documents it.
 std::string finding_json(const tape::Diagnostic& f);
+
+/// "DETAIL 17 (frames 11-65, ISO letters)": a leader label for people.
+std::string label_text(const tape::LeaderLabel& label);
+/// {"text", "first_frame", "frames", "code"} or null.
+std::string label_json(const std::optional<tape::LeaderLabel>& label);
 
 /// "frame 137" for tapes, "line 3" for text.
 std::string position_text(const tape::Location& where, bool from_tape);

@@ -60,8 +60,10 @@ std::string location_json(const tape::Location& l) {
 // only the label, the text after a program's end and the findings are held.
 class Lister : public tape::ProgramVisitor {
 public:
-    Lister(const BlocksArgs& a, const std::string& name, bool from_tape) : a_(a), name_(name), from_tape_(from_tape) {
+    Lister(const BlocksArgs& a, const std::string& name, bool from_tape, std::optional<tape::LeaderLabel> leader)
+        : a_(a), name_(name), from_tape_(from_tape), leader_(std::move(leader)) {
         if (a_.json) out_ += "{\"programs\": [";
+        if (!a_.json && leader_) out_ += "leader label: " + label_text(*leader_) + "\n";
     }
 
     void label(std::string_view text) override { label_ += text; }
@@ -149,6 +151,7 @@ public:
             out_ += "], \"dialect\": " + json_string(std::string(dialect_)) +
                     ", \"record_end\": " + (record_end_ ? location_json(*record_end_) : "null") +
                     ", \"after_record_end\": " + json_string(after_record_) + ", \"label\": " + json_string(label_) +
+                    ", \"leader_label\": " + label_json(leader_) +
                     ", \"physical_start\": " + (physical_start_ ? "true" : "false") + ", \"diagnostics\": [" +
                     findings_ + "]}\n";
         flush();
@@ -200,13 +203,20 @@ private:
     std::string out_, label_, after_end_, after_record_, findings_;
     std::string_view dialect_ = "gost";
     std::optional<tape::Location> record_end_;
+    std::optional<tape::LeaderLabel> leader_;  // letters of holes in the leader, not read as text
     bool label_done_ = false, physical_start_ = false, in_program_ = false, ended_ = false;
     std::uint64_t programs_ = 0, blocks_ = 0;
 };
 
 void run(const BlocksArgs& a) {
     ProgramInput in = open_program(a.input, a.source);
-    Lister lister(a, in.name, in.from_tape);
+    std::optional<tape::LeaderLabel> leader;
+    try {
+        if (in.from_tape) leader = in.input->label();
+    } catch (const tape::Error& e) {
+        fail(in.name, e);
+    }
+    Lister lister(a, in.name, in.from_tape, leader);
     load_program(in, lister);
     lister.finish();
     end_program(in);

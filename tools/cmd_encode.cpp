@@ -15,7 +15,7 @@ namespace cli {
 namespace {
 
 struct EncodeArgs {
-    std::string input = "-", output = "-", format;
+    std::string input = "-", output = "-", format, label;
     CodeChoice choice;
     std::size_t leader = tape::default_leader, trailer = tape::default_trailer;
     bool force = false;
@@ -30,6 +30,7 @@ void run(const EncodeArgs& a) {
     o.leader = a.leader;
     o.trailer = a.trailer;
     o.eia_table = globals().table();
+    o.label = a.label;
     if (o.code == tape::Code::eia && o.parity != tape::Parity::even)
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
     if (tape::is_five_track(o.code) && o.parity != tape::Parity::even)
@@ -42,6 +43,12 @@ void run(const EncodeArgs& a) {
              std::string(format->id) + " images can only be read; write " + format_choices(true));
     refuse_binary_terminal(a.output, format->binary, a.force);
     tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
+    std::unique_ptr<tape::Encoder> made;
+    try {
+        made = std::make_unique<tape::Encoder>(o);  // a label the font or the leader cannot take fails here
+    } catch (const tape::Error& e) {
+        fail(a.label.empty() ? in_name : "--label", e);
+    }
     auto writer = format->make_writer(tape::ImageWriteOptions{&code});
     std::string picture;
     std::unique_ptr<tape::FileSource> source;
@@ -77,7 +84,7 @@ void run(const EncodeArgs& a) {
         }
     };
     std::vector<tape::Frame> frames;
-    tape::Encoder encoder(o);
+    tape::Encoder& encoder = *made;
     bool noted = false;
     auto note_bom = [&] {
         if (noted || !encoder.skipped_byte_order_mark()) return;
@@ -130,6 +137,9 @@ void add_encode(CLI::App& app) {
     sub->add_option("--format,-f", a->format,
                     "Image format: " + format_choices(true) + " (default: by extension of OUT, else raw)")
         ->check(format_check(true));
+    sub->add_option("--label", a->label,
+                    "Punch TEXT into the leader as letters of holes, readable along the tape (Latin or Cyrillic "
+                    "capitals, digits, space, - . /); the program is unchanged");
     sub->add_flag("--force", a->force, "Replace an existing OUT; write raw to a terminal");
     sub->callback([a] { run(*a); });
 }

@@ -6,6 +6,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "tape/detect.hpp"
+#include "tape/label.hpp"
 #include "tape/survey.hpp"
 
 namespace cli {
@@ -59,10 +60,17 @@ void run(const InfoArgs& a) {
     const tape::Code code_given = a.code == "eia" ? tape::Code::eia : tape::Code::iso;
     std::optional<tape::Surveyor> extra;
     if (given_rule) extra.emplace(tape::FrameCode::make(code_given, *given_rule, globals().table()));
+    // A leader label is holes, but no data: counted as the blank leader it is punched into.
+    std::optional<tape::LeaderLabel> label;
     try {
+        label = in->label();
+        std::uint64_t at = 0;
+        std::vector<tape::Frame> scratch;
         for (auto frames = in->next_frames(); !frames.empty(); frames = in->next_frames()) {
-            detector.feed(frames);
-            if (extra) extra->feed(frames);
+            auto counted = tape::without_label(frames, at, label, scratch);
+            at += frames.size();
+            detector.feed(counted);
+            if (extra) extra->feed(counted);
         }
     } catch (const tape::Error& e) {
         fail(name, e);
@@ -88,7 +96,7 @@ void run(const InfoArgs& a) {
             << ", \"code\": " << (code ? json_string(code_text) : "null")
             << ", \"code_reason\": " << json_string(reason)
             << ", \"kind\": " << json_string(std::string(tape::tape_kind_name(d.kind)))
-            << ", \"verdict\": " << json_string(d.reason)
+            << ", \"verdict\": " << json_string(d.reason) << ", \"leader_label\": " << label_json(label)
             << ", \"advice\": " << (advice.empty() ? "null" : json_string(advice))
             << ", \"other_reading\": " << (other ? json_string(with_hint(other->message, other->hint)) : "null")
             << ", \"evidence\": " << evidence_json(d.evidence) << ", \"parity\": " << json_string(parity_found(counts))
@@ -104,6 +112,7 @@ void run(const InfoArgs& a) {
             << "format:         " << in->format()->id << "\n"
             << "code:           " << code_text << (given_code ? " (given with --code)" : "") << "\n"
             << "tape:           " << d.reason << "\n";
+        if (label) out << "leader label:   " << label_text(*label) << "\n";
         if (!advice.empty()) out << "advice:         " << advice << "\n";
         if (other) out << "note:           " << with_hint(other->message, other->hint) << "\n";
         out << "evidence:       " << e.punched << " punched of " << e.frames << " frames, " << e.five_track

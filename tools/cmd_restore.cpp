@@ -2,6 +2,7 @@
 // guessed or lost (tape/restore.hpp).
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "restore_html.hpp"
 #include "restore_report.hpp"
 #include "tape/format_spec.hpp"
 
@@ -10,7 +11,7 @@ namespace {
 
 struct RestoreArgs {
     std::vector<std::string> reads;
-    std::string output, report, format, code = "auto", parity = "even", dialect = "auto", spec;
+    std::string output, report, html, format, code = "auto", parity = "even", dialect = "auto", spec;
     bool json = false, force = false;
 };
 
@@ -46,6 +47,7 @@ void run(const RestoreArgs& a) {
     write_output(a.output, out_format->write(result.frames, wo), out_format->binary, a.force);
     std::string text = a.json ? restore_report_json(report) : restore_report_text(report);
     write_output(a.report.empty() ? "-" : a.report, text, false, a.force);
+    if (!a.html.empty()) write_output(a.html, restore_report_html(report), false, a.force);
     if (!result.complete()) throw Exit{bad_data};
 }
 
@@ -59,6 +61,9 @@ void add_restore(CLI::App& app) {
     sub->add_option("-o,--output", a->output, "The restored image (format by extension, or --format)")->required();
     sub->add_option("--report", a->report, "Write the report to FILE instead of standard output");
     sub->add_flag("--json", a->json, "The report as JSON (schema tape-restore/1, in tape(1))");
+    sub->add_option("--html", a->html,
+                    "Also write the report as one self-contained HTML page: the tape drawn with its problem "
+                    "frames marked, and a table of them");
     sub->add_option("--format,-f", a->format, "Image format of the output: " + format_choices(true))
         ->check(format_check(true));
     sub->add_option("--code,-c", a->code,

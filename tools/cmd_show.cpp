@@ -19,10 +19,16 @@ void run(const ShowArgs& a) {
     auto writer = tape::find_image_format("holes")->make_writer(tape::ImageWriteOptions{&code});
     tape::Surveyor surveyor(code);
     std::string picture;
+    std::optional<tape::LeaderLabel> label;
     try {
+        // A leader label is drawn with its holes, but its frames are no characters to count as bad.
+        label = in->label();
+        std::uint64_t at = 0;
+        std::vector<tape::Frame> scratch;
         for (auto frames = in->next_frames(); !frames.empty(); frames = in->next_frames()) {
             writer->write(frames, picture);
-            surveyor.feed(frames);
+            surveyor.feed(tape::without_label(frames, at, label, scratch));
+            at += frames.size();
             write_output("-", picture, false, false);
             picture.clear();
         }
@@ -31,6 +37,7 @@ void run(const ShowArgs& a) {
     }
     writer->finish(picture);
     write_output("-", picture, false, false);
+    if (label) say(name, "leader label " + label_text(*label) + ": letters of holes, not characters");
     auto s = surveyor.result();
     if (s.parity_errors + s.not_in_code > 0) {
         say(name, std::to_string(s.parity_errors) + " parity error(s), " + std::to_string(s.not_in_code) +

@@ -22,5 +22,7 @@ void add_devices(CLI::App& app);
 void add_restore(CLI::App& app);
 void add_diff(CLI::App& app);
 void add_adapter(CLI::App& app);
+void add_label(CLI::App& app);
+void add_render(CLI::App& app);
 
 }  // namespace cli

@@ -47,6 +47,8 @@ int main(int argc, char** argv) {
     cli::add_restore(app);
     cli::add_diff(app);
     cli::add_adapter(app);
+    cli::add_label(app);
+    cli::add_render(app);
     cli::install_output_cleanup();
     try {
         app.parse(argc, argv);

@@ -28,12 +28,16 @@ struct EncodeOptions {
     std::size_t trailer = default_trailer;
     bool crlf = false;                     ///< CR LF on tape at the end of each block (ISO; 5-track always)
     const CodeTable* eia_table = nullptr;  ///< a corrected EIA table; nullptr = built-in
+    /// Punched into the leader as letters of holes (tape/label.hpp), label_blank_around frames from its
+    /// start; empty: none. The leader keeps its length, so the program starts at the same frame.
+    std::string label{};
 };
 
 /// Each text line is a block: LF or CR LF in the text, LF (EIA: EOB) on tape. A UTF-8 byte-order
 /// mark at the start of the text is skipped.
 /// Throws Error(Errc::bad_text) naming line and column of the first character the code cannot carry,
-/// Error(Errc::usage) for a leader or trailer over max_blank_frames.
+/// Error(Errc::usage) for a leader or trailer over max_blank_frames, for a label the font cannot draw or
+/// a leader too short to hold it with label_blank_around blank frames each side (the message says how long).
 /// 5-track codes (ITA2, МТК-2): a line ends with CR LF on tape, as teleprinters need; a shift frame
 /// stands before the first character that needs a register and wherever the register changes, so a
 /// reader in any state reads the tape right. The codes have no case: lower-case letters are punched as
@@ -71,6 +75,7 @@ private:
     Position position_{.line = 1, .column = 1};  ///< of the next byte, for messages
     std::string converted_;
     std::vector<std::size_t> origin_;
+    std::vector<Frame> label_;  ///< the label's frames, punched into the leader
 };
 
 /// The hot loop: 7-bit characters -> frames into out (room for chars.size() frames).

@@ -13,6 +13,7 @@
 #include "tape/file_io.hpp"
 #include "tape/frame.hpp"
 #include "tape/image.hpp"
+#include "tape/label.hpp"
 
 namespace tape {
 
@@ -33,7 +34,13 @@ public:
 
     /// The verdict of detect_code() on the tape, from a read-ahead of its first 256 Ki frames (the whole
     /// of most tapes), given again by next(). That many frames are held, 4 MiB past an endless leader.
+    /// A leader label's frames are read as blank tape for the verdict.
     CodeDetection detect(const CodeTable* eia_table = nullptr);
+
+    /// The label in the tape's leader (tape/label.hpp), looked for once, before the first next(), in a
+    /// read-ahead of the leader and label_search_frames more (given again by next()); nullopt when
+    /// there is none or next() had already given frames.
+    const std::optional<LeaderLabel>& label();
 
 private:
     bool fill();
@@ -48,6 +55,9 @@ private:
     // Chunks are read into it (raw frames straight from it); page-aligned, where read() copies fastest.
     std::unique_ptr<std::uint8_t, void (*)(void*)> read_buffer_{nullptr, std::free};
     bool ended_ = false;
+    bool given_any_ = false;  // next() has given frames: the read-ahead no longer starts the tape
+    bool label_checked_ = false;
+    std::optional<LeaderLabel> label_;
 };
 
 }  // namespace tape

@@ -15,6 +15,7 @@
 #include "tape/file_io.hpp"
 #include "tape/image.hpp"
 #include "tape/image_input.hpp"
+#include "tape/label.hpp"
 #include "tape/program.hpp"
 #include "tape/utf8_text.hpp"
 
@@ -47,8 +48,14 @@ public:
     /// The image's format, or nullptr for a text program.
     const ImageFormat* format() const { return image_ ? &image_->format() : nullptr; }
 
-    /// An image's frames, a chunk at a time, valid until the next call; empty at the end.
+    /// An image's frames, a chunk at a time, valid until the next call; empty at the end. A leader
+    /// label's frames are given as they are (they are holes on the tape).
     std::span<const Frame> next_frames();
+
+    /// The label in an image's leader (tape/label.hpp), looked for before the first frames are given;
+    /// nullopt for none, for a text program, or once frames were given. next_text() and the code's
+    /// detection read its frames as blank tape, so the program and its text are the same with or without it.
+    std::optional<LeaderLabel> label();
 
     /// How an image is decoded: decided on first use, detecting the code when asked (the frames read
     /// for it are given again). Throws Error(Errc::unknown_code), with the verdict, when the tape is
@@ -85,6 +92,8 @@ private:
     std::unique_ptr<Decoder> decoder_;
     std::vector<Diagnostic> notes_;
     bool ended_ = false;
+    std::uint64_t decoded_frames_ = 0;  // frames given to the decoder: where the next chunk starts
+    std::vector<Frame> unlabelled_;     // a chunk with the label's frames blanked
 };
 
 /// Streams the programs of input into visitor, in bounded memory. A bad frame reaches

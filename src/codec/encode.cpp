@@ -7,6 +7,7 @@
 
 #include "swar.hpp"
 #include "tape/error.hpp"
+#include "tape/label.hpp"
 #include "tape/utf8_text.hpp"
 #include "utf8.hpp"
 
@@ -252,6 +253,13 @@ Encoder::Encoder(const EncodeOptions& options)
         throw Error(Errc::usage, "5-track codes carry no parity");
     if (is_five_track(options.code) && options.charset != Charset::ascii)
         throw Error(Errc::usage, "КОИ-7 is a character set of the 7-bit code; МТК-2 has its own Russian register");
+    if (!options.label.empty()) {
+        label_ = label_frames(options.label, code_);
+        std::size_t need = label_.size() + 2 * label_blank_around;
+        if (options.leader < need)
+            throw Error(Errc::usage, "the label takes " + std::to_string(label_.size()) +
+                                         " frames: a leader of at least " + std::to_string(need) + " frames holds it");
+    }
 }
 
 // Text -> the 7-bit character stream: CR LF becomes LF (CR LF again with crlf), КОИ-7 letters get
@@ -298,7 +306,10 @@ void Encoder::to_seven_bit(std::string_view text) {
 
 void Encoder::encode_piece(std::string_view text, std::vector<Frame>& out) {
     if (!leader_done_) {
+        std::size_t at = out.size();
         out.insert(out.end(), options_.leader, blank_frame);
+        if (!label_.empty())
+            std::copy(label_.begin(), label_.end(), out.begin() + static_cast<std::ptrdiff_t>(at + label_blank_around));
         leader_done_ = true;
     }
     if (code_.five_track_table()) {

@@ -60,6 +60,7 @@ bool ImageInput::fill() {
 
 std::span<const Frame> ImageInput::next() {
     given_.clear();
+    given_any_ = true;
     if (!ahead_.empty()) {
         given_.swap(ahead_);
         return given_;
@@ -86,9 +87,24 @@ CodeDetection ImageInput::detect(const CodeTable* eia_table) {
     while (ahead_.size() < detection_frames || (ahead_.size() < detection_limit && !punched()))
         if (!fill() && ended_) break;
     Detector detector(eia_table, format_->bytes_are_frames);
-    detector.feed(ahead_);
+    std::vector<Frame> scratch;
+    detector.feed(without_label(ahead_, 0, given_any_ ? std::nullopt : label(), scratch));
     if (!ended_) detector.partial();
     return detector.result();
+}
+
+const std::optional<LeaderLabel>& ImageInput::label() {
+    if (label_checked_ || given_any_) return label_;
+    label_checked_ = true;
+    auto first_punched = [&] { return std::find_if(ahead_.begin(), ahead_.end(), [](Frame f) { return f != 0; }); };
+    for (;;) {
+        auto p = first_punched();
+        if (p != ahead_.end() && static_cast<std::size_t>(ahead_.end() - p) > label_search_frames) break;
+        if (p == ahead_.end() && ahead_.size() >= detection_limit) break;  // an endless leader holds no label
+        if (!fill() && ended_) break;
+    }
+    label_ = find_label(ahead_);
+    return label_;
 }
 
 }  // namespace tape

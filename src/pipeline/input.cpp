@@ -95,6 +95,11 @@ std::span<const Frame> Input::next_frames() {
     return image_->next();
 }
 
+std::optional<LeaderLabel> Input::label() {
+    if (!image_) return std::nullopt;
+    return image_->label();
+}
+
 const DecodeOptions& Input::decode_options() {
     if (decode_) return *decode_;
     DecodeOptions o = options_.decode;
@@ -137,8 +142,12 @@ const CodeDetection& Input::detect() {
 bool Input::next_text(DecodeResult& out) {
     if (ended_) return false;
     if (image_) {
-        if (!decoder_) decoder_ = std::make_unique<Decoder>(decode_options());
-        auto frames = image_->next();
+        if (!decoder_) {
+            decoder_ = std::make_unique<Decoder>(decode_options());
+            image_->label();  // looked for before the first frames go
+        }
+        auto frames = without_label(image_->next(), decoded_frames_, image_->label(), unlabelled_);
+        decoded_frames_ += frames.size();
         if (frames.empty()) {
             ended_ = true;
             std::size_t had = out.text.size();

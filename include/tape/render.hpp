@@ -1,0 +1,69 @@
+// The tape drawn to scale as SVG: 25.4 mm wide, frames 2.54 mm apart, code holes 1.83 mm and feed
+// holes 1.17 mm across, the feed holes between tracks 3 and 4 (ECMA-10, ГОСТ 13052-74).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tape/code.hpp"
+#include "tape/frame.hpp"
+
+namespace tape {
+
+/// Why a frame is highlighted; each kind has its colour in the legend.
+enum class MarkKind : std::uint8_t {
+    parity,    ///< the frame fails the code's parity rule or is no character of it (found by the renderer)
+    restored,  ///< a restoration decided it (a vote or a repair): now right
+    doubtful,  ///< a restoration could not decide it: written as read or as the reference had it
+};
+/// "parity error", "restored", "doubtful": the legend's words.
+std::string_view mark_name(MarkKind kind);
+
+/// A frame to highlight, besides the bad frames the renderer finds itself.
+struct FrameMark {
+    std::uint64_t frame = 0;  ///< 1-based
+    MarkKind kind = MarkKind::restored;
+    std::string note{};  ///< shown as the mark's tooltip (an SVG <title>)
+    std::string link{};  ///< when set, the mark links there (a page's "#p12")
+};
+
+struct RenderOptions {
+    const FrameCode* code = nullptr;  ///< for the character beside each frame and the bad frames; nullptr: none
+    std::uint64_t from = 1;           ///< first frame drawn, 1-based
+    std::uint64_t to = 0;             ///< last frame drawn; 0: the end of the tape
+    double strip_mm = 254;            ///< tape drawn in strips of this length, one under the other
+    bool mirror = false;              ///< seen from the other side: track 1 on top instead of track 8
+    std::vector<FrameMark> marks{};   ///< in any order
+    /// A leader label's frames (tape/label.hpp; first 1-based, 0: none): drawn with no character and
+    /// never shaded as bad frames, since their holes are letters.
+    std::uint64_t label_first = 0, label_frames = 0;
+};
+
+/// Geometry shared by the drawing and its tests, in hundredths of a millimetre (the SVG's user unit).
+namespace svg_geometry {
+inline constexpr int pitch = 254;        ///< between frames and between tracks
+inline constexpr int tape_width = 2540;  ///< 25.4 mm
+inline constexpr int left = 600;         ///< from the picture's left edge to a strip's first frame
+inline constexpr int legend = 700;       ///< the legend's band at the top
+inline constexpr int numbers = 450;      ///< the band of frame numbers above each strip
+inline constexpr int characters = 450;   ///< the band of characters below each strip
+inline constexpr int gap = 300;          ///< between strips
+inline constexpr int strip_pitch = numbers + tape_width + characters + gap;
+/// Frames in one strip of length strip_mm (at least one).
+std::uint64_t frames_per_strip(double strip_mm);
+/// Centre of the hole of frame number n (0-based among the frames drawn) on track (1..8; 0: feed hole).
+struct Point {
+    std::int64_t x, y;
+};
+Point hole_centre(std::uint64_t n, int track, std::uint64_t per_strip, bool mirror);
+}  // namespace svg_geometry
+
+/// The frames' picture as a whole SVG document, the same bytes for the same input. Bad frames (of
+/// options.code, where options.marks has no mark for them) and options.marks are shaded in the legend's colours, each
+/// with an id "fN" (N the frame number) for links. Throws Error(Errc::usage) for from after to, or a range past the
+/// end.
+std::string render_svg(std::span<const Frame> frames, const RenderOptions& options);
+
+}  // namespace tape
