@@ -52,6 +52,11 @@ std::vector<std::vector<tape::Frame>> sample_tapes() {
     return out;
 }
 
+// A count over all iterations, shown per iteration.
+benchmark::Counter per_run(std::uint64_t n) {
+    return benchmark::Counter(static_cast<double>(n), benchmark::Counter::kAvgIterations);
+}
+
 struct Tally {
     std::uint64_t programs = 0, exact = 0, frames = 0, wrong = 0, flagged_wrong = 0, in_doubt = 0, blank_ends = 0;
 
@@ -66,14 +71,13 @@ struct Tally {
         for (const auto& q : r.problems) in_doubt += tape::in_doubt(q.status);
     }
     void report(benchmark::State& state) const {
-        auto per = [&](std::uint64_t n) { return static_cast<double>(n) / static_cast<double>(state.iterations()); };
-        state.counters["programs"] = per(programs);
-        state.counters["byte_exact"] = per(exact);
-        state.counters["frames"] = per(frames);
-        state.counters["silently_wrong"] = per(wrong);
-        state.counters["wrong_flagged"] = per(flagged_wrong);
-        state.counters["in_doubt"] = per(in_doubt);
-        state.counters["leader_trailer_length_off"] = per(blank_ends);
+        state.counters["programs"] = per_run(programs);
+        state.counters["byte_exact"] = per_run(exact);
+        state.counters["frames"] = per_run(frames);
+        state.counters["silently_wrong"] = per_run(wrong);
+        state.counters["wrong_flagged"] = per_run(flagged_wrong);
+        state.counters["in_doubt"] = per_run(in_doubt);
+        state.counters["leader_trailer_length_off"] = per_run(blank_ends);
     }
 };
 
@@ -139,12 +143,11 @@ struct Repairs {
         }
     }
     void report(benchmark::State& state) const {
-        auto per = [&](std::uint64_t n) { return static_cast<double>(n) / static_cast<double>(state.iterations()); };
-        state.counters["bad_frames"] = per(bad);
-        state.counters["repaired_right"] = per(right);
-        state.counters["repaired_wrong_flagged"] = per(wrong_flagged);
-        state.counters["left_flagged"] = per(left);
-        state.counters["wrong_unflagged"] = per(wrong_silent);
+        state.counters["bad_frames"] = per_run(bad);
+        state.counters["repaired_right"] = per_run(right);
+        state.counters["repaired_wrong_flagged"] = per_run(wrong_flagged);
+        state.counters["left_flagged"] = per_run(left);
+        state.counters["wrong_unflagged"] = per_run(wrong_silent);
     }
 };
 

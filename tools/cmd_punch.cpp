@@ -1,5 +1,4 @@
 // tape punch: the generic punch: a tape image's frames out to any device.
-#include <cstdio>
 
 #include "cli_device.hpp"
 #include "cli_numbers.hpp"
@@ -13,12 +12,6 @@ struct PunchArgs {
     double rate = 0, verify_timeout = 5;
     bool force = false, progress = false;
 };
-
-char hex_byte[8];
-const char* hex(tape::Frame f) {
-    std::snprintf(hex_byte, sizeof hex_byte, "0x%02X", f);
-    return hex_byte;
-}
 
 // Reads the punched tape back from the reader and names every frame that differs (exit 1 if any).
 void verify(const PunchArgs& a, const std::vector<tape::Frame>& punched) {
@@ -41,8 +34,8 @@ void verify(const PunchArgs& a, const std::vector<tape::Frame>& punched) {
         ++differ;
         if (globals().max_errors && shown >= globals().max_errors) continue;
         ++shown;
-        std::string was = hex(punched[i]);
-        say(a.verify, "frame " + std::to_string(i + 1) + ": punched " + was + ", read back " + hex(read[i]));
+        say(a.verify, "frame " + std::to_string(i + 1) + ": punched " + tape::frame_hex(punched[i]) + ", read back " +
+                          tape::frame_hex(read[i]));
     }
     if (differ > shown) say_unlisted(a.verify, differ - shown, "differing frame(s)");
     if (read.size() != punched.size())

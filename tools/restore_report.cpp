@@ -13,12 +13,6 @@ std::string cm(std::uint64_t frame) {
     return buf;
 }
 
-std::string hex(tape::Frame f) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "0x%02X", f);
-    return buf;
-}
-
 bool needs_reread(tape::FrameStatus s) {
     using S = tape::FrameStatus;
     return s == S::contested || s == S::unstable || s == S::unresolved || s == S::missing;
@@ -157,12 +151,12 @@ std::string restore_report_json(const RestoreReportInput& in) {
         for (std::size_t i = 0; i < p.seen.size(); ++i)
             s += std::string(i ? ", " : "") + "{\"read\": " + std::to_string(i + 1) +
                  ", \"covered\": " + (p.covered[i] ? "true" : "false") +
-                 ", \"frame\": " + (p.seen[i] ? json_string(hex(*p.seen[i])) : "null") + "}";
+                 ", \"frame\": " + (p.seen[i] ? json_string(tape::frame_hex(*p.seen[i])) : "null") + "}";
         s += "], \"written\": " +
-             (p.status == tape::FrameStatus::missing ? std::string("null") : json_string(hex(p.written))) +
+             (p.status == tape::FrameStatus::missing ? std::string("null") : json_string(tape::frame_hex(p.written))) +
              ", \"candidates\": [";
         for (std::size_t i = 0; i < p.candidates.size(); ++i)
-            s += std::string(i ? ", " : "") + json_string(hex(p.candidates[i]));
+            s += std::string(i ? ", " : "") + json_string(tape::frame_hex(p.candidates[i]));
         s += "], \"reason\": " + json_string(p.reason) + "}";
     }
     s += "], \"reread\": [";

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -58,6 +59,17 @@ private:
     std::vector<std::size_t> first_, end_;
     std::vector<double> shared_ = std::vector<double>(reads_, 1.0);
 };
+
+/// The frame `read` has in column, or nullopt (reads: those the alignment was made of).
+inline std::optional<Frame> frame_at(const ReadAlignment& a, std::span<const std::span<const Frame>> reads,
+                                     std::size_t column, std::size_t read) {
+    std::int32_t i = a.frame(column, read);
+    if (i == ReadAlignment::none) return std::nullopt;
+    return reads[read][static_cast<std::size_t>(i)];
+}
+
+/// True when every read that covers column has a frame there, and they are all the same.
+bool unanimous(const ReadAlignment& a, std::span<const std::span<const Frame>> reads, std::size_t column);
 
 /// Aligns reads (each a whole image's frames, at most 2^31 - 1 frames). Throws Error(Errc::bad_image)
 /// naming the read when one shares too little with the reference to be of the same tape, or when

@@ -69,6 +69,9 @@ enum class FrameKind : std::int8_t {
     not_in_code,   ///< good parity but no character of this code
 };
 
+/// True for the frames a reader reports: one failing parity, or one that is no character of the code.
+inline bool is_bad_frame(FrameKind k) { return k == FrameKind::parity_error || k == FrameKind::not_in_code; }
+
 /// One frame code with its parity rule, as two lookup tables built once.
 /// Cheap to copy; the decoder, encoder, survey and the holes writer all read frames through it.
 class FrameCode {

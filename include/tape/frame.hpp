@@ -20,4 +20,7 @@ constexpr bool has_track(Frame f, int track) { return (f >> (track - 1)) & 1U; }
 /// The frame drawn as on tape, tracks 8..4, the feed hole, tracks 3..1: "|o o  .o o|" for ISO '%'.
 std::string holes_picture(Frame f);
 
+/// The frame as a byte in hex: "0x25" for ISO '%' without parity.
+std::string frame_hex(Frame f);
+
 }  // namespace tape

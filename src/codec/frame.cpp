@@ -10,4 +10,9 @@ std::string holes_picture(Frame f) {
     return s;
 }
 
+std::string frame_hex(Frame f) {
+    static constexpr char digits[] = "0123456789ABCDEF";
+    return {'0', 'x', digits[f >> 4], digits[f & 0xF]};
+}
+
 }  // namespace tape

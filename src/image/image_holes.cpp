@@ -133,9 +133,7 @@ public:
                 out += labeler_->bad(f) ? "  ! " : "  ";
                 out += labeler_->next(f);
             } else if (options_.annotate) {
-                FrameKind k = options_.annotate->kind(f);
-                bool bad = k == FrameKind::parity_error || k == FrameKind::not_in_code;
-                out += bad ? "  ! " : "  ";
+                out += is_bad_frame(options_.annotate->kind(f)) ? "  ! " : "  ";
                 out += options_.annotate->label(f);
             }
             out += '\n';

@@ -3,7 +3,6 @@
 #include "tape/align.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <climits>
 #include <string>
 
@@ -23,7 +22,7 @@ using Pairs = std::vector<std::pair<std::int32_t, std::int32_t>>;  // (reference
 // next to a gap of the other.
 int score(Frame a, Frame b) {
     if (a == b) return 4;
-    return std::popcount(static_cast<unsigned>(a ^ b)) == 1 ? -2 : -18;
+    return hole_count(a ^ b) == 1 ? -2 : -18;
 }
 constexpr int gap_open = -8;    // the first frame of a run of gaps
 constexpr int gap_extend = -2;  // each further one
@@ -192,31 +191,31 @@ Pairs pair_up(std::span<const Frame> ref, std::span<const Frame> read, const Ali
     return out;
 }
 
-// Every reference frame's partner in read (or none), from the pairs. Where a read has a frame twice
-// (or the reference lost one of a run), the extra frame goes to the end of the run of equal frames,
-// and so does the gap where the reference read one twice: the same place in every read, one column.
+// partner[k] is the index of frame k's partner on the other side, or none. A frame with no partner
+// (a gap on the other side) just before an equal frame that has one moves to after it, so that the gap
+// of a frame read twice, or lost from a run, stands at the end of the run of equal frames: the same
+// place in every read, one column. A gap next to unpaired frames of the other side is part of a
+// misread stretch, and the last of a run of gaps part of a stretch lost: they stay where they are.
+void gaps_to_end_of_runs(std::span<const Frame> side, std::vector<std::int32_t>& partner) {
+    std::int32_t last = -1;  // the partner of the last paired frame
+    for (std::size_t k = 0; k + 1 < side.size(); ++k) {
+        if (partner[k] == ReadAlignment::none && partner[k + 1] == last + 1 && side[k] == side[k + 1] &&
+            (k == 0 || partner[k - 1] != ReadAlignment::none))
+            std::swap(partner[k], partner[k + 1]);
+        if (partner[k] != ReadAlignment::none) last = partner[k];
+    }
+}
+
+// Every reference frame's partner in read (or none), from the pairs, gaps moved to the ends of runs on
+// both sides (a read that has a frame twice, and a reference that has).
 std::vector<std::int32_t> partners(std::span<const Frame> ref, std::span<const Frame> read, const Pairs& pairs) {
     std::vector<std::int32_t> match(read.size(), ReadAlignment::none);
     for (auto [i, j] : pairs) match[static_cast<std::size_t>(j)] = i;
-    // A gap next to unpaired frames of the other side is part of a misread stretch, and the last of a
-    // run of gaps part of a stretch lost: they stay there.
-    std::int32_t last_i = -1;  // the reference frame of the last paired read frame
-    for (std::size_t j = 0; j + 1 < read.size(); ++j) {
-        if (match[j] == ReadAlignment::none && match[j + 1] != ReadAlignment::none && read[j] == read[j + 1] &&
-            match[j + 1] == last_i + 1 && (j == 0 || match[j - 1] != ReadAlignment::none))
-            std::swap(match[j], match[j + 1]);
-        if (match[j] != ReadAlignment::none) last_i = match[j];
-    }
+    gaps_to_end_of_runs(read, match);
     std::vector<std::int32_t> at(ref.size(), ReadAlignment::none);
     for (std::size_t j = 0; j < read.size(); ++j)
         if (match[j] != ReadAlignment::none) at[static_cast<std::size_t>(match[j])] = static_cast<std::int32_t>(j);
-    std::int32_t last_j = -1;  // the read frame of the last paired reference frame
-    for (std::size_t i = 0; i + 1 < ref.size(); ++i) {
-        if (at[i] == ReadAlignment::none && at[i + 1] != ReadAlignment::none && ref[i] == ref[i + 1] &&
-            at[i + 1] == last_j + 1 && (i == 0 || at[i - 1] != ReadAlignment::none))
-            std::swap(at[i], at[i + 1]);
-        if (at[i] != ReadAlignment::none) last_j = at[i];
-    }
+    gaps_to_end_of_runs(ref, at);
     return at;
 }
 
@@ -327,21 +326,7 @@ ReadAlignment refine(std::span<const std::span<const Frame>> reads, const ReadAl
     const std::size_t n_reads = a.reads();
     ReadAlignment out(n_reads, a.reference());
     for (std::size_t r = 0; r < n_reads; ++r) out.set_shared(r, a.shared(r));
-    auto solid = [&](std::size_t c) {
-        std::int32_t first = ReadAlignment::none;
-        for (std::size_t r = 0; r < n_reads; ++r) {
-            if (!a.covers(r, c)) continue;
-            std::int32_t i = a.frame(c, r);
-            if (i == ReadAlignment::none) return false;
-            if (first == ReadAlignment::none)
-                first = static_cast<std::int32_t>(r);
-            else if (reads[r][static_cast<std::size_t>(i)] !=
-                     reads[static_cast<std::size_t>(first)]
-                          [static_cast<std::size_t>(a.frame(c, static_cast<std::size_t>(first)))])
-                return false;
-        }
-        return true;
-    };
+    auto solid = [&](std::size_t c) { return unanimous(a, reads, c); };
     std::vector<std::int32_t> column(n_reads), lo(n_reads), len(n_reads);
     auto copy = [&](std::size_t c) {
         for (std::size_t r = 0; r < n_reads; ++r) column[r] = a.frame(c, r);
@@ -450,6 +435,17 @@ ReadAlignment merge_substitutions(const ReadAlignment& a) {
 }
 
 }  // namespace
+
+bool unanimous(const ReadAlignment& a, std::span<const std::span<const Frame>> reads, std::size_t column) {
+    std::optional<Frame> first;
+    for (std::size_t r = 0; r < a.reads(); ++r) {
+        if (!a.covers(r, column)) continue;
+        auto f = frame_at(a, reads, column, r);
+        if (!f || (first && *first != *f)) return false;
+        first = f;
+    }
+    return true;
+}
 
 void ReadAlignment::add_column(std::span<const std::int32_t> column) {
     cells_.insert(cells_.end(), column.begin(), column.end());

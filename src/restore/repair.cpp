@@ -2,7 +2,6 @@
 #include "repair.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <string>
 #include <vector>
 
@@ -17,7 +16,7 @@ struct Change {
     Frame with;
 };
 
-Frame frame_at(std::span<const Frame> frames, std::span<const Change> changes, std::size_t i) {
+Frame changed_frame(std::span<const Frame> frames, std::span<const Change> changes, std::size_t i) {
     for (const auto& c : changes)
         if (c.at == i) return c.with;
     return frames[i];
@@ -28,11 +27,11 @@ std::string decoded(const FrameCode& code, std::span<const Frame> frames, std::s
                     std::span<const Change> changes = {}) {
     std::string s;
     for (std::size_t i = from; i < to; ++i) {
-        Frame f = frame_at(frames, changes, i);
+        Frame f = changed_frame(frames, changes, i);
         FrameKind k = code.kind(f);
         if (k == FrameKind::character)
             s += code.character(f);
-        else if (k == FrameKind::parity_error || k == FrameKind::not_in_code)
+        else if (is_bad_frame(k))
             s += bad_frame_marker;
     }
     return s;
@@ -116,8 +115,8 @@ void mark_inferred(RestoreResult& out, RestoreProblem& p, Frame f, std::string r
 // such frames). Blank tape is the grammar that fits there; no reader acts on it.
 bool hole_in_blank_tape(const RestoreResult& out, const RestoreProblem& p, std::size_t first_punched,
                         std::size_t last_punched) {
-    auto holes = [](Frame f) { return std::popcount(static_cast<unsigned>(f)); };
-    if (!std::all_of(p.seen.begin(), p.seen.end(), [&](const std::optional<Frame>& f) { return !f || holes(*f) == 1; }))
+    if (!std::all_of(p.seen.begin(), p.seen.end(),
+                     [&](const std::optional<Frame>& f) { return !f || hole_count(*f) == 1; }))
         return false;
     std::size_t at = static_cast<std::size_t>(*p.frame - 1);
     // Leader or trailer, with a blank frame between it and the punched part (the frame next to it may
@@ -130,8 +129,8 @@ bool hole_in_blank_tape(const RestoreResult& out, const RestoreProblem& p, std::
     if (at < first_punched && blank_between(at + 1, first_punched)) return true;
     if (at > last_punched && last_punched < out.frames.size() && blank_between(last_punched + 1, at)) return true;
     std::size_t l = at, r = at + 1;
-    while (l > 0 && holes(out.frames[l - 1]) == 1) --l;
-    while (r < out.frames.size() && holes(out.frames[r]) == 1) ++r;
+    while (l > 0 && hole_count(out.frames[l - 1]) == 1) --l;
+    while (r < out.frames.size() && hole_count(out.frames[r]) == 1) ++r;
     return (l == 0 || out.frames[l - 1] == blank_frame) && (r == out.frames.size() || out.frames[r] == blank_frame);
 }
 
@@ -198,7 +197,7 @@ void repair_unresolved(RestoreResult& out, std::span<const std::size_t> unresolv
                        Dialect dialect, const FormatSpec* spec) {
     if (dialect == Dialect::automatic) dialect = guess_dialect(decoded(code, out.frames, 0, out.frames.size())).dialect;
     // The first and last frame of more than one hole: what lies outside is leader and trailer.
-    auto punched = [](Frame f) { return std::popcount(static_cast<unsigned>(f)) > 1; };
+    auto punched = [](Frame f) { return hole_count(f) > 1; };
     auto first = std::find_if(out.frames.begin(), out.frames.end(), punched);
     auto last = std::find_if(out.frames.rbegin(), out.frames.rend(), punched);
     const std::size_t first_punched = static_cast<std::size_t>(first - out.frames.begin());

@@ -4,18 +4,13 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 
 #include "repair.hpp"
 
 namespace tape {
 namespace {
 
-bool good(const std::optional<FrameCode>& code, Frame f) {
-    if (!code) return true;
-    FrameKind k = code->kind(f);
-    return k != FrameKind::parity_error && k != FrameKind::not_in_code;
-}
+bool good(const std::optional<FrameCode>& code, Frame f) { return !code || !is_bad_frame(code->kind(f)); }
 
 struct Tally {
     Frame value;
@@ -31,18 +26,14 @@ struct Tally {
 std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<const std::span<const Frame>> reads,
                                             const std::optional<FrameCode>& code) {
     const std::size_t n = a.reads();
-    auto at = [&](std::size_t c, std::size_t r) -> std::optional<Frame> {
-        std::int32_t i = a.frame(c, r);
-        if (i == ReadAlignment::none) return std::nullopt;
-        return reads[r][static_cast<std::size_t>(i)];
-    };
+    auto at = [&](std::size_t c, std::size_t r) { return frame_at(a, reads, c, r); };
     auto backed = [&](std::size_t c, std::size_t r, Frame f) {
         bool others = false, others_good = false;
         for (std::size_t s = 0; s < n; ++s) {
             if (s == r) continue;
             auto g = at(c, s);
             if (!g) continue;
-            if (std::popcount(static_cast<unsigned>(*g ^ f)) <= 1) return true;
+            if (hole_count(*g ^ f) <= 1) return true;
             others = true;
             others_good |= good(code, *g);
         }
@@ -121,18 +112,7 @@ std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, std::span<co
 std::vector<bool> slips_in_several_reads(const ReadAlignment& a, std::span<const std::span<const Frame>> reads) {
     const std::size_t n = a.reads();
     std::vector<bool> out(a.columns(), false);
-    auto solid = [&](std::size_t c) {
-        std::optional<Frame> seen;
-        for (std::size_t r = 0; r < n; ++r) {
-            if (!a.covers(r, c)) continue;
-            std::int32_t i = a.frame(c, r);
-            if (i == ReadAlignment::none) return false;
-            Frame f = reads[r][static_cast<std::size_t>(i)];
-            if (seen && *seen != f) return false;
-            seen = f;
-        }
-        return true;
-    };
+    auto solid = [&](std::size_t c) { return unanimous(a, reads, c); };
     std::vector<bool> slipped(n);
     for (std::size_t c = 0; c < a.columns();) {
         if (solid(c)) {
@@ -166,9 +146,8 @@ std::optional<Frame> leaning(const std::vector<Tally>& tally) {
     std::optional<Frame> out;
     for (const auto& t : tally) {
         if (!t.good || t.count != tally.front().count) continue;
-        bool near = std::any_of(tally.begin(), tally.end(), [&](const Tally& bad) {
-            return !bad.good && std::popcount(static_cast<unsigned>(bad.value ^ t.value)) == 1;
-        });
+        bool near = std::any_of(tally.begin(), tally.end(),
+                                [&](const Tally& bad) { return !bad.good && hole_count(bad.value ^ t.value) == 1; });
         if (!near) continue;
         if (out) return std::nullopt;
         out = t.value;
@@ -212,8 +191,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
     std::size_t punched_from = a.columns(), punched_to = 0;
     for (std::size_t c = 0; c < a.columns(); ++c)
         for (std::size_t r = 0; r < a.reads(); ++r)
-            if (a.frame(c, r) != ReadAlignment::none &&
-                std::popcount(static_cast<unsigned>(reads[r][static_cast<std::size_t>(a.frame(c, r))])) > 1) {
+            if (hole_count(frame_at(a, reads, c, r).value_or(blank_frame)) > 1) {
                 punched_from = std::min(punched_from, c);
                 punched_to = c + 1;
             }
@@ -277,9 +255,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         }
         std::sort(tally.begin(), tally.end(),
                   [](const Tally& x, const Tally& y) { return x.good != y.good ? x.good : x.count > y.count; });
-        Frame reference_value = 0;
-        bool reference_here = a.frame(c, a.reference()) != ReadAlignment::none;
-        if (reference_here) reference_value = reads[a.reference()][static_cast<std::size_t>(a.frame(c, a.reference()))];
+        const std::optional<Frame> reference_frame = frame_at(a, reads, c, a.reference());
         auto problem = [&](FrameStatus s, Frame written, std::string reason, bool dropped) {
             RestoreProblem p;
             p.status = s;
@@ -287,9 +263,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             p.written = written;
             p.reason = std::move(reason);
             for (std::size_t r = 0; r < a.reads(); ++r) {
-                std::int32_t i = a.frame(c, r);
-                p.seen.push_back(i == ReadAlignment::none ? std::nullopt
-                                                          : std::optional(reads[r][static_cast<std::size_t>(i)]));
+                p.seen.push_back(frame_at(a, reads, c, r));
                 p.covered.push_back(a.covers(r, c));
             }
             if (!dropped) p.frame = out.frames.size() + 1;
@@ -297,9 +271,8 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             out.problems.push_back(std::move(p));
         };
         if (tally.empty()) {  // only reads that garbled this stretch have a frame here
-            Frame seen = 0;
-            for (std::size_t r = a.reads(); r-- > 0;)
-                if (a.frame(c, r) != ReadAlignment::none) seen = reads[r][static_cast<std::size_t>(a.frame(c, r))];
+            Frame seen = 0;   // the first read's that has a frame here
+            for (std::size_t r = a.reads(); r-- > 0;) seen = frame_at(a, reads, c, r).value_or(seen);
             FrameStatus s = tangled[c] ? FrameStatus::contested : FrameStatus::extra;
             problem(s, seen,
                     tangled[c] ? "only reads that misread this stretch have a frame here, and more than one read "
@@ -351,7 +324,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
                      "written, as most reads have none";
         } else if (!tally.front().good) {
             s = FrameStatus::unresolved;  // repaired below if exactly one change fits
-            written = reference_here ? reference_value : written;
+            written = reference_frame.value_or(written);
             reason = "no read has a good frame here";
         } else if (tally.size() == 1 && lost == 0 && unheard == 0) {
             s = FrameStatus::clean;
@@ -384,7 +357,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
         } else {
             bool all_differ = present >= 3 && tally.size() == present;
             s = all_differ ? FrameStatus::unstable : FrameStatus::contested;
-            if (reference_here && good(o.code, reference_value)) written = reference_value;
+            if (reference_frame && good(o.code, *reference_frame)) written = *reference_frame;
             reason = all_differ ? "every read saw something else"
                                 : "good readings disagree and nothing decides; the reference read's is written";
             // A reading failing parity one hole from just one of the tied good readings leans to it.
