@@ -3,6 +3,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <span>
 #include <string>
 
 namespace tape {
@@ -19,6 +20,10 @@ constexpr bool has_track(Frame f, int track) { return (f >> (track - 1)) & 1U; }
 
 /// The frame drawn as on tape, tracks 8..4, the feed hole, tracks 3..1: "|o o  .o o|" for ISO '%'.
 std::string holes_picture(Frame f);
+
+/// The frames from the first to the last that is not blank: the tape without its leader and trailer
+/// (empty for blank tape).
+std::span<const Frame> punched_part(std::span<const Frame> frames);
 
 /// The frame as a byte in hex: "0x25" for ISO '%' without parity.
 std::string frame_hex(Frame f);

@@ -10,6 +10,13 @@ std::string holes_picture(Frame f) {
     return s;
 }
 
+std::span<const Frame> punched_part(std::span<const Frame> frames) {
+    std::size_t a = 0, b = frames.size();
+    while (a < b && frames[a] == blank_frame) ++a;
+    while (b > a && frames[b - 1] == blank_frame) --b;
+    return frames.subspan(a, b - a);
+}
+
 std::string frame_hex(Frame f) {
     static constexpr char digits[] = "0123456789ABCDEF";
     return {'0', 'x', digits[f >> 4], digits[f & 0xF]};

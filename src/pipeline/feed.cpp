@@ -10,14 +10,12 @@ std::vector<Frame> image_frames(Input& input, const FeedOptions& o) {
     for (auto chunk = input.next_frames(); !chunk.empty(); chunk = input.next_frames())
         frames.insert(frames.end(), chunk.begin(), chunk.end());
     if (!o.replace_leader && !o.replace_trailer) return frames;
-    auto first = std::find_if(frames.begin(), frames.end(), [](Frame f) { return f != blank_frame; });
-    auto last = std::find_if(frames.rbegin(), std::make_reverse_iterator(first), [](Frame f) {
-                    return f != blank_frame;
-                }).base();
-    std::size_t lead = o.replace_leader ? o.encode.leader : static_cast<std::size_t>(first - frames.begin());
-    std::size_t trail = o.replace_trailer ? o.encode.trailer : static_cast<std::size_t>(frames.end() - last);
+    auto data = punched_part(frames);
+    auto before = static_cast<std::size_t>(data.data() - frames.data());
+    std::size_t lead = o.replace_leader ? o.encode.leader : before;
+    std::size_t trail = o.replace_trailer ? o.encode.trailer : frames.size() - before - data.size();
     std::vector<Frame> out(lead, blank_frame);
-    out.insert(out.end(), first, last);
+    out.insert(out.end(), data.begin(), data.end());
     out.insert(out.end(), trail, blank_frame);
     return out;
 }

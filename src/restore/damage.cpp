@@ -70,15 +70,13 @@ PendingEvent mark_missing(std::vector<Piece>& pieces, DamageKind kind, std::size
 void tear(std::vector<Piece>& pieces, std::size_t first_original, std::span<const Frame> tape, std::size_t torn,
           Random& random, std::vector<PendingEvent>& pending) {
     if (torn == 0) return;
-    auto punched = [](Frame f) { return f != blank_frame; };
-    auto first = std::find_if(tape.begin(), tape.end(), punched);
-    if (first == tape.end()) throw Error(Errc::usage, "the tape has no punched frame: there is no data to tear");
-    auto last = std::find_if(tape.rbegin(), tape.rend(), punched).base() - 1;
-    std::size_t data = static_cast<std::size_t>(last - first) + 1;
+    auto punched = punched_part(tape);
+    if (punched.empty()) throw Error(Errc::usage, "the tape has no punched frame: there is no data to tear");
+    std::size_t data = punched.size();
     if (torn > data)
         throw Error(Errc::usage, "cannot tear " + std::to_string(torn) + " frames out of data only " +
                                      std::to_string(data) + " frames long");
-    std::size_t start = static_cast<std::size_t>(first - tape.begin()) + random.below(data - torn + 1);
+    std::size_t start = static_cast<std::size_t>(punched.data() - tape.data()) + random.below(data - torn + 1);
     pending.push_back(mark_missing(pieces, DamageKind::torn, first_original + start, torn));
 }
 
@@ -258,8 +256,9 @@ std::vector<Frame> damage(std::span<const Frame> tape, const DamageOptions& o, D
     tear(pieces, added, tape, o.torn, random, pending);
     if (added > 0) pending.push_back(PendingEvent{DamageEvent{DamageKind::leader_added, 0, 0, added}, 0});
     if (o.leader < 0) {
-        auto leader = std::find_if(tape.begin(), tape.end(), [](Frame f) { return f != blank_frame; }) - tape.begin();
-        std::size_t removed = std::min(magnitude(o.leader), static_cast<std::size_t>(leader));
+        auto punched = punched_part(tape);
+        auto leader = punched.empty() ? tape.size() : static_cast<std::size_t>(punched.data() - tape.data());
+        std::size_t removed = std::min(magnitude(o.leader), leader);
         if (removed > 0) pending.push_back(mark_missing(pieces, DamageKind::leader_removed, 0, removed));
     }
     cut_ends(pieces, o, pending);

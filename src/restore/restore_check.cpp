@@ -4,16 +4,6 @@
 #include "tape/restore.hpp"
 
 namespace tape {
-namespace {
-
-std::span<const Frame> punched(std::span<const Frame> f) {
-    std::size_t a = 0, b = f.size();
-    while (a < b && f[a] == blank_frame) ++a;
-    while (b > a && f[b - 1] == blank_frame) --b;
-    return f.subspan(a, b - a);
-}
-
-}  // namespace
 
 bool in_doubt(FrameStatus s) {
     using S = FrameStatus;
@@ -22,7 +12,7 @@ bool in_doubt(FrameStatus s) {
 
 RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) {
     RestoreCheck out;
-    auto a = punched(tape), b = punched(r.frames);
+    auto a = punched_part(tape), b = punched_part(r.frames);
     out.exact = std::equal(a.begin(), a.end(), b.begin(), b.end());
     std::vector<std::span<const Frame>> pair{tape, r.frames};
     ReadAlignment al = align_reads(pair);
@@ -33,7 +23,7 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
     std::vector<std::uint64_t> doubted;
     for (const auto& p : r.problems)
         if (!p.frame && in_doubt(p.status)) doubted.push_back(p.after);
-    auto data = punched(tape);
+    auto data = punched_part(tape);
     const auto first = static_cast<std::int64_t>(data.data() - tape.data());
     const auto last = first + static_cast<std::int64_t>(data.size()) - 1;  // the last punched frame
     auto matched = [&](std::size_t c) {
