@@ -230,6 +230,16 @@ std::string format_choices(bool for_writing) {
 
 CLI::Validator format_check(bool for_writing) { return CLI::IsMember(format_ids(for_writing)); }
 
+const tape::ImageFormat& output_format(const std::string& format_id, const std::string& path) {
+    const tape::ImageFormat* format = format_id.empty() ? nullptr : tape::find_image_format(format_id);
+    if (!format && path != "-") format = tape::image_format_for_path(path);
+    if (!format) format = &tape::default_image_format();
+    if (!format->can_write())
+        fail(path, tape::Errc::usage,
+             std::string(format->id) + " images can only be read; write " + format_choices(true));
+    return *format;
+}
+
 void refuse_binary_terminal(const std::string& path, bool binary, bool force) {
     if ((path.empty() || path == "-") && binary && ::isatty(STDOUT_FILENO) && !force)
         fail("", tape::Errc::usage,

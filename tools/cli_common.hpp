@@ -105,6 +105,10 @@ std::string format_choices(bool for_writing);
 std::vector<std::string> format_ids(bool for_writing);
 CLI::Validator format_check(bool for_writing);
 
+/// The image format to write OUT in: --format, else by OUT's extension, else raw; fails (usage) for a
+/// format that can only be read.
+const tape::ImageFormat& output_format(const std::string& format_id, const std::string& path);
+
 /// Fails (usage) when a binary image would go to standard output on a terminal without --force.
 void refuse_binary_terminal(const std::string& path, bool binary, bool force);
 

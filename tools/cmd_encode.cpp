@@ -35,13 +35,8 @@ void run(const EncodeArgs& a) {
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
     if (tape::is_five_track(o.code) && o.parity != tape::Parity::even)
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; 5-track codes carry none");
-    const tape::ImageFormat* format = a.format.empty() ? nullptr : tape::find_image_format(a.format);
-    if (!format && a.output != "-") format = tape::image_format_for_path(a.output);
-    if (!format) format = &tape::default_image_format();
-    if (!format->can_write())
-        fail(a.output, tape::Errc::usage,
-             std::string(format->id) + " images can only be read; write " + format_choices(true));
-    refuse_binary_terminal(a.output, format->binary, a.force);
+    const tape::ImageFormat& format = output_format(a.format, a.output);
+    refuse_binary_terminal(a.output, format.binary, a.force);
     tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
     std::unique_ptr<tape::Encoder> made;
     try {
@@ -49,7 +44,7 @@ void run(const EncodeArgs& a) {
     } catch (const tape::Error& e) {
         fail(a.label.empty() ? in_name : "--label", e);
     }
-    auto writer = format->make_writer(tape::ImageWriteOptions{&code});
+    auto writer = format.make_writer(tape::ImageWriteOptions{&code});
     std::string picture;
     std::unique_ptr<tape::FileSource> source;
     try {
@@ -71,7 +66,7 @@ void run(const EncodeArgs& a) {
             }
         }
         try {
-            if (format->bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
+            if (format.bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
                 out->write(std::string_view(reinterpret_cast<const char*>(frames.data()), frames.size()));
                 return;
             }
@@ -116,8 +111,7 @@ void run(const EncodeArgs& a) {
     } catch (const tape::Error& e) {
         fail(a.output == "-" ? "stdout" : a.output, e);
     }
-    if (globals().verbosity > 0)
-        say(in_name, std::to_string(written) + " frames written as " + std::string(format->id));
+    if (globals().verbosity > 0) say(in_name, std::to_string(written) + " frames written as " + std::string(format.id));
 }
 
 }  // namespace

@@ -25,14 +25,8 @@ void run(const LabelArgs& a) {
         fail("label", e);
     }
     frames.insert(frames.end(), tape::label_blank_around, tape::blank_frame);
-    const tape::ImageFormat* format = a.format.empty() ? nullptr : tape::find_image_format(a.format);
-    if (!format && a.output != "-") format = tape::image_format_for_path(a.output);
-    if (!format) format = &tape::default_image_format();
-    if (!format->can_write())
-        fail(a.output, tape::Errc::usage,
-             std::string(format->id) + " images can only be read; write " + format_choices(true));
-    refuse_binary_terminal(a.output, format->binary, a.force);
-    write_output(a.output, format->write(frames, tape::ImageWriteOptions{&frame_code}), format->binary, a.force);
+    const tape::ImageFormat& format = output_format(a.format, a.output);
+    write_output(a.output, format.write(frames, tape::ImageWriteOptions{&frame_code}), format.binary, a.force);
 }
 
 }  // namespace

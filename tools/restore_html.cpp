@@ -9,29 +9,6 @@
 namespace cli {
 namespace {
 
-std::string escaped(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
-}
-
 // Decided frames are right now; the others are what a person must look at.
 tape::MarkKind mark_for(tape::FrameStatus s) {
     return s == tape::FrameStatus::voted || s == tape::FrameStatus::inferred ? tape::MarkKind::restored
@@ -65,17 +42,18 @@ std::string restore_report_html(const RestoreReportInput& in) {
     std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
     // Nothing may be fetched or run: the page is read where no network is.
     s += "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'\">\n";
-    s += "<title>" + escaped(title) + "</title>\n<style>\n" + std::string(style) + "</style>\n</head>\n<body>\n";
-    s += "<h1>" + escaped(title) + "</h1>\n<section id=\"summary\">\n<p>" + std::to_string(r.frames.size()) +
-         " frames restored, code " + escaped(in.code_text) + ", aligned to read " + std::to_string(r.reference + 1) +
-         ". " +
+    s += "<title>" + tape::xml_escaped(title) + "</title>\n<style>\n" + std::string(style) +
+         "</style>\n</head>\n<body>\n";
+    s += "<h1>" + tape::xml_escaped(title) + "</h1>\n<section id=\"summary\">\n<p>" + std::to_string(r.frames.size()) +
+         " frames restored, code " + tape::xml_escaped(in.code_text) + ", aligned to read " +
+         std::to_string(r.reference + 1) + ". " +
          (r.complete() ? "Every frame is clean, voted or inferred."
                        : "<strong>Not every frame could be decided:</strong> see the doubtful frames below.") +
          "</p>\n<table id=\"reads\">\n<tr><th>read</th><th>file</th><th>frames</th><th>shared with the "
          "reference</th></tr>\n";
     for (std::size_t i = 0; i < in.names.size(); ++i)
-        s += "<tr><td>" + std::to_string(i + 1) + "</td><td>" + escaped(display_name(in.names[i])) + "</td><td>" +
-             std::to_string(in.sizes[i]) + "</td><td>" + percent(r.shared[i]) + "</td></tr>\n";
+        s += "<tr><td>" + std::to_string(i + 1) + "</td><td>" + tape::xml_escaped(display_name(in.names[i])) +
+             "</td><td>" + std::to_string(in.sizes[i]) + "</td><td>" + percent(r.shared[i]) + "</td></tr>\n";
     s += "</table>\n<table id=\"counts\">\n<tr>";
     for (std::size_t k = 0; k < tape::frame_status_count; ++k)
         s += "<th>" + std::string(tape::status_name(static_cast<tape::FrameStatus>(k))) + "</th>";
@@ -85,10 +63,11 @@ std::string restore_report_html(const RestoreReportInput& in) {
     s += "</tr>\n</table>\n</section>\n";
 
     // The tape, each problem frame marked with its status and reason as the mark's tooltip.
+    auto on_tape = [&](std::uint64_t frame) { return frame >= 1 && frame <= r.frames.size(); };
     tape::RenderOptions o;
     o.code = in.code ? &*in.code : nullptr;
     for (const auto& p : r.problems)
-        if (p.frame && *p.frame >= 1 && *p.frame <= r.frames.size())
+        if (p.frame && on_tape(*p.frame))
             o.marks.push_back({*p.frame, mark_for(p.status), std::string(tape::status_name(p.status)) + ": " + p.reason,
                                "#p" + std::to_string(*p.frame)});
     if (auto label = tape::find_label(r.frames)) {
@@ -104,29 +83,28 @@ std::string restore_report_html(const RestoreReportInput& in) {
     for (std::size_t i = 0; i < in.names.size(); ++i) s += "<th>read " + std::to_string(i + 1) + "</th>";
     s += "<th>written</th><th>reason</th></tr>\n";
     for (const auto& p : r.problems) {
-        bool on_tape = p.frame && *p.frame >= 1 && *p.frame <= r.frames.size();
         std::string where = p.frame ? std::to_string(*p.frame) : "after " + std::to_string(p.after);
         std::uint64_t target = p.frame ? *p.frame : p.after;
         s += "<tr class=\"" +
              std::string(p.status == tape::FrameStatus::extra             ? "extra"
                          : mark_for(p.status) == tape::MarkKind::restored ? "restored"
                                                                           : "doubtful") +
-             "\"" + (on_tape ? " id=\"p" + std::to_string(*p.frame) + "\"" : "") + "><td>";
-        s += target >= 1 && target <= r.frames.size()
-                 ? "<a href=\"#f" + std::to_string(target) + "\">" + escaped(where) + "</a>"
-                 : escaped(where);
+             "\"" + (p.frame && on_tape(*p.frame) ? " id=\"p" + std::to_string(*p.frame) + "\"" : "") + "><td>";
+        s += on_tape(target) ? "<a href=\"#f" + std::to_string(target) + "\">" + tape::xml_escaped(where) + "</a>"
+                             : tape::xml_escaped(where);
         s += "</td><td>" + (p.line ? std::to_string(*p.line) : "") + "</td><td>" +
              (p.frame ? centimetres(*p.frame) : "") + "</td><td class=\"status\">" +
              std::string(tape::status_name(p.status)) + "</td>";
         for (std::size_t i = 0; i < p.seen.size(); ++i)
             s += "<td><code>" +
-                 (p.seen[i]      ? escaped(frame_text(in.code, *p.seen[i]))
+                 (p.seen[i]      ? tape::xml_escaped(frame_text(in.code, *p.seen[i]))
                   : p.covered[i] ? "none"
                                  : "not read") +
                  "</code></td>";
         s += "<td><code>" +
-             (p.status == tape::FrameStatus::missing ? std::string("-") : escaped(frame_text(in.code, p.written))) +
-             "</code></td><td>" + escaped(p.reason) + "</td></tr>\n";
+             (p.status == tape::FrameStatus::missing ? std::string("-")
+                                                     : tape::xml_escaped(frame_text(in.code, p.written))) +
+             "</code></td><td>" + tape::xml_escaped(p.reason) + "</td></tr>\n";
     }
     s += "</table>\n";
     if (r.problems.empty()) s += "<p>No problem frames.</p>\n";

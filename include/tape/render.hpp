@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tape/code.hpp"
@@ -20,6 +21,9 @@ enum class MarkKind : std::uint8_t {
 };
 /// "parity error", "restored", "doubtful": the legend's words.
 std::string_view mark_name(MarkKind kind);
+
+/// s with & < > " as entities: for text and attribute values in SVG and the HTML pages around it.
+std::string xml_escaped(std::string_view s);
 
 /// A frame to highlight, besides the bad frames the renderer finds itself.
 struct FrameMark {

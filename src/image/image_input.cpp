@@ -96,11 +96,11 @@ CodeDetection ImageInput::detect(const CodeTable* eia_table) {
 const std::optional<LeaderLabel>& ImageInput::label() {
     if (label_checked_ || given_any_) return label_;
     label_checked_ = true;
-    auto first_punched = [&] { return std::find_if(ahead_.begin(), ahead_.end(), [](Frame f) { return f != 0; }); };
+    std::size_t first = 0;  // the leader's first punched frame; the frames before it are not looked at again
     for (;;) {
-        auto p = first_punched();
-        if (p != ahead_.end() && static_cast<std::size_t>(ahead_.end() - p) > label_search_frames) break;
-        if (p == ahead_.end() && ahead_.size() >= detection_limit) break;  // an endless leader holds no label
+        while (first < ahead_.size() && ahead_[first] == blank_frame) ++first;
+        if (first < ahead_.size() && ahead_.size() - first > label_search_frames) break;
+        if (first == ahead_.size() && ahead_.size() >= detection_limit) break;  // an endless leader holds no label
         if (!fill() && ended_) break;
     }
     label_ = find_label(ahead_);

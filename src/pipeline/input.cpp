@@ -142,11 +142,9 @@ const CodeDetection& Input::detect() {
 bool Input::next_text(DecodeResult& out) {
     if (ended_) return false;
     if (image_) {
-        if (!decoder_) {
-            decoder_ = std::make_unique<Decoder>(decode_options());
-            image_->label();  // looked for before the first frames go
-        }
-        auto frames = without_label(image_->next(), decoded_frames_, image_->label(), unlabelled_);
+        if (!decoder_) decoder_ = std::make_unique<Decoder>(decode_options());
+        const auto& label = image_->label();  // before next(): it is looked for in the read-ahead
+        auto frames = without_label(image_->next(), decoded_frames_, label, unlabelled_);
         decoded_frames_ += frames.size();
         if (frames.empty()) {
             ended_ = true;

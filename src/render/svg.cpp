@@ -99,6 +99,12 @@ std::string frame_text(const FrameCode& code, Frame f) {
 
 }  // namespace
 
+std::string xml_escaped(std::string_view s) {
+    std::string out;
+    put_escaped(out, s);
+    return out;
+}
+
 std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
     std::uint64_t last = o.to ? o.to : frames.size();
     if (o.from > last && last <= frames.size())
