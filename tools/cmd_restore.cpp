@@ -18,10 +18,8 @@ struct RestoreArgs {
 void run(const RestoreArgs& a) {
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
-    const tape::ImageFormat* out_format =
-        a.format.empty() ? tape::image_format_for_path(a.output) : tape::find_image_format(a.format);
-    if (!out_format || !out_format->can_write()) out_format = &tape::default_image_format();
-    refuse_binary_terminal(a.output, out_format->binary, a.force);
+    const tape::ImageFormat& out_format = output_format(a.format, a.output);
+    refuse_binary_terminal(a.output, out_format.binary, a.force);
     std::vector<TapeInput> reads;
     for (const auto& path : a.reads) reads.push_back(read_tape(path, ""));
     RestoreReportInput report;
@@ -44,7 +42,7 @@ void run(const RestoreArgs& a) {
     // The image first: it is what the run is for, and it is written even when not every frame was restored.
     tape::ImageWriteOptions wo;
     if (report.code) wo.annotate = &*report.code;
-    write_output(a.output, out_format->write(result.frames, wo), out_format->binary, a.force);
+    write_output(a.output, out_format.write(result.frames, wo), out_format.binary, a.force);
     std::string text = a.json ? restore_report_json(report) : restore_report_text(report);
     write_output(a.report.empty() ? "-" : a.report, text, false, a.force);
     if (!a.html.empty()) write_output(a.html, restore_report_html(report), false, a.force);

@@ -41,16 +41,6 @@ tape::DamageOptions damage_options(const DamageArgs& a) {
     return o;
 }
 
-const tape::ImageFormat& output_format(const DamageArgs& a) {
-    const tape::ImageFormat* format = a.format.empty() ? nullptr : tape::find_image_format(a.format);
-    if (!format && a.output != "-") format = tape::image_format_for_path(a.output);
-    if (!format) format = &tape::default_image_format();
-    if (!format->can_write())
-        fail(a.output, tape::Errc::usage,
-             std::string(format->id) + " images can only be read; write " + cli::format_choices(true));
-    return *format;
-}
-
 // A holes picture names each frame's character in the code the undamaged tape reads in, so that the damage
 // stands out against it (a frame failing that code's parity is marked).
 std::string image_text(const tape::ImageFormat& format, std::span<const tape::Frame> original,
@@ -83,7 +73,7 @@ void refuse_existing(const std::string& path, bool force) {
 
 void run(const DamageArgs& a) {
     if (a.output == "-" && a.log == "-") fail("", tape::Errc::usage, "-o and --log cannot both be standard output");
-    const tape::ImageFormat& format = output_format(a);
+    const tape::ImageFormat& format = cli::output_format(a.format, a.output);
     tape::DamageOptions options = damage_options(a);
     try {
         tape::check_damage_options(options);

@@ -133,8 +133,7 @@ std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
         for (std::size_t i = 0; i < drawn.size(); ++i) {
             auto k = o.code->kind(drawn[i]);
             // A frame the caller marked is said by its mark (a restoration's verdict says more).
-            if ((k == FrameKind::parity_error || k == FrameKind::not_in_code) && !marks.contains(o.from + i) &&
-                !in_label(o.from + i))
+            if (is_bad_frame(k) && !marks.contains(o.from + i) && !in_label(o.from + i))
                 found.push_back({o.from + i, MarkKind::parity,
                                  k == FrameKind::parity_error ? "parity error" : "not a character of the code"});
         }
