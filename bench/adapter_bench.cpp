@@ -5,9 +5,7 @@
 // drops one ROWS packet for good and times how long the host takes to report its frame range.
 // Run: build/bin/adapter_bench
 #include <benchmark/benchmark.h>
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,10 +16,9 @@
 #include <thread>
 #include <vector>
 
+#include "spawn_util.hpp"
 #include "tape/device.hpp"
 #include "tape/error.hpp"
-
-extern char** environ;
 
 namespace {
 
@@ -31,16 +28,7 @@ struct Sim {
     pid_t pid = -1;
     std::string device;
     Sim(const std::vector<std::string>& args, const std::string& out) {
-        std::vector<std::string> argv_s = {TAPE_ADAPTER_SIM};
-        argv_s.insert(argv_s.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (auto& a : argv_s) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        posix_spawn_file_actions_t fa;
-        posix_spawn_file_actions_init(&fa);
-        posix_spawn_file_actions_addopen(&fa, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (posix_spawn(&pid, argv[0], &fa, nullptr, argv.data(), environ) != 0) pid = -1;
-        posix_spawn_file_actions_destroy(&fa);
+        pid = spawn_to_files(TAPE_ADAPTER_SIM, args, out, "");
         for (auto end = std::chrono::steady_clock::now() + 10s; pid > 0 && std::chrono::steady_clock::now() < end;) {
             std::ifstream in(out);
             std::getline(in, device);

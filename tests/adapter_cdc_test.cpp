@@ -1,14 +1,13 @@
 // The adapter: backend end to end: the real tape-adapter-sim process (the firmware core with a
 // simulated reader and punch) on a real pseudo-terminal, the library's Transport and the tape CLI on
 // the other side, with every fault the simulator can inject.
-#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
 #include <fstream>
 #include <thread>
 
@@ -26,18 +25,7 @@ namespace {
 class Sim {
 public:
     Sim(const TempDir& dir, std::vector<std::string> args) : dir_(dir) {
-        std::vector<std::string> argv_s = {TAPE_ADAPTER_SIM};
-        argv_s.insert(argv_s.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (auto& a : argv_s) argv.push_back(a.data());
-        argv.push_back(nullptr);
-        posix_spawn_file_actions_t fa;
-        posix_spawn_file_actions_init(&fa);
-        posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-        posix_spawn_file_actions_addopen(&fa, 1, dir.file("sim.out").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_addopen(&fa, 2, dir.file("sim.err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (posix_spawn(&pid_, argv[0], &fa, nullptr, argv.data(), environ) != 0) pid_ = -1;
-        posix_spawn_file_actions_destroy(&fa);
+        pid_ = spawn_to_files(TAPE_ADAPTER_SIM, args, dir.file("sim.out"), dir.file("sim.err"));
         // It prints its device string once the pseudo-terminal is there.
         auto end = std::chrono::steady_clock::now() + 10s;
         while (pid_ > 0 && std::chrono::steady_clock::now() < end) {
@@ -57,19 +45,13 @@ public:
     int stop() {
         if (pid_ <= 0) return status_;
         ::kill(pid_, SIGTERM);
-        auto end = std::chrono::steady_clock::now() + 5s;
-        int status = 0;
-        while (std::chrono::steady_clock::now() < end) {
-            if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-                pid_ = -1;
-                return status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-            }
-            std::this_thread::sleep_for(5ms);
+        auto status = wait_for_exit(pid_, 5s);
+        if (!status) {
+            ::kill(pid_, SIGKILL);
+            ::waitpid(pid_, nullptr, 0);
         }
-        ::kill(pid_, SIGKILL);
-        ::waitpid(pid_, nullptr, 0);
         pid_ = -1;
-        return status_ = -1;
+        return status_ = status && WIFEXITED(*status) ? WEXITSTATUS(*status) : -1;
     }
     std::string err() const { return read_text(dir_.file("sim.err")); }
 
@@ -106,18 +88,24 @@ struct ReadOutcome {
     std::chrono::steady_clock::duration took{};
 };
 
+// Reads through t into rows until they number want, the tape ends or the deadline passes.
+void read_until(tape::Transport& t, std::vector<std::uint8_t>& rows, std::chrono::steady_clock::time_point deadline,
+                std::size_t want = SIZE_MAX) {
+    std::uint8_t buf[4096];
+    while (rows.size() < want && std::chrono::steady_clock::now() < deadline) {
+        auto got = t.read(buf, 100ms);
+        rows.insert(rows.end(), buf, buf + got.count);
+        if (got.end) break;
+    }
+}
+
 // Reads through the library's Transport, as tape read does, until the end, an error or the deadline.
 ReadOutcome read_all(const std::string& device, std::chrono::seconds limit = 60s) {
     ReadOutcome r;
     auto start = std::chrono::steady_clock::now();
     try {
         auto t = tape::open_device(device, tape::DeviceUse::read);
-        std::uint8_t buf[4096];
-        while (std::chrono::steady_clock::now() - start < limit) {
-            auto got = t->read(buf, 100ms);
-            r.rows.insert(r.rows.end(), buf, buf + got.count);
-            if (got.end) break;
-        }
+        read_until(*t, r.rows, start + limit);
     } catch (const tape::Error& e) {
         r.error = e.what();
     }
@@ -227,12 +215,7 @@ TEST(AdapterCdc, ASecondRunOnTheSameAdapterStartsInStep) {
     std::vector<std::uint8_t> first;
     {
         auto t = tape::open_device(sim.device, tape::DeviceUse::read);
-        std::uint8_t buf[512];
-        auto end = std::chrono::steady_clock::now() + 10s;
-        while (first.size() < 1000 && std::chrono::steady_clock::now() < end) {
-            auto got = t->read(buf, 100ms);
-            first.insert(first.end(), buf, buf + got.count);
-        }
+        read_until(*t, first, std::chrono::steady_clock::now() + 10s, 1000);
     }
     auto r = read_all(sim.device);
     EXPECT_EQ(r.error, "");
@@ -371,19 +354,11 @@ TEST(AdapterCdc, AStalledHostIsStoppedByTheWatchdogAndToldSo) {
     std::string error;
     try {
         auto t = tape::open_device(sim.device, tape::DeviceUse::read);
-        std::uint8_t buf[512];
         auto end = std::chrono::steady_clock::now() + 10s;
-        while (got.size() < 300 && std::chrono::steady_clock::now() < end) {
-            auto r = t->read(buf, 100ms);
-            got.insert(got.end(), buf, buf + r.count);
-        }
+        read_until(*t, got, end, 300);
         // The host stalls for 0.8 s: the adapter's watchdog (500 ms) stops the reader.
         std::this_thread::sleep_for(800ms);
-        while (std::chrono::steady_clock::now() < end) {
-            auto r = t->read(buf, 100ms);
-            got.insert(got.end(), buf, buf + r.count);
-            if (r.end) break;
-        }
+        read_until(*t, got, end);
     } catch (const tape::Error& e) {
         error = e.what();
     }

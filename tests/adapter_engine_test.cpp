@@ -53,6 +53,12 @@ struct Bench {
         p.type = static_cast<std::uint8_t>(type);
         return send(p);
     }
+    /// ACK of every row before frame.
+    std::uint8_t ack(std::size_t frame) {
+        Packet p;
+        FrameNumber{static_cast<std::uint32_t>(frame)}.encode(p, Msg::ack);
+        return send(p);
+    }
     /// Runs the virtual clock on by us microseconds in steps of 100.
     void run(std::uint64_t us) {
         std::uint64_t end = hw.now() + us;
@@ -117,9 +123,7 @@ TEST(AdapterEngine, ReadsAWholeTapeAtTheReadersSpeedThenTapeOut) {
     for (int ms = 0; ms < 10000 && !out; ms += 10) {
         b.run(10000);
         ASSERT_TRUE(take_rows(b, got)) << "gap or overlap at " << got.size();
-        Packet ack;
-        FrameNumber{static_cast<std::uint32_t>(got.size())}.encode(ack, Msg::ack);
-        b.send(ack);
+        b.ack(got.size());
         if (auto s = b.take(Msg::status)) {
             Status st;
             ASSERT_TRUE(st.decode(*s));
@@ -147,18 +151,14 @@ TEST(AdapterEngine, AHostThatDoesNotAcknowledgeStopsTheReaderWithNothingLost) {
     for (int i = 0; i < 90; ++i) {
         b.run(10000);
         ASSERT_TRUE(take_rows(b, got));
-        Packet echo;
-        echo.type = static_cast<std::uint8_t>(Msg::echo);
-        b.send(echo);  // keeps the watchdog quiet without acknowledging
+        b.send(Msg::echo);  // keeps the watchdog quiet without acknowledging
     }
     EXPECT_LE(got.size(), Engine::read_ring);
     EXPECT_GE(got.size(), Engine::read_ring - Engine::stop_margin);
     EXPECT_EQ(b.hw.drive_state(), Drive::stop);
     EXPECT_EQ(b.engine.rows_read(), got.size());
     for (int i = 0; i < 500 && got.size() < tape.size(); ++i) {
-        Packet ack;
-        FrameNumber{static_cast<std::uint32_t>(got.size())}.encode(ack, Msg::ack);
-        b.send(ack);
+        b.ack(got.size());
         b.run(10000);
         ASSERT_TRUE(take_rows(b, got));
     }
@@ -177,9 +177,7 @@ TEST(AdapterEngine, ResendGivesTheRowsAgainFromAFrame) {
     std::vector<std::uint8_t> got;
     ASSERT_TRUE(take_rows(b, got));
     ASSERT_GE(got.size(), 120u);
-    Packet ack;
-    FrameNumber{50}.encode(ack, Msg::ack);
-    b.send(ack);
+    b.ack(50);
     Packet resend;
     FrameNumber{100}.encode(resend, Msg::resend);
     b.send(resend);
@@ -213,9 +211,7 @@ TEST(AdapterEngine, TornTapeIsReportedAtItsFrame) {
     for (int i = 0; i < 200 && !torn; ++i) {
         b.run(10000);
         ASSERT_TRUE(take_rows(b, got));
-        Packet ack;
-        FrameNumber{static_cast<std::uint32_t>(got.size())}.encode(ack, Msg::ack);
-        b.send(ack);
+        b.ack(got.size());
         if (auto s = b.take(Msg::status)) {
             Status st;
             st.decode(*s);
@@ -241,9 +237,7 @@ TEST(AdapterEngine, MaxRowsStopsTheReaderAndItsStoppingDistanceIsStillRead) {
     for (int i = 0; i < 100; ++i) {
         b.run(20000);
         ASSERT_TRUE(take_rows(b, got));
-        Packet ack;
-        FrameNumber{static_cast<std::uint32_t>(got.size())}.encode(ack, Msg::ack);
-        b.send(ack);
+        b.ack(got.size());
     }
     auto s = b.take(Msg::status);
     ASSERT_TRUE(s);
@@ -453,9 +447,7 @@ TEST(AdapterEngine, ARateBelowTheReadersIsKeptByStartingAndStopping) {
     for (int i = 0; i < 200; ++i) {  // 2 s
         b.run(10000);
         ASSERT_TRUE(take_rows(b, got));
-        Packet ack;
-        FrameNumber{static_cast<std::uint32_t>(got.size())}.encode(ack, Msg::ack);
-        b.send(ack);
+        b.ack(got.size());
     }
     // 300 rows a second for two seconds, give or take a stopping distance each second.
     EXPECT_GE(got.size(), 590u);

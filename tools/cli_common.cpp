@@ -55,6 +55,22 @@ void install_output_cleanup() {
     for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) ::sigaction(sig, &sa, nullptr);
 }
 
+int parse_and_run(CLI::App& app, int argc, char** argv, const std::string& help) {
+    const std::string& program = globals().program;
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {  // --help, --help-all, --version
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << program << ": " << e.what() << "\n"
+                  << program << ": run " << (help.empty() ? "'" + program + " --help'" : help) << " for the options\n";
+        return usage;
+    } catch (const Exit& e) {
+        return e.status;
+    }
+    return ok;
+}
+
 void say(const std::string& file, const std::string& message) {
     // Bytes from the input reach messages: a terminal must not act on them or hide them.
     std::cerr << globals().program << ": " << tape::visible(file.empty() ? "" : file + ": ") << tape::visible(message)

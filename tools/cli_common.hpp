@@ -47,6 +47,11 @@ Globals& globals();
 /// signal would. Device runs replace this with their own stop flag.
 void install_output_cleanup();
 
+/// main()'s end for every program of the toolkit: parses argv and runs what it calls. --help and
+/// --version are answered; a usage error is said as "PROGRAM: what" then "PROGRAM: run HELP for the
+/// options" (HELP defaults to 'PROGRAM --help'), with status usage; Exit ends with its status.
+int parse_and_run(CLI::App& app, int argc, char** argv, const std::string& help = "");
+
 /// "tape: FILE: WHERE: message" on stderr (the program's name first).
 void say(const std::string& file, const std::string& message);
 /// Prints the error as above and throws Exit with its status.

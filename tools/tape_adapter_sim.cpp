@@ -222,18 +222,5 @@ int main(int argc, char** argv) {
     sigaction(SIGINT, &sa, nullptr);
     sigaction(SIGTERM, &sa, nullptr);
     signal(SIGPIPE, SIG_IGN);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "tape-adapter-sim: " << e.what()
-                  << "\ntape-adapter-sim: run 'tape-adapter-sim --help' for the options\n";
-        return cli::usage;
-    } catch (const cli::Exit& e) {
-        return e.status;
-    }
-    return cli::ok;
+    return cli::parse_and_run(app, argc, argv);
 }

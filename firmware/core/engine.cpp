@@ -76,22 +76,13 @@ void Engine::poll() {
     if (reading_) {
         std::uint32_t read = head_ - start_frame_;
         if (lines & (status::tape_out | status::motor_fault | status::offline)) {
-            reading_ = false;
-            set_drive(false);
-            send_rows(true);
-            send_status(0, head_);
+            end_read(0);
             last_status_ = lines;
         } else if (max_rows_ && read >= max_rows_) {
-            reading_ = false;
-            set_drive(false);
-            send_rows(true);
-            send_status(status::read_done, head_);
+            end_read(status::read_done);
         } else if (driving_ &&
                    elapsed(now, last_row_us_, static_cast<std::uint32_t>(config_.sprocket_timeout_ms) * 1000)) {
-            reading_ = false;
-            set_drive(false);
-            send_rows(true);
-            send_status(status::torn, head_);
+            end_read(status::torn);
         } else {
             if (elapsed(now, window_start_us_, 1000000)) {
                 window_start_us_ = now;
@@ -314,6 +305,14 @@ void Engine::set_drive(bool on) {
     driving_ = on;
     if (on) last_row_us_ = hw_.now_us();  // the sprocket time-out counts from the start
     hw_.drive(on ? (reverse_ ? Drive::reverse : Drive::forward) : Drive::stop);
+}
+
+void Engine::end_read(std::uint16_t event_bits) {
+    reading_ = false;
+    set_drive(false);
+    // The rows still held go out before the STATUS that ends the run.
+    send_rows(true);
+    send_status(event_bits, head_);
 }
 
 void Engine::stop_all() {

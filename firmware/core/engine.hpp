@@ -105,6 +105,8 @@ private:
     void send_rows(bool partial);
     void set_drive(bool on);
     void stop_all();
+    /// Ends a read run: the reader stopped, the rows held sent, then STATUS with event_bits.
+    void end_read(std::uint16_t event_bits);
     std::uint16_t status_bits();
     std::uint32_t read_free() const { return static_cast<std::uint32_t>(read_ring) - (head_ - base_); }
     std::uint32_t punch_queued() const { return punch_next_ - punch_tail_; }

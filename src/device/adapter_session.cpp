@@ -190,14 +190,7 @@ void Session::handle_rows(const Packet& p) {
         // Rows missing before these: asked for again, these dropped (the resend brings them too).
         // The missing rows end where the first packet seen after them starts.
         gap_end_ = std::min(gap_end_.value_or(r.first), r.first);
-        if (gap_tries_ == 0) {
-            gap_first_ = expected_;
-            gap_tries_ = 1;
-            gap_asked_ = clock::now();
-            Packet q;
-            tapefw::FrameNumber{expected_}.encode(q, Msg::resend);
-            send(q);
-        }
+        if (gap_tries_ == 0) start_gap();
         return;
     }
     std::uint32_t end = r.first + r.count;
@@ -226,12 +219,7 @@ void Session::handle_status(const Packet& p) {
         // Rows before the end not here yet: they are asked for as a gap.
         if (expected_ < s.frame && gap_tries_ == 0) {
             gap_end_ = s.frame;
-            gap_first_ = expected_;
-            gap_tries_ = 1;
-            gap_asked_ = clock::now();
-            Packet q;
-            tapefw::FrameNumber{expected_}.encode(q, Msg::resend);
-            send(q);
+            start_gap();
         }
         return;
     }
@@ -257,14 +245,7 @@ void Session::check_gap() {
     std::uint64_t bad = pipe_->bad_packets();
     if (bad != bad_seen_) {
         bad_seen_ = bad;
-        if (reading_ && gap_tries_ == 0) {
-            gap_first_ = expected_;
-            gap_tries_ = 1;
-            gap_asked_ = clock::now();
-            Packet q;
-            tapefw::FrameNumber{expected_}.encode(q, Msg::resend);
-            send(q);
-        }
+        if (reading_ && gap_tries_ == 0) start_gap();
     }
     if (!gap_tries_ || clock::now() - gap_asked_ < t_.resend_after) return;
     if (!gap_end_ && !end_at_ && !pending_) {
@@ -278,6 +259,16 @@ void Session::check_gap() {
                                  " lost: not received after " + std::to_string(gap_tries_) +
                                  " requests to resend (CRC failures or a bad link)");
     ++gap_tries_;
+    ask_resend();
+}
+
+void Session::start_gap() {
+    gap_first_ = expected_;
+    gap_tries_ = 1;
+    ask_resend();
+}
+
+void Session::ask_resend() {
     gap_asked_ = clock::now();
     Packet q;
     tapefw::FrameNumber{expected_}.encode(q, Msg::resend);

@@ -133,6 +133,10 @@ private:
     void pump(std::chrono::milliseconds wait);
     void keep_alive();
     void check_gap();
+    /// The first request to resend from expected_ for a gap from there.
+    void start_gap();
+    /// RESEND from expected_, timed for check_gap's next try.
+    void ask_resend();
     [[noreturn]] void fail(std::uint64_t frame, const std::string& what) const;
 };
 

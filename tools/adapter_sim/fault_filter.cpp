@@ -22,13 +22,13 @@ void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& ou
         if (p.type == static_cast<std::uint8_t>(tapefw::Msg::info) && f_.protocol >= 0) {
             p.payload[0] = static_cast<std::uint8_t>(f_.protocol);
         }
-        if (p.type != static_cast<std::uint8_t>(tapefw::Msg::rows)) {
+        tapefw::Rows rows;
+        if (!rows.decode(p)) {  // not ROWS: passed as it is
             emit(p, out, false);
             continue;
         }
         ++rows_packets_;
-        std::uint32_t first = static_cast<std::uint32_t>(p.payload[0] | p.payload[1] << 8 | p.payload[2] << 16 |
-                                                         static_cast<std::uint32_t>(p.payload[3]) << 24);
+        std::uint32_t first = rows.first;
         if (rows_packets_ == f_.drop_rows_packet) {
             drop_first_ = first;
             dropped_ = 0;
