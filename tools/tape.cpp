@@ -1,5 +1,4 @@
 // tape: punched paper tape for NC machine tools — encode, decode, show, inspect.
-#include <iostream>
 #include <limits>
 
 #include "cli_common.hpp"
@@ -50,19 +49,5 @@ int main(int argc, char** argv) {
     cli::add_label(app);
     cli::add_render(app);
     cli::install_output_cleanup();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "tape: " << e.what() << "\ntape: run 'tape --help' or 'tape SUBCOMMAND --help' for the options\n";
-        return cli::usage;
-    } catch (const cli::Exit& e) {
-        return e.status;
-    }
-    return cli::ok;
+    return cli::parse_and_run(app, argc, argv, "'tape --help' or 'tape SUBCOMMAND --help'");
 }

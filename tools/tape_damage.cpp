@@ -1,7 +1,6 @@
 // tape-damage: a damaged read of a tape image, made from a seed, for testing and benchmarking restoration.
 #include <sys/stat.h>
 
-#include <iostream>
 #include <limits>
 #include <optional>
 #include <span>
@@ -156,17 +155,5 @@ int main(int argc, char** argv) {
     add_options(app, a);
     app.callback([&a] { run(a); });
     cli::install_output_cleanup();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "tape-damage: " << e.what() << "\ntape-damage: run 'tape-damage --help' for the options\n";
-        return cli::usage;
-    } catch (const cli::Exit& e) {
-        return e.status;
-    }
-    return cli::ok;
+    return cli::parse_and_run(app, argc, argv);
 }
