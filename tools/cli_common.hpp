@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
@@ -46,6 +47,13 @@ Globals& globals();
 /// SIGINT, SIGTERM, SIGHUP and SIGQUIT remove an output's temporary file, then end the run as the
 /// signal would. Device runs replace this with their own stop flag.
 void install_output_cleanup();
+
+/// Exit status of a run the user interrupted (128 + SIGINT).
+inline constexpr int interrupted_status = 130;
+
+/// Set by SIGINT/SIGTERM once install_interrupt_handler() ran; device runs stop cleanly on it.
+std::atomic<bool>& interrupted();
+void install_interrupt_handler();
 
 /// main()'s end for every program of the toolkit: parses argv and runs what it calls. --help and
 /// --version are answered; a usage error is said as "PROGRAM: what" then "PROGRAM: run HELP for the

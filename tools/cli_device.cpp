@@ -1,6 +1,5 @@
 #include "cli_device.hpp"
 
-#include <signal.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -12,24 +11,6 @@
 #include "tape/file_io.hpp"
 
 namespace cli {
-
-std::atomic<bool>& interrupted() {
-    static std::atomic<bool> flag{false};
-    return flag;
-}
-
-namespace {
-extern "C" void on_interrupt(int) { interrupted().store(true); }
-}  // namespace
-
-void install_interrupt_handler() {
-    struct sigaction sa {};
-    sa.sa_handler = on_interrupt;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
-    signal(SIGPIPE, SIG_IGN);
-}
 
 std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, tape::DeviceUse use, bool replace) {
     try {

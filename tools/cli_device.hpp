@@ -15,13 +15,6 @@
 
 namespace cli {
 
-/// Exit status of a run the user interrupted (128 + SIGINT).
-inline constexpr int interrupted_status = 130;
-
-/// Set by SIGINT/SIGTERM once install_interrupt_handler() ran; device runs stop cleanly on it.
-std::atomic<bool>& interrupted();
-void install_interrupt_handler();
-
 /// Opens a device string; errors end the program with the right status.
 std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, tape::DeviceUse use,
                                                      bool replace = false);

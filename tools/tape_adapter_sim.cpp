@@ -3,12 +3,10 @@
 // port: the whole toolkit can be tried, and tested, without hardware. Faults can be injected.
 #include <fcntl.h>
 #include <poll.h>
-#include <signal.h>
 #include <stdlib.h>
 #include <termios.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -24,9 +22,6 @@
 #include "core/engine.hpp"
 
 namespace {
-
-std::atomic<bool> stop_flag{false};
-extern "C" void on_signal(int) { stop_flag = true; }
 
 struct SimArgs {
     std::string reader, punch, serial = "SIM0001", link;
@@ -106,7 +101,7 @@ int run(const SimArgs& a) {
     // The engine polls between rows, as the firmware's main loop does: rows are given in small steps.
     const std::uint64_t step = static_cast<std::uint64_t>(16e6 / a.read_rate);
     std::size_t punched_written = 0;
-    while (!stop_flag) {
+    while (!cli::interrupted()) {
         std::uint64_t target = virtual_now();
         // The chad box fills at an exact row: looked at after each turn, which punches one row at most.
         auto chad = [&] {
@@ -216,11 +211,6 @@ int main(int argc, char** argv) {
     app.add_option("--protocol", a.faults.protocol, "Claim this protocol version in INFO (to try a mismatch)")
         ->check(whole_number(0, 255));
     app.callback([&a] { throw cli::Exit{run(a)}; });
-    struct sigaction sa {};
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
-    signal(SIGPIPE, SIG_IGN);
+    cli::install_interrupt_handler();
     return cli::parse_and_run(app, argc, argv);
 }
