@@ -23,7 +23,8 @@ Engine::Engine(Hardware& hw, const Identity& id, Framing framing, const Config& 
 void Engine::receive(const std::uint8_t* bytes, std::size_t n) {
     if (framing_ == Framing::packets) {
         Packet p;
-        if (decode_packet(bytes, n, p) == PacketFault::none) {
+        // A HID report comes padded to its fixed size; a bulk transfer holds the packet alone.
+        if (decode_report(bytes, n, p) == PacketFault::none) {
             handle(p);
         } else {
             ++bad_packets_;
@@ -62,6 +63,7 @@ void Engine::on_row(std::uint8_t lines, std::uint8_t flags) {
 }
 
 void Engine::poll() {
+    flush_outbox();
     std::uint32_t now = hw_.now_us();
     std::uint16_t lines = static_cast<std::uint16_t>(hw_.status_lines() & line_faults);
 
@@ -143,7 +145,7 @@ void Engine::handle(const Packet& p) {
             Packet out;
             info.encode(out);
             out.seq = p.seq;
-            send_packet(out);
+            post(out);
             return;
         }
         case Msg::config: {
@@ -222,7 +224,7 @@ void Engine::handle(const Packet& p) {
         case Msg::echo: {
             Packet out = p;
             out.type = static_cast<std::uint8_t>(Msg::echo_reply);
-            send_packet(out);
+            post(out);
             return;
         }
         default:
@@ -236,18 +238,36 @@ bool Engine::send_packet(const Packet& p) {
     return hw_.send(out, n);
 }
 
+void Engine::post(const Packet& p) {
+    if (outbox_n_ == 0 && send_packet(p)) return;
+    // The endpoint is full: kept for the next turn. Should even the box be full, the oldest goes; the
+    // host asks a request again, and a lost STATUS again with RESEND.
+    if (outbox_n_ == outbox_size) {
+        for (std::size_t i = 1; i < outbox_size; ++i) outbox_[i - 1] = outbox_[i];
+        --outbox_n_;
+    }
+    outbox_[outbox_n_++] = p;
+}
+
+void Engine::flush_outbox() {
+    std::size_t sent = 0;
+    while (sent < outbox_n_ && send_packet(outbox_[sent])) ++sent;
+    for (std::size_t i = sent; i < outbox_n_; ++i) outbox_[i - sent] = outbox_[i];
+    outbox_n_ -= sent;
+}
+
 void Engine::reply_ok(const Packet& request) {
     Packet out;
     Ok{request.type}.encode(out);
     out.seq = request.seq;
-    send_packet(out);
+    post(out);
 }
 
 void Engine::reply_error(const Packet& request, ErrorCode code, std::uint32_t frame) {
     Packet out;
     ErrorReply{code, request.type, frame}.encode(out);
     out.seq = request.type ? request.seq : seq_++;
-    send_packet(out);
+    post(out);
 }
 
 void Engine::send_status(std::uint16_t event_bits, std::uint32_t frame) {
@@ -262,7 +282,7 @@ void Engine::send_packet_status(const Status& s) {
     Packet out;
     s.encode(out);
     out.seq = seq_++;
-    send_packet(out);
+    post(out);
 }
 
 void Engine::send_credit(std::uint8_t seq) {

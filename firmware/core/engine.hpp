@@ -92,11 +92,18 @@ private:
     std::uint32_t feed_left_ = 0;
     std::uint32_t last_credit_us_ = 0, credited_punched_ = 0;
 
+    static constexpr std::size_t outbox_size = 4;
+    Packet outbox_[outbox_size] = {};
+    std::size_t outbox_n_ = 0;
+
     std::uint16_t last_status_ = 0;
     Status last_event_{};  ///< the last STATUS sent, sent again on a RESEND after the run ended
 
     void handle(const Packet& p);
     bool send_packet(const Packet& p);
+    /// Replies and STATUS: sent now, or from the outbox as soon as the endpoint takes them.
+    void post(const Packet& p);
+    void flush_outbox();
     void reply_ok(const Packet& request);
     void reply_error(const Packet& request, ErrorCode code, std::uint32_t frame);
     void send_status(std::uint16_t event_bits, std::uint32_t frame);

@@ -30,6 +30,12 @@ PacketFault decode_packet(const std::uint8_t* in, std::size_t n, Packet& p) {
     return PacketFault::none;
 }
 
+PacketFault decode_report(const std::uint8_t* in, std::size_t n, Packet& p) {
+    if (n < packet_overhead) return PacketFault::too_short;
+    std::size_t used = in[2] + packet_overhead;
+    return decode_packet(in, used < n ? used : n, p);
+}
+
 std::size_t frame_packet(const Packet& p, std::uint8_t* out) {
     std::uint8_t raw[max_packet];
     std::size_t n = encode_packet(p, raw);

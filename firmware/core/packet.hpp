@@ -40,6 +40,12 @@ std::size_t encode_packet(const Packet& p, std::uint8_t* out);
 /// Checks and unpacks n bytes holding exactly one packet.
 PacketFault decode_packet(const std::uint8_t* in, std::size_t n, Packet& p);
 
+/// Checks and unpacks one packet at the start of a fixed-size transfer (a 64-byte HID report), whose
+/// bytes after the packet are padding: the length byte says where the packet ends.
+PacketFault decode_report(const std::uint8_t* in, std::size_t n, Packet& p);
+/// Bytes in a HID report (without the report id byte): every packet fits one.
+inline constexpr std::size_t report_size = 64;
+
 /// The packet COBS-encoded with its terminating zero, into out (room for max_framed). Returns the bytes written.
 std::size_t frame_packet(const Packet& p, std::uint8_t* out);
 

@@ -13,6 +13,7 @@
 
 #include "core/packet.hpp"
 #include "core/protocol.hpp"
+#include "device_query.hpp"
 #include "tape/device.hpp"
 #include "tape/error.hpp"
 
@@ -32,9 +33,26 @@ public:
     virtual std::string name() const = 0;
 };
 
-/// The pipe to the adapter a device string names (adapter:PATH for now). Throws Error(Errc::usage)
-/// for a string that names no adapter, Error(Errc::io) when it cannot be opened.
+/// The pipe to the adapter a device string names (adapter:PATH, usb:VID:PID, hid:VID:PID). Throws
+/// Error(Errc::usage) for a string that names no adapter, Error(Errc::io) when it cannot be opened.
 std::unique_ptr<PacketPipe> open_pipe(std::string_view device);
+
+/// The settings after '?' every adapter backend takes: which adapter (its serial string), and the
+/// unit's line settings, sent as CONFIG when any is given.
+inline constexpr std::string_view settings_keys[] = {"serial", "tracks", "invert", "watchdog", "sprocket-timeout"};
+
+/// The adapter as a Transport, over pipe, for use: reads are the reader's rows, writes the punch's.
+/// Refuses (Error(Errc::io)) an adapter whose serial is not the query's serial=.
+std::unique_ptr<Transport> open_transport(std::unique_ptr<PacketPipe> pipe, const DeviceQuery& query, DeviceUse use);
+
+/// The vendor and product id a usb: or hid: device string starts with, "1209:0001" in hex.
+struct UsbId {
+    std::uint16_t vendor = 0, product = 0;
+    /// "1209:0001"
+    std::string text() const;
+};
+/// Error(Errc::usage) when the query's path is no VID:PID. backend: "usb" or "hid", for the message.
+UsbId usb_id(std::string_view backend, const DeviceQuery& query);
 
 /// Timing of the host's side; tests shorten nothing, they are the protocol's own numbers.
 struct SessionTiming {

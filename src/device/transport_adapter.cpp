@@ -1,13 +1,15 @@
-// adapter:PATH?tracks=8&invert=0&watchdog=500 — a tape adapter (firmware/core) on a USB CDC serial port, /dev/ttyACM0,
-// or on the pseudo-terminal of tape-adapter-sim. Packets travel COBS-framed on the byte stream; the protocol itself is
-// adapter::Session's, shared with the usb: and hid: backends.
+// adapter:PATH?serial=…&tracks=8&invert=0&watchdog=500 — a tape adapter (firmware/core) on a USB CDC serial port,
+// /dev/ttyACM0, or on the pseudo-terminal of tape-adapter-sim. Packets travel COBS-framed on the byte stream. The
+// Transport every adapter backend shares (usb:, hid:) is here too: the protocol itself is adapter::Session's.
 #include <fcntl.h>
 #include <termios.h>
 #include <unistd.h>
 
+#include <charconv>
+#include <cstdio>
+
 #include "adapter_session.hpp"
 #include "device_backends.hpp"
-#include "device_query.hpp"
 #include "serial_termios.hpp"
 #include "tape/error.hpp"
 #include "transport_posix.hpp"
@@ -80,7 +82,6 @@ private:
     }
 };
 
-// The adapter as a Transport: reads are the reader's rows, writes the punch's.
 class AdapterTransport : public Transport {
 public:
     AdapterTransport(std::unique_ptr<adapter::PacketPipe> pipe, DeviceUse use) : use_(use), session_(std::move(pipe)) {}
@@ -98,7 +99,7 @@ public:
         if (use_ != DeviceUse::read) session_.drain();
     }
     std::string name() const override { return session_.name(); }
-    void configure(const tapefw::Config& c) { session_.configure(c); }
+    adapter::Session& session() { return session_; }
     std::vector<std::string> take_notes() override {
         std::vector<std::string> notes;
         const auto& r = session_.recovered();
@@ -114,22 +115,15 @@ private:
     std::size_t noted_ = 0;
 };
 
-}  // namespace
-
-constexpr std::string_view adapter_keys[] = {"tracks", "invert", "watchdog", "sprocket-timeout"};
-
-// The settings are the unit's, for reading and punching; asking the adapter about itself needs none.
-std::unique_ptr<adapter::PacketPipe> adapter::open_pipe(std::string_view device) {
-    if (!device.starts_with("adapter:"))
-        throw Error(Errc::usage, "'" + std::string(device) + "' names no adapter: give adapter:/dev/ttyACM0");
-    DeviceQuery q("adapter", device.substr(8), adapter_keys);
+std::string cdc_path(const DeviceQuery& q) {
     if (q.path().empty()) q.fail("no path, e.g. adapter:/dev/ttyACM0");
-    return std::make_unique<CdcPipe>(q.path());
+    return q.path();
 }
 
-std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool) {
-    DeviceQuery q("adapter", rest, adapter_keys);
-    if (q.path().empty()) q.fail("no path, e.g. adapter:/dev/ttyACM0");
+}  // namespace
+
+std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> pipe, const DeviceQuery& q,
+                                                   DeviceUse use) {
     // The unit's line settings, sent as CONFIG when any is given (the adapter keeps its own otherwise).
     tapefw::Config c;
     c.tracks = static_cast<std::uint8_t>(q.number("tracks", c.tracks));
@@ -145,10 +139,47 @@ std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse 
         q.bad_value("sprocket-timeout", *q.value("sprocket-timeout"), "is not 1 to 65535 milliseconds");
     c.sprocket_timeout_ms = static_cast<std::uint16_t>(sprocket);
     bool configure = false;
-    for (auto key : adapter_keys) configure = configure || q.value(key).has_value();
-    auto t = std::make_unique<AdapterTransport>(std::make_unique<CdcPipe>(q.path()), use);
-    if (configure) t->configure(c);
+    for (auto key : settings_keys) configure = configure || (key != "serial" && q.value(key).has_value());
+
+    auto t = std::make_unique<AdapterTransport>(std::move(pipe), use);
+    // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
+    auto serial = q.value("serial");
+    if (serial && *serial != t->session().info().serial)
+        throw Error(Errc::io, t->name() + ": this adapter's serial is " + t->session().info().serial + ", not " +
+                                  std::string(*serial));
+    if (configure) t->session().configure(c);
     return t;
+}
+
+adapter::UsbId adapter::usb_id(std::string_view backend, const DeviceQuery& q) {
+    const std::string& path = q.path();
+    auto colon = path.find(':');
+    UsbId id;
+    auto hex = [](std::string_view s, std::uint16_t& out) {
+        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out, 16);
+        return !s.empty() && s.size() <= 4 && ec == std::errc() && end == s.data() + s.size();
+    };
+    if (colon == std::string::npos || !hex(std::string_view(path).substr(0, colon), id.vendor) ||
+        !hex(std::string_view(path).substr(colon + 1), id.product))
+        q.fail("'" + std::string(backend) + ":" + path + "' names no vendor:product id in hex, e.g. " +
+               std::string(backend) + ":1209:0001");
+    return id;
+}
+
+std::string adapter::UsbId::text() const {
+    char s[10];
+    std::snprintf(s, sizeof s, "%04x:%04x", vendor, product);
+    return s;
+}
+
+std::unique_ptr<adapter::PacketPipe> open_cdc_pipe(std::string_view rest) {
+    DeviceQuery q("adapter", rest, adapter::settings_keys);
+    return std::make_unique<CdcPipe>(cdc_path(q));
+}
+
+std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool) {
+    DeviceQuery q("adapter", rest, adapter::settings_keys);
+    return adapter::open_transport(std::make_unique<CdcPipe>(cdc_path(q)), q, use);
 }
 
 }  // namespace tape

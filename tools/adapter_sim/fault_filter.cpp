@@ -4,50 +4,65 @@
 
 namespace tapesim {
 
-void FaultFilter::emit(const tapefw::Packet& p, std::string& out, bool corrupt) {
-    std::uint8_t framed[tapefw::max_framed];
-    std::size_t n = tapefw::frame_packet(p, framed);
-    // One byte in the middle changed, never to a zero (that would cut the packet in two instead).
-    if (corrupt) {
-        framed[n / 2] ^= 0x01;
-        if (framed[n / 2] == 0) framed[n / 2] = 0x02;
-    }
-    out.append(reinterpret_cast<const char*>(framed), n);
-}
-
 void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& out) {
     for (std::size_t i = 0; i < n; ++i) {
         if (decoder_.feed(bytes[i]) != tapefw::StreamDecoder::Event::packet) continue;
-        tapefw::Packet p = decoder_.packet();
-        if (p.type == static_cast<std::uint8_t>(tapefw::Msg::info) && f_.protocol >= 0) {
-            p.payload[0] = static_cast<std::uint8_t>(f_.protocol);
-        }
-        tapefw::Rows rows;
-        if (!rows.decode(p)) {  // not ROWS: passed as it is
-            emit(p, out, false);
-            continue;
-        }
-        ++rows_packets_;
-        std::uint32_t first = rows.first;
-        if (rows_packets_ == f_.drop_rows_packet) {
-            drop_first_ = first;
-            dropped_ = 0;
-        }
-        if (f_.drop_rows_packet && rows_packets_ >= f_.drop_rows_packet && first == drop_first_ &&
-            dropped_ < f_.drop_times) {
-            ++dropped_;
-            continue;
-        }
-        if (rows_packets_ == f_.corrupt_rows_packet) {
-            corrupt_first_ = first;
-            corrupted_ = 0;
-        }
-        bool corrupt = f_.corrupt_rows_packet && rows_packets_ >= f_.corrupt_rows_packet && first == corrupt_first_ &&
-                       corrupted_ < f_.corrupt_times;
-        if (corrupt) ++corrupted_;
-        emit(p, out, corrupt);
-        if (rows_packets_ == f_.duplicate_rows_packet) emit(p, out, false);
+        filter(decoder_.packet(), [&out](const tapefw::Packet& p, bool corrupt) {
+            std::uint8_t framed[tapefw::max_framed];
+            std::size_t m = tapefw::frame_packet(p, framed);
+            // One byte in the middle changed, never to a zero (that would cut the packet in two instead).
+            if (corrupt) {
+                framed[m / 2] ^= 0x01;
+                if (framed[m / 2] == 0) framed[m / 2] = 0x02;
+            }
+            out.append(reinterpret_cast<const char*>(framed), m);
+        });
     }
+}
+
+void FaultFilter::pass_packet(const std::uint8_t* bytes, std::size_t n, std::vector<std::vector<std::uint8_t>>& out) {
+    tapefw::Packet packet;
+    if (tapefw::decode_packet(bytes, n, packet) != tapefw::PacketFault::none) {
+        out.emplace_back(bytes, bytes + n);  // the engine's own bytes are always a packet; kept as they are
+        return;
+    }
+    filter(packet, [&out](const tapefw::Packet& p, bool corrupt) {
+        std::vector<std::uint8_t> raw(tapefw::max_packet);
+        raw.resize(tapefw::encode_packet(p, raw.data()));
+        if (corrupt) raw[raw.size() / 2] ^= 0x01;
+        out.push_back(std::move(raw));
+    });
+}
+
+void FaultFilter::filter(tapefw::Packet p, const std::function<void(const tapefw::Packet&, bool)>& emit) {
+    if (p.type == static_cast<std::uint8_t>(tapefw::Msg::info) && f_.protocol >= 0) {
+        p.payload[0] = static_cast<std::uint8_t>(f_.protocol);
+    }
+    tapefw::Rows rows;
+    if (!rows.decode(p)) {  // not ROWS: passed as it is
+        emit(p, false);
+        return;
+    }
+    ++rows_packets_;
+    std::uint32_t first = rows.first;
+    if (rows_packets_ == f_.drop_rows_packet) {
+        drop_first_ = first;
+        dropped_ = 0;
+    }
+    if (f_.drop_rows_packet && rows_packets_ >= f_.drop_rows_packet && first == drop_first_ &&
+        dropped_ < f_.drop_times) {
+        ++dropped_;
+        return;
+    }
+    if (rows_packets_ == f_.corrupt_rows_packet) {
+        corrupt_first_ = first;
+        corrupted_ = 0;
+    }
+    bool corrupt = f_.corrupt_rows_packet && rows_packets_ >= f_.corrupt_rows_packet && first == corrupt_first_ &&
+                   corrupted_ < f_.corrupt_times;
+    if (corrupt) ++corrupted_;
+    emit(p, corrupt);
+    if (rows_packets_ == f_.duplicate_rows_packet) emit(p, false);
 }
 
 }  // namespace tapesim

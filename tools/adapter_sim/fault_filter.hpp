@@ -1,10 +1,12 @@
-// Faults injected on the simulated adapter's way out: the engine's COBS stream is cut into packets,
-// and chosen ROWS packets are dropped, sent twice or damaged before they go on the line; an INFO
+// Faults injected on the simulated adapter's way out: the engine's packets (cut out of its COBS stream,
+// or one per transfer), and chosen ROWS packets are dropped, sent twice or damaged before they go on the line; an INFO
 // can claim another protocol version.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "core/packet.hpp"
 
@@ -22,8 +24,11 @@ struct Faults {
 class FaultFilter {
 public:
     explicit FaultFilter(Faults f) : f_(f) {}
-    /// Takes the engine's bytes; appends what goes on the line to out.
+    /// Takes the engine's bytes on a byte stream (CDC); appends what goes on the line to out.
     void pass(const std::uint8_t* bytes, std::size_t n, std::string& out);
+    /// Takes one packet the engine sends in a transfer of its own (bulk, HID); appends the transfers
+    /// that go on the wire instead (none, one, two, or one damaged) to out.
+    void pass_packet(const std::uint8_t* bytes, std::size_t n, std::vector<std::vector<std::uint8_t>>& out);
     std::uint64_t rows_packets() const { return rows_packets_; }
     std::uint64_t dropped() const { return dropped_; }
     std::uint64_t corrupted() const { return corrupted_; }
@@ -33,7 +38,8 @@ private:
     tapefw::StreamDecoder decoder_;
     std::uint64_t rows_packets_ = 0, dropped_ = 0, corrupted_ = 0;
     std::uint32_t drop_first_ = 0, corrupt_first_ = 0;  ///< the first frame of the packet hit
-    void emit(const tapefw::Packet& p, std::string& out, bool corrupt);
+    /// The faults applied to one packet: emit is called for each sending of it, damaged or not.
+    void filter(tapefw::Packet p, const std::function<void(const tapefw::Packet&, bool corrupt)>& emit);
 };
 
 }  // namespace tapesim

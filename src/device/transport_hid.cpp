@@ -1,0 +1,110 @@
+// hid:1209:0001?serial=…&tracks=8… — a tape adapter on its HID interface, through hidapi (hidraw): one packet
+// (firmware/core/packet.hpp) per 64-byte report each way, padded with zeros. No driver to install on any system,
+// at the cost of the reports' fixed size. The protocol is adapter::Session's.
+#include <hidapi.h>
+
+#include <algorithm>
+#include <cwchar>
+#include <vector>
+
+#include "adapter_session.hpp"
+#include "device_backends.hpp"
+#include "tape/error.hpp"
+
+namespace tape {
+namespace {
+
+std::string narrow(const wchar_t* w) {
+    std::string s;
+    for (; w && *w; ++w) s += *w < 0x80 ? static_cast<char>(*w) : '?';
+    return s;
+}
+
+class HidPipe : public adapter::PacketPipe {
+public:
+    explicit HidPipe(const DeviceQuery& q) {
+        adapter::UsbId id = adapter::usb_id("hid", q);
+        auto serial = q.value("serial");
+        name_ = "hid:" + id.text() + (serial ? "?serial=" + std::string(*serial) : std::string());
+        if (hid_init() != 0) throw Error(Errc::io, name_ + ": cannot start hidapi");
+        hid_device_info* list = hid_enumerate(id.vendor, id.product);
+        std::string path;
+        std::vector<std::string> seen;
+        for (hid_device_info* d = list; d; d = d->next) {
+            std::string s = narrow(d->serial_number);
+            if (!serial || s == *serial) {
+                path = d->path;
+                break;
+            }
+            seen.push_back(s.empty() ? "(no serial)" : s);
+        }
+        hid_free_enumeration(list);
+        if (path.empty()) {
+            std::string what =
+                "no adapter " + id.text() + (serial ? " with serial " + std::string(*serial) : "") + " is attached";
+            if (!seen.empty()) {
+                what += " (attached:";
+                for (const auto& s : seen) what += " " + s;
+                what += ")";
+            }
+            throw Error(Errc::io, name_ + ": " + what);
+        }
+        device_ = hid_open_path(path.c_str());
+        if (!device_) {
+            std::string why = narrow(hid_error(nullptr));
+            if (why.find("ermission") != std::string::npos)
+                why += " (install udev/70-tape-adapter.rules, see tape-usb(7))";
+            throw Error(Errc::io, name_ + ": cannot open " + path + ": " + why);
+        }
+    }
+    ~HidPipe() override { hid_close(device_); }
+
+    void send(const tapefw::Packet& p) override {
+        // The report id comes first: 0, as the adapter's reports are not numbered.
+        std::uint8_t report[1 + tapefw::report_size] = {};
+        tapefw::encode_packet(p, report + 1);
+        int n = hid_write(device_, report, sizeof report);
+        if (n < 0) throw Error(Errc::io, name_ + ": the adapter is gone (unplugged?): " + narrow(hid_error(device_)));
+    }
+
+    std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout) override {
+        auto deadline = std::chrono::steady_clock::now() + timeout;
+        for (;;) {
+            auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+            std::uint8_t report[tapefw::report_size];
+            int n = hid_read_timeout(device_, report, sizeof report,
+                                     static_cast<int>(std::max<std::int64_t>(0, left.count())));
+            if (n < 0)
+                throw Error(Errc::io, name_ + ": the adapter is gone (unplugged?): " + narrow(hid_error(device_)));
+            if (n > 0) {
+                tapefw::Packet p;
+                if (tapefw::decode_report(report, static_cast<std::size_t>(n), p) == tapefw::PacketFault::none)
+                    return p;
+                ++bad_;
+                continue;
+            }
+            if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
+        }
+    }
+
+    std::uint64_t bad_packets() const override { return bad_; }
+    std::string name() const override { return name_; }
+
+private:
+    std::string name_;
+    hid_device* device_ = nullptr;
+    std::uint64_t bad_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<adapter::PacketPipe> open_hid_pipe(std::string_view rest) {
+    return std::make_unique<HidPipe>(DeviceQuery("hid", rest, adapter::settings_keys));
+}
+
+std::unique_ptr<Transport> open_hid_device(std::string_view rest, DeviceUse use, bool) {
+    DeviceQuery q("hid", rest, adapter::settings_keys);
+    return adapter::open_transport(std::make_unique<HidPipe>(q), q, use);
+}
+
+}  // namespace tape

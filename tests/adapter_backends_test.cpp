@@ -1,0 +1,269 @@
+// One conformance suite for the three adapter backends: adapter: (CDC, COBS on a pseudo-terminal),
+// usb: (libusb, vendor bulk endpoints) and hid: (hidapi on hidraw). Each runs the same cases against
+// the firmware core (fake::Adapter); for usb: and hid: the kernel's usbfs and hidraw are umockdev's,
+// the only double. The library is driven in this process, and the tape CLI as a child process with
+// umockdev's preload library, as a user would run it.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <chrono>
+#include <thread>
+
+#include "fake_adapter/fake_adapter.hpp"
+#include "spawn_util.hpp"
+#include "tape/adapter.hpp"
+#include "tape/device.hpp"
+#include "tape/error.hpp"
+#include "test_util.hpp"
+
+using namespace std::chrono_literals;
+using fake::Link;
+
+namespace {
+
+std::vector<std::uint8_t> pattern(std::size_t n, unsigned salt = 0) {
+    std::vector<std::uint8_t> t(n);
+    for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<std::uint8_t>((i * 37 + i / 251 + salt) & 0xFF);
+    return t;
+}
+
+struct ReadRun {
+    std::vector<std::uint8_t> frames;
+    std::string error;  ///< the Error's message, when reading ended in one
+    bool ended = false;
+};
+
+// Reads until the end of the tape, an error, or the deadline.
+ReadRun read_all(tape::Transport& t, std::chrono::seconds limit = 30s) {
+    ReadRun r;
+    auto end = std::chrono::steady_clock::now() + limit;
+    std::uint8_t buf[4096];
+    try {
+        while (std::chrono::steady_clock::now() < end) {
+            auto got = t.read(buf, 100ms);
+            r.frames.insert(r.frames.end(), buf, buf + got.count);
+            if (got.end) {
+                r.ended = true;
+                break;
+            }
+        }
+    } catch (const tape::Error& e) {
+        r.error = e.what();
+    }
+    return r;
+}
+
+class AdapterBackend : public ::testing::TestWithParam<Link> {
+protected:
+    void SetUp() override {
+        if (GetParam() != Link::cdc) {
+            std::string why = fake::umockdev_unavailable();
+            if (!why.empty()) GTEST_SKIP() << why;
+        }
+    }
+    fake::Options options(std::vector<std::uint8_t> tape = {}, const std::string& serial = "") {
+        fake::Options o;
+        o.link = GetParam();
+        o.serial =
+            serial.empty() ? std::string("T-") + fake::link_name(GetParam()) + "-" + std::to_string(++made_) : serial;
+        o.tape = std::move(tape);
+        return o;
+    }
+    // Every request the host made was one a host has business making.
+    static void expect_clean(const fake::Adapter& a) {
+        for (const auto& u : a.unexpected()) ADD_FAILURE() << "unexpected request: " << u;
+    }
+    int made_ = 0;
+};
+
+TEST_P(AdapterBackend, AnswersInfoWithItsSerialAndCapabilities) {
+    fake::Adapter a(options({}, "INFO-" + std::string(fake::link_name(GetParam()))));
+    tape::AdapterInfo info = tape::adapter_info(a.device());
+    EXPECT_EQ(info.serial, "INFO-" + std::string(fake::link_name(GetParam())));
+    EXPECT_TRUE(info.reader);
+    EXPECT_TRUE(info.punch);
+    EXPECT_EQ(info.max_read_rate, 1500u);
+    EXPECT_EQ(info.tracks, (std::vector<int>{5, 6, 7, 8}));
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, ReadsATapeWholeEveryFrameOnce) {
+    auto tape = pattern(9000);
+    fake::Adapter a(options(tape));
+    auto t = tape::open_device(a.device(), tape::DeviceUse::read);
+    ReadRun r = read_all(*t);
+    EXPECT_EQ(r.error, "");
+    EXPECT_TRUE(r.ended);
+    EXPECT_EQ(r.frames, tape);
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, RecoversADroppedADuplicatedAndADamagedPacket) {
+    auto tape = pattern(6000, 1);
+    auto o = options(tape);
+    o.faults.drop_rows_packet = 3;
+    o.faults.duplicate_rows_packet = 6;
+    o.faults.corrupt_rows_packet = 9;
+    fake::Adapter a(o);
+    auto t = tape::open_device(a.device(), tape::DeviceUse::read);
+    ReadRun r = read_all(*t);
+    EXPECT_EQ(r.error, "");
+    EXPECT_EQ(r.frames, tape);
+    auto notes = t->take_notes();
+    EXPECT_GE(notes.size(), 2u);  // the dropped and the damaged packet's frames came again
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, GarbageOnTheLineIsSkippedWithoutReplugging) {
+    auto tape = pattern(12000, 2);
+    fake::Adapter a(options(tape));
+    auto t = tape::open_device(a.device(), tape::DeviceUse::read);
+    std::thread noise([&a] {
+        for (int i = 0; i < 10; ++i) {
+            std::this_thread::sleep_for(30ms);
+            a.send_garbage();
+        }
+    });
+    ReadRun r = read_all(*t);
+    noise.join();
+    EXPECT_EQ(r.error, "");
+    EXPECT_EQ(r.frames, tape);
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, FramesLostForGoodAreReportedWithTheirRange) {
+    auto tape = pattern(6000, 3);
+    auto o = options(tape);
+    o.faults.drop_rows_packet = 4;
+    o.faults.drop_times = 1000000;
+    fake::Adapter a(o);
+    auto t = tape::open_device(a.device(), tape::DeviceUse::read);
+    auto start = std::chrono::steady_clock::now();
+    ReadRun r = read_all(*t);
+    ASSERT_NE(r.error, "");
+    EXPECT_NE(r.error.find("frame " + std::to_string(r.frames.size() + 1)), std::string::npos) << r.error;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, 10s);
+    // Every frame before the lost packet is kept, none after it.
+    EXPECT_EQ(r.frames, std::vector<std::uint8_t>(tape.begin(), tape.begin() + static_cast<long>(r.frames.size())));
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, UnpluggedWhileReadingKeepsEveryFrameBeforeAndSaysSo) {
+    auto tape = pattern(20000, 4);
+    auto o = options(tape);
+    o.unplug_after = 3000;
+    fake::Adapter a(o);
+    auto t = tape::open_device(a.device(), tape::DeviceUse::read);
+    ReadRun r = read_all(*t);
+    EXPECT_NE(r.error.find("gone"), std::string::npos) << r.error;
+    EXPECT_GT(r.frames.size(), 0u);
+    EXPECT_LE(r.frames.size(), 3000u + 64);
+    EXPECT_EQ(r.frames, std::vector<std::uint8_t>(tape.begin(), tape.begin() + static_cast<long>(r.frames.size())));
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, PunchesEveryRowInOrder) {
+    fake::Adapter a(options());
+    auto rows = pattern(1200, 5);
+    {
+        auto t = tape::open_device(a.device(), tape::DeviceUse::write);
+        t->write(rows);
+        t->drain();
+    }
+    EXPECT_EQ(a.punched(), rows);
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, ChoosesTheAdapterBySerialAndNamesTheOthersWhenNoneMatches) {
+    fake::Adapter first(options(pattern(10), "SERIAL-A"));
+    fake::Adapter second(options(pattern(10), "SERIAL-B"));
+    {
+        auto t = tape::open_device(second.device(), tape::DeviceUse::read);
+        EXPECT_EQ(read_all(*t).frames, pattern(10));
+    }
+    std::string wrong = second.device().substr(0, second.device().find("?serial=")) + "?serial=SERIAL-X";
+    try {
+        tape::open_device(wrong, tape::DeviceUse::read);
+        ADD_FAILURE() << "opened " << wrong;
+    } catch (const tape::Error& e) {
+        EXPECT_EQ(e.code(), tape::Errc::io);
+        EXPECT_NE(std::string(e.what()).find("SERIAL-X"), std::string::npos) << e.what();
+        // A port names one adapter; USB lists every one attached with the ids.
+        if (GetParam() != Link::cdc) {
+            EXPECT_NE(std::string(e.what()).find("SERIAL-A"), std::string::npos) << e.what();
+        }
+        EXPECT_NE(std::string(e.what()).find("SERIAL-B"), std::string::npos) << e.what();
+    }
+    expect_clean(first);
+    expect_clean(second);
+}
+
+TEST_P(AdapterBackend, RefusesAnAdapterSpeakingAnotherProtocolVersion) {
+    auto o = options();
+    o.faults.protocol = 99;
+    fake::Adapter a(o);
+    try {
+        tape::adapter_info(a.device());
+        ADD_FAILURE() << "no refusal";
+    } catch (const tape::Error& e) {
+        EXPECT_EQ(e.code(), tape::Errc::io);
+        EXPECT_NE(std::string(e.what()).find("protocol version 99"), std::string::npos) << e.what();
+    }
+    expect_clean(a);
+}
+
+TEST_P(AdapterBackend, SelfTestEchoesEveryPacketUnchanged) {
+    fake::Adapter a(options());
+    tape::AdapterSelftest s = tape::adapter_selftest(a.device(), 300ms, 7);
+    EXPECT_GT(s.packets, 10u);
+    EXPECT_EQ(s.mismatches, 0u);
+    EXPECT_EQ(s.bad_in, 0u);
+    EXPECT_EQ(s.bad_out, 0u);
+    expect_clean(a);
+}
+
+// The CLI, a real process, reading through the backend: exit 0 and the tape on disk; unplugged, exit 3,
+// with every frame read before on disk.
+TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesOnDisk) {
+    TempDir dir;
+    auto tape = pattern(5000, 6);
+    // The child sees the umockdev devices through the same preload library.
+    ::setenv("LD_PRELOAD", "libumockdev-preload.so.0", 1);
+    struct Unset {
+        ~Unset() { ::unsetenv("LD_PRELOAD"); }
+    } unset;
+    {
+        fake::Adapter a(options(tape));
+        pid_t pid = spawn_to_files(TAPE_BINARY, {"read", a.device(), "-o", dir.file("whole.ptp")}, dir.file("out"),
+                                   dir.file("err"));
+        ASSERT_GT(pid, 0);
+        auto status = wait_for_exit(pid, 60s);
+        ASSERT_TRUE(status.has_value());
+        EXPECT_EQ(WEXITSTATUS(*status), 0) << read_text(dir.file("err"));
+        auto got = read_text(dir.file("whole.ptp"));
+        EXPECT_EQ(std::vector<std::uint8_t>(got.begin(), got.end()), tape);
+        expect_clean(a);
+    }
+    {
+        auto o = options(tape);
+        o.unplug_after = 2000;
+        fake::Adapter a(o);
+        pid_t pid = spawn_to_files(TAPE_BINARY, {"read", a.device(), "-o", dir.file("part.ptp")}, dir.file("out"),
+                                   dir.file("err"));
+        ASSERT_GT(pid, 0);
+        auto status = wait_for_exit(pid, 60s);
+        ASSERT_TRUE(status.has_value());
+        EXPECT_EQ(WEXITSTATUS(*status), 3) << read_text(dir.file("err"));
+        EXPECT_NE(read_text(dir.file("err")).find("gone"), std::string::npos) << read_text(dir.file("err"));
+        auto got = read_text(dir.file("part.ptp"));
+        EXPECT_GT(got.size(), 0u);
+        EXPECT_EQ(std::vector<std::uint8_t>(got.begin(), got.end()),
+                  std::vector<std::uint8_t>(tape.begin(), tape.begin() + static_cast<long>(got.size())));
+        expect_clean(a);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Links, AdapterBackend, ::testing::Values(Link::cdc, Link::usb, Link::hid),
+                         [](const auto& info) { return std::string(fake::link_name(info.param)); });
+
+}  // namespace
