@@ -15,6 +15,19 @@ void FaultFilter::emit(const tapefw::Packet& p, std::string& out, bool corrupt) 
     out.append(reinterpret_cast<const char*>(framed), n);
 }
 
+void FaultFilter::desync(const tapefw::Packet& p, std::string& out) {
+    if (desyncs_++ % 2 == 0) {
+        // Noise: bytes that are no packet (no zero among them), then the delimiter.
+        for (std::uint8_t b : {0x55, 0xAA, 0x13, 0xFF, 0x01, 0x80, 0x7E}) out.push_back(static_cast<char>(b));
+        out.push_back('\0');
+        return;
+    }
+    // A packet cut off: its first half, without the delimiter that would end it.
+    std::uint8_t framed[tapefw::max_framed];
+    std::size_t n = tapefw::frame_packet(p, framed);
+    out.append(reinterpret_cast<const char*>(framed), n / 2);
+}
+
 void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& out) {
     for (std::size_t i = 0; i < n; ++i) {
         if (decoder_.feed(bytes[i]) != tapefw::StreamDecoder::Event::packet) continue;
@@ -45,6 +58,7 @@ void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& ou
         bool corrupt = f_.corrupt_rows_packet && rows_packets_ >= f_.corrupt_rows_packet && first == corrupt_first_ &&
                        corrupted_ < f_.corrupt_times;
         if (corrupt) ++corrupted_;
+        if (f_.garbage_every && rows_packets_ % f_.garbage_every == 0) desync(p, out);
         emit(p, out, corrupt);
         if (rows_packets_ == f_.duplicate_rows_packet) emit(p, out, false);
     }
