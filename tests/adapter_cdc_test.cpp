@@ -323,6 +323,48 @@ TEST(AdapterCdc, InfoAndSelftestThroughTheCli) {
     }
 }
 
+// The line settings of the run the simulator ended with, from its --stats line.
+std::string sim_config(const std::string& err) {
+    auto at = err.find("config: ");
+    return at == std::string::npos ? "" : err.substr(at + 8, err.find('\n', at) - at - 8);
+}
+
+TEST(AdapterCdc, ConfigThroughTheCliIsWhatTheAdapterReadsWith) {
+    // A unit wired active low on every data line: rows come inverted until the adapter is told so.
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 300, &frames);
+    {
+        SIM_OR_SKIP(unconfigured, dir, {"--reader", in, "--active-low", "255"});
+        auto r = read_all(unconfigured.device);
+        ASSERT_EQ(r.error, "");
+        ASSERT_EQ(r.rows.size(), 300u);
+        EXPECT_EQ(r.rows[1], static_cast<std::uint8_t>(~frames[1])) << "unconfigured: the levels as they are";
+    }
+    SIM_OR_SKIP(sim, dir, {"--reader", in, "--active-low", "255", "--stats"});
+    {
+        Process tape({"adapter", "config", sim.device, "--invert", "0xFF", "--tracks", "7", "--strobe", "falling",
+                      "--sample-delay", "80", "--drive", "pulse", "--drive-pulse", "300", "--watchdog", "1500"},
+                     dir);
+        ASSERT_EQ(tape.wait(10s), 0) << tape.err();
+        EXPECT_EQ(read_text(dir.file("stdout")),
+                  "invert\t0xFF\ntracks\t7\nsprocket\tactive high, sampled 80 us after its falling edge\n"
+                  "drive\tpulses of 300 us, active high\nstatus inputs\tactive high\n"
+                  "punch\tready active high, magnets active high, held 2500 us\nsprocket timeout\t50 ms\n"
+                  "watchdog\t1500 ms\n");
+    }
+    // The setting outlives the session (a reset keeps it): this run reads true rows, masked to 7 tracks.
+    auto r = read_all(sim.device);
+    EXPECT_EQ(r.error, "");
+    ASSERT_EQ(r.rows.size(), 300u);
+    for (std::size_t i = 0; i < r.rows.size(); ++i) ASSERT_EQ(r.rows[i], frames[i] & 0x7F) << "frame " << i + 1;
+    EXPECT_EQ(sim.stop(), 0);
+    EXPECT_EQ(sim_config(sim.err()),
+              "invert=0xFF lines=0x06 tracks=7 sample_delay_us=80 punch_pulse_us=2500 drive_pulse_us=300 "
+              "sprocket_timeout_ms=50 watchdog_ms=1500")
+        << sim.err();
+}
+
 TEST(AdapterCdc, PunchVerifyReadsTheTapeBackAndNamesAFrameThatDiffers) {
     TempDir dir;
     std::vector<std::uint8_t> frames;

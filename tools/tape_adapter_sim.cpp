@@ -27,8 +27,10 @@ struct SimArgs {
     std::string reader, punch, serial = "SIM0001", link;
     double speed = 1, read_rate = 1500, punch_rate = 150;
     std::uint32_t stop_frames = 1;
-    std::uint64_t miss_hole_at = 0, unplug_after = 0, torn_at = 0, chad_full_after = 0;
-    bool torn = false, no_reader = false, no_punch = false, loop = false;
+    std::uint64_t unplug_after = 0, torn_at = 0, chad_full_after = 0;
+    std::vector<std::uint64_t> miss_hole_at;
+    unsigned active_low = 0;
+    bool torn = false, no_reader = false, no_punch = false, loop = false, stats = false;
     tapesim::Faults faults;
 };
 
@@ -73,6 +75,7 @@ int run(const SimArgs& a) {
     if (a.torn) so.torn_at = a.torn_at;
     so.loop = a.loop;
     so.miss_hole_at = a.miss_hole_at;
+    so.active_low = static_cast<std::uint8_t>(a.active_low);
     tapesim::SimHardware hw(tape, so);
     tapefw::Identity id;
     id.serial = a.serial.c_str();
@@ -146,6 +149,24 @@ int run(const SimArgs& a) {
     if (filter.dropped() || filter.corrupted())
         std::cerr << "tape-adapter-sim: " << filter.dropped() << " packet(s) dropped, " << filter.corrupted()
                   << " damaged, of " << filter.rows_packets() << " ROWS packets\n";
+    if (a.stats) {
+        // One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
+        const tapefw::Config& c = hw.config();
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "tape-adapter-sim: stats: tape_position=%llu rows_punched=%llu late_punches=%llu "
+                      "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
+                      "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
+                      "watchdog_ms=%u\n",
+                      static_cast<unsigned long long>(hw.position()),
+                      static_cast<unsigned long long>(hw.punched().size()),
+                      static_cast<unsigned long long>(hw.late_punches()),
+                      static_cast<unsigned long long>(hw.longest_punch_gap_us()),
+                      static_cast<unsigned long long>(filter.desyncs()),
+                      static_cast<unsigned long long>(engine.bad_packets()), c.data_invert, c.lines, c.tracks,
+                      c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us, c.sprocket_timeout_ms, c.watchdog_ms);
+        std::cerr << line;
+    }
     return cli::ok;
 }
 
@@ -192,8 +213,19 @@ int main(int argc, char** argv) {
         ->each([&a](const std::string&) { a.torn = true; });
     app.add_option("--chad-full-after", a.chad_full_after, "The chad box is full after N rows punched")
         ->check(whole_number(1, most));
-    app.add_option("--miss-hole-at", a.miss_hole_at, "Row N (from 1) is punched with its lowest hole missing")
+    app.add_option("--miss-hole-at", a.miss_hole_at,
+                   "Row N (from 1) is punched with its lowest hole missing (repeatable: several rows)")
         ->check(whole_number(1, most));
+    app.add_option("--active-low", a.active_low,
+                   "The unit's data lines that are low for a hole (a mask, bit n for track n+1): tape adapter "
+                   "config --invert must say the same for true rows")
+        ->check(whole_number(0, 255));
+    app.add_option("--garbage-every", a.faults.garbage_every,
+                   "Before every K-th ROWS packet, a desync on the line: noise, or half a packet, in turn")
+        ->check(whole_number(1, most));
+    app.add_flag("--stats", a.stats,
+                 "At the end, print on stderr the rows read and punched, late punch cycles, desyncs injected, bad "
+                 "packets from the host and the line settings in force");
     app.add_option("--drop-packet", a.faults.drop_rows_packet, "Do not send the K-th ROWS packet (from 1)")
         ->check(whole_number(1, most));
     app.add_option("--drop-times", a.faults.drop_times,

@@ -41,6 +41,34 @@ struct AdapterSelftest {
 /// Throws as adapter_info does, and Error(Errc::io) when an echo is not answered after retries.
 AdapterSelftest adapter_selftest(std::string_view device, std::chrono::milliseconds duration, std::uint32_t seed = 1);
 
+/// An adapter's line settings (CONFIG): how its unit is wired and timed. docs/adapter-protocol.md says
+/// what to measure on a unit for each. A CONFIG sets every one at once; the adapter keeps them over a
+/// reset, until the next CONFIG or a power-up.
+struct AdapterConfig {
+    unsigned data_invert = 0;           ///< bit n: data line n is active low (a hole reads as a low level); 0 to 255
+    unsigned tracks = 8;                ///< 5 to 8: rows are masked to that many tracks
+    bool sprocket_low = false;          ///< the sprocket signal is active low
+    bool strobe_falling = false;        ///< sample on the falling edge of the sprocket, not the rising one
+    bool drive_pulse = false;           ///< start and stop are pulses of drive_pulse_us, not a level
+    bool drive_low = false;             ///< start/stop and direction lines are active low
+    bool status_low = false;            ///< tape-out and fault inputs are active low
+    bool punch_ready_low = false;       ///< the punch's ready (sync) input is active low
+    bool punch_magnet_low = false;      ///< the punch magnets are driven by a low level
+    unsigned sample_delay_us = 50;      ///< from the sprocket edge to sampling the data lines; 0 to 5000
+    unsigned punch_pulse_us = 2500;     ///< how long the punch magnets are held; 100 to 50000
+    unsigned drive_pulse_us = 1000;     ///< start and stop pulse length; 10 to 50000
+    unsigned sprocket_timeout_ms = 50;  ///< no sprocket this long while driving: torn tape; 1 to 65535
+    unsigned watchdog_ms = 500;         ///< host silent this long: reader and punch stopped; 0 (never) to 65535
+};
+
+/// Why a setting is out of its range ("tracks: 9 is not 5 to 8"), or "" when every one is in range.
+std::string adapter_config_problem(const AdapterConfig& config);
+
+/// Opens the adapter, resets it and sends config, waiting for its OK. Throws Error(Errc::usage) for a
+/// setting out of range (adapter_config_problem) or a device string that names no adapter, and
+/// Error(Errc::io) when the adapter does not answer or refuses the settings.
+void adapter_configure(std::string_view device, const AdapterConfig& config);
+
 }  // namespace tape
 
 namespace tape {

@@ -1,4 +1,4 @@
-// adapter_info and adapter_selftest: the adapter's own questions, on the shared session.
+// adapter_info, adapter_configure and adapter_selftest: the adapter's own questions, on the shared session.
 #include <random>
 
 #include "adapter_session.hpp"
@@ -32,6 +32,50 @@ AdapterInfo to_info(const tapefw::Info& i) {
 AdapterInfo adapter_info(std::string_view device) {
     adapter::Session s(adapter::open_pipe(device));
     return to_info(s.info());
+}
+
+std::string adapter_config_problem(const AdapterConfig& c) {
+    // The ranges the engine and a board can honour: 16-bit fields, a sample taken within a frame of
+    // the slowest reader, pulses a magnet or clutch can be driven with.
+    struct Range {
+        const char* name;
+        unsigned value, min, max;
+        const char* unit;
+    };
+    const Range ranges[] = {
+        {"invert", c.data_invert, 0, 255, ""},
+        {"tracks", c.tracks, 5, 8, ""},
+        {"sample-delay", c.sample_delay_us, 0, 5000, " us"},
+        {"punch-pulse", c.punch_pulse_us, 100, 50000, " us"},
+        {"drive-pulse", c.drive_pulse_us, 10, 50000, " us"},
+        {"sprocket-timeout", c.sprocket_timeout_ms, 1, 65535, " ms"},
+        {"watchdog", c.watchdog_ms, 0, 65535, " ms"},
+    };
+    for (const auto& r : ranges)
+        if (r.value < r.min || r.value > r.max)
+            return std::string(r.name) + ": " + std::to_string(r.value) + " is not " + std::to_string(r.min) + " to " +
+                   std::to_string(r.max) + r.unit;
+    return "";
+}
+
+void adapter_configure(std::string_view device, const AdapterConfig& c) {
+    if (auto problem = adapter_config_problem(c); !problem.empty()) throw Error(Errc::usage, problem);
+    namespace lb = tapefw::line_bit;
+    tapefw::Config f;
+    f.data_invert = static_cast<std::uint8_t>(c.data_invert);
+    f.tracks = static_cast<std::uint8_t>(c.tracks);
+    f.lines = static_cast<std::uint8_t>(
+        (c.sprocket_low ? lb::sprocket_low : 0) | (c.strobe_falling ? lb::strobe_falling : 0) |
+        (c.drive_pulse ? lb::drive_pulse : 0) | (c.drive_low ? lb::drive_low : 0) |
+        (c.status_low ? lb::status_low : 0) | (c.punch_ready_low ? lb::punch_ready_low : 0) |
+        (c.punch_magnet_low ? lb::punch_magnet_low : 0));
+    f.sample_delay_us = static_cast<std::uint16_t>(c.sample_delay_us);
+    f.punch_pulse_us = static_cast<std::uint16_t>(c.punch_pulse_us);
+    f.drive_pulse_us = static_cast<std::uint16_t>(c.drive_pulse_us);
+    f.sprocket_timeout_ms = static_cast<std::uint16_t>(c.sprocket_timeout_ms);
+    f.watchdog_ms = static_cast<std::uint16_t>(c.watchdog_ms);
+    adapter::Session s(adapter::open_pipe(device));
+    s.configure(f);
 }
 
 AdapterSelftest adapter_selftest(std::string_view device, std::chrono::milliseconds duration, std::uint32_t seed) {

@@ -7,16 +7,31 @@ namespace tapesim {
 void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& out) {
     for (std::size_t i = 0; i < n; ++i) {
         if (decoder_.feed(bytes[i]) != tapefw::StreamDecoder::Event::packet) continue;
-        filter(decoder_.packet(), [&out](const tapefw::Packet& p, bool corrupt) {
-            std::uint8_t framed[tapefw::max_framed];
-            std::size_t m = tapefw::frame_packet(p, framed);
-            // One byte in the middle changed, never to a zero (that would cut the packet in two instead).
-            if (corrupt) {
-                framed[m / 2] ^= 0x01;
-                if (framed[m / 2] == 0) framed[m / 2] = 0x02;
-            }
-            out.append(reinterpret_cast<const char*>(framed), m);
-        });
+        filter(
+            decoder_.packet(),
+            [&out](const tapefw::Packet& p, bool corrupt) {
+                std::uint8_t framed[tapefw::max_framed];
+                std::size_t m = tapefw::frame_packet(p, framed);
+                // One byte in the middle changed, never to a zero (that would cut the packet in two instead).
+                if (corrupt) {
+                    framed[m / 2] ^= 0x01;
+                    if (framed[m / 2] == 0) framed[m / 2] = 0x02;
+                }
+                out.append(reinterpret_cast<const char*>(framed), m);
+            },
+            [this, &out](const tapefw::Packet& p) {
+                if (desyncs_++ % 2 == 0) {
+                    // Noise: bytes that are no packet (no zero among them), then the delimiter.
+                    for (std::uint8_t b : {0x55, 0xAA, 0x13, 0xFF, 0x01, 0x80, 0x7E})
+                        out.push_back(static_cast<char>(b));
+                    out.push_back('\0');
+                    return;
+                }
+                // A packet cut off: its first half, without the delimiter that would end it.
+                std::uint8_t framed[tapefw::max_framed];
+                std::size_t m = tapefw::frame_packet(p, framed);
+                out.append(reinterpret_cast<const char*>(framed), m / 2);
+            });
     }
 }
 
@@ -26,15 +41,22 @@ void FaultFilter::pass_packet(const std::uint8_t* bytes, std::size_t n, std::vec
         out.emplace_back(bytes, bytes + n);  // the engine's own bytes are always a packet; kept as they are
         return;
     }
-    filter(packet, [&out](const tapefw::Packet& p, bool corrupt) {
-        std::vector<std::uint8_t> raw(tapefw::max_packet);
-        raw.resize(tapefw::encode_packet(p, raw.data()));
-        if (corrupt) raw[raw.size() / 2] ^= 0x01;
-        out.push_back(std::move(raw));
-    });
+    filter(
+        packet,
+        [&out](const tapefw::Packet& p, bool corrupt) {
+            std::vector<std::uint8_t> raw(tapefw::max_packet);
+            raw.resize(tapefw::encode_packet(p, raw.data()));
+            if (corrupt) raw[raw.size() / 2] ^= 0x01;
+            out.push_back(std::move(raw));
+        },
+        [this, &out](const tapefw::Packet&) {
+            ++desyncs_;
+            out.push_back({0x55, 0xAA, 0x13, 0xFF, 0x01, 0x80, 0x7E});  // a transfer that is no packet
+        });
 }
 
-void FaultFilter::filter(tapefw::Packet p, const std::function<void(const tapefw::Packet&, bool)>& emit) {
+void FaultFilter::filter(tapefw::Packet p, const std::function<void(const tapefw::Packet&, bool)>& emit,
+                         const std::function<void(const tapefw::Packet&)>& desync) {
     if (p.type == static_cast<std::uint8_t>(tapefw::Msg::info) && f_.protocol >= 0) {
         p.payload[0] = static_cast<std::uint8_t>(f_.protocol);
     }
@@ -61,6 +83,7 @@ void FaultFilter::filter(tapefw::Packet p, const std::function<void(const tapefw
     bool corrupt = f_.corrupt_rows_packet && rows_packets_ >= f_.corrupt_rows_packet && first == corrupt_first_ &&
                    corrupted_ < f_.corrupt_times;
     if (corrupt) ++corrupted_;
+    if (f_.garbage_every && rows_packets_ % f_.garbage_every == 0) desync(p);
     emit(p, corrupt);
     if (rows_packets_ == f_.duplicate_rows_packet) emit(p, false);
 }

@@ -1,5 +1,6 @@
 #include "sim_hardware.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tapesim {
@@ -51,7 +52,13 @@ std::uint64_t SimHardware::next_event() const {
 bool SimHardware::punch_ready() { return !punched_once_ || now_ >= last_punch_ + punch_period_us_; }
 
 void SimHardware::punch(std::uint8_t row) {
-    if (punched_.size() + 1 == o_.miss_hole_at) row = static_cast<std::uint8_t>(row & (row - 1));
+    if (std::find(o_.miss_hole_at.begin(), o_.miss_hole_at.end(), punched_.size() + 1) != o_.miss_hole_at.end())
+        row = static_cast<std::uint8_t>(row & (row - 1));
+    if (punched_once_) {
+        std::uint64_t gap = now_ - last_punch_;
+        if (2 * gap > 3 * punch_period_us_) ++late_punches_;
+        longest_punch_gap_us_ = std::max(longest_punch_gap_us_, gap);
+    }
     punched_.push_back(row);
     last_punch_ = now_;
     punched_once_ = true;

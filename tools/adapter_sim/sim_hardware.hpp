@@ -25,7 +25,7 @@ struct SimOptions {
     std::optional<std::uint64_t> torn_at{};  ///< no sprocket from this frame (0-based) on
     std::uint8_t active_low = 0;             ///< the unit's data lines that read a hole as a low level (its wiring)
     bool loop = false;                       ///< the tape the punch punches goes on into the reader (to read it back)
-    std::uint64_t miss_hole_at = 0;          ///< row N (from 1) is punched with its lowest hole missing (a worn pin)
+    std::vector<std::uint64_t> miss_hole_at{};  ///< rows N (from 1) punched with their lowest hole missing (a worn pin)
 };
 
 class SimHardware final : public tapefw::Hardware {
@@ -49,6 +49,10 @@ public:
     tapefw::Drive drive_state() const { return drive_; }
     const tapefw::Config& config() const { return config_; }
     std::uint64_t starts() const { return starts_; }
+    /// Rows punched more than one and a half punch cycles after the row before: the punch stood idle
+    /// for want of a row (the queue ran dry), and the longest such wait, on the virtual clock.
+    std::uint64_t late_punches() const { return late_punches_; }
+    std::uint64_t longest_punch_gap_us() const { return longest_punch_gap_us_; }
 
     std::uint32_t now_us() override { return static_cast<std::uint32_t>(now_); }
     bool send(const std::uint8_t* bytes, std::size_t n) override { return on_send ? on_send(bytes, n) : true; }
@@ -73,6 +77,7 @@ private:
     std::vector<std::uint8_t> punched_;
     tapefw::Config config_{};
     std::uint64_t starts_ = 0;
+    std::uint64_t late_punches_ = 0, longest_punch_gap_us_ = 0;
     const std::vector<std::uint8_t>& reader_tape() const { return o_.loop ? punched_ : tape_; }
 };
 

@@ -2,7 +2,7 @@
 man_text=$(sed 's/\\-/-/g' tapes/../man/tape.1)
 missing=0
 for sub in "" encode decode show info blocks lint format search feed receive emulate read punch devices restore diff \
-  adapter "adapter info" "adapter selftest" label render; do
+  adapter "adapter info" "adapter config" "adapter selftest" label render; do
   for opt in $($TAPE $sub --help | grep -oE -- '--[a-z][a-z-]+' | sort -u); do
     grep -q -- "$opt" <<<"$man_text" || { echo "tape $sub: $opt is not in man/tape.1"; missing=1; }
   done
