@@ -1,23 +1,47 @@
-// Reading through the adapter: backend against tape-adapter-sim (the firmware core with a simulated
-// ФС-1501 at 1500 frames/s) on a pseudo-terminal, faster than real time by the second argument.
-// Counters: sim_fps (simulated frames a simulated second, 1500 when nothing was lost to waiting),
-// lost and doubled (proven by the frame counter: both must be 0), speedup_used. A second benchmark
-// drops one ROWS packet for good and times how long the host takes to report its frame range.
-// Run: build/bin/adapter_bench
+// Through the USB tape adapter: the adapter: backend and the tape CLI against tape-adapter-sim (the
+// firmware core with a simulated ФС-1501 at 1500 frames/s and a ПЛ-150 at 150 rows/s) on
+// pseudo-terminals. Run: build/bin/adapter_bench   (every benchmark one iteration; counters below)
+//  - BM_AdapterCdcRead: 900k frames at 30x: sim_fps (1500 when nothing waited), lost and doubled (0).
+//  - BM_AdapterCdcLostPacketReported: one ROWS packet dropped for good: report_s, the time to the report.
+//  - BM_EmulateStopOnDc3: the reader emulator (tape emulate's loop) into a pseudo-terminal at 1500
+//    frames/s; the controller's side sends DC1, then DC3 at a random moment, 300 times: frames that
+//    arrive after DC3 was written (frames_arrived_after_dc3), the same less those already waiting in
+//    the pseudo-terminal when it was written (frames_after_dc3: sent after the stop), and the time
+//    from DC3 to the last frame (last_frame_us); min/median/p99/max of each.
+//  - BM_AdapterPunchHostStall: tape punch of 10000 rows at 150 rows/s (real time), the tape process
+//    stopped (SIGSTOP) for 1 s at 20 s, then --verify through --loop with 8 rows punched wrong
+//    (--miss-hole-at): underruns (rows punched after the punch stood ready with no row queued, from
+//    the simulator's --stats), late_punches (rows more than 1.5 cycles after the one before, for any
+//    reason, the simulator's own catching up included), and the differences named of those planted.
+//  - BM_AdapterDesyncs: 40000 frames with a desync (noise or half a packet) before every 20th ROWS
+//    packet: desyncs, and the longest wait between two deliveries of rows with them and without.
+//  - BM_AdapterUnplugs: 100 runs of tape read with --unplug-after N (N from 100 to 2773): runs that
+//    ended with exit 3 and the file a prefix of the tape, frames kept, frames the adapter had read
+//    but the file lacks.
 #include <benchmark/benchmark.h>
+#include <poll.h>
+#include <pty.h>
 #include <signal.h>
+#include <sys/ioctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <random>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "spawn_util.hpp"
 #include "tape/device.hpp"
+#include "tape/dnc.hpp"
+#include "tape/encode.hpp"
 #include "tape/error.hpp"
 
 namespace {
@@ -27,8 +51,8 @@ using namespace std::chrono_literals;
 struct Sim {
     pid_t pid = -1;
     std::string device;
-    Sim(const std::vector<std::string>& args, const std::string& out) {
-        pid = spawn_to_files(TAPE_ADAPTER_SIM, args, out, "");
+    Sim(const std::vector<std::string>& args, const std::string& out, const std::string& err = "") {
+        pid = spawn_to_files(TAPE_ADAPTER_SIM, args, out, err);
         for (auto end = std::chrono::steady_clock::now() + 10s; pid > 0 && std::chrono::steady_clock::now() < end;) {
             std::ifstream in(out);
             std::getline(in, device);
@@ -36,13 +60,51 @@ struct Sim {
             std::this_thread::sleep_for(5ms);
         }
     }
-    ~Sim() {
+    ~Sim() { stop(); }
+    void stop() {
         if (pid > 0) {
             ::kill(pid, SIGTERM);
             ::waitpid(pid, nullptr, 0);
+            pid = -1;
         }
     }
 };
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A value from the simulator's --stats line ("name=value"), -1 when it is not there.
+double sim_stat(const std::string& err, const std::string& name) {
+    auto at = err.find(" " + name + "=");
+    return at == std::string::npos ? -1 : std::stod(err.substr(at + name.size() + 2));
+}
+
+// Runs tape with args to its end (deadline: the status is -1 after it, and it is killed).
+int run_tape(const std::vector<std::string>& args, const std::string& out, const std::string& err,
+             std::chrono::milliseconds deadline, pid_t* pid_out = nullptr) {
+    pid_t pid = spawn_to_files(TAPE_BINARY, args, out, err);
+    if (pid < 0) return -1;
+    if (pid_out) *pid_out = pid;
+    auto status = wait_for_exit(pid, deadline);
+    if (!status) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+        return -1;
+    }
+    return WIFEXITED(*status) ? WEXITSTATUS(*status) : -1;
+}
+
+// min, median, p99 and max of values as counters named prefix_min and so on.
+void distribution(benchmark::State& state, const std::string& prefix, std::vector<double> v) {
+    if (v.empty()) return;
+    std::sort(v.begin(), v.end());
+    state.counters[prefix + "_min"] = v.front();
+    state.counters[prefix + "_median"] = v[v.size() / 2];
+    state.counters[prefix + "_p99"] = v[std::min(v.size() - 1, v.size() * 99 / 100)];
+    state.counters[prefix + "_max"] = v.back();
+}
 
 std::string make_tape(std::size_t n, std::vector<std::uint8_t>& frames) {
     frames.resize(n);
@@ -127,6 +189,246 @@ void BM_AdapterCdcLostPacketReported(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_AdapterCdcLostPacketReported)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
+
+void BM_EmulateStopOnDc3(benchmark::State& state) {
+    const double rate = 1500;
+    const int stops = static_cast<int>(state.range(0));
+    // A tape longer than the run, with no end of program to rewind at.
+    std::string text = "%\n";
+    for (int n = 1; text.size() < 400000; ++n)
+        text += "N" + std::to_string(n) + " G01 X+" + std::to_string(n) + ".5 F120\n";
+    auto tape = tape::encode(text, tape::EncodeOptions{.leader = 0, .trailer = 0});
+    for (auto _ : state) {
+        int master = -1, slave = -1;
+        char name[128];
+        if (::openpty(&master, &slave, name, nullptr, nullptr) != 0) {
+            state.SkipWithError("openpty failed");
+            return;
+        }
+        auto line =
+            tape::open_device(std::string("serial:") + name + "?baud=115200&flow=xonxoff", tape::DeviceUse::both);
+        std::atomic<bool> stop{false};
+        std::thread emulator(
+            [&] { tape::emulate_reader(*line, tape, tape::EmulatorOptions{.rate = rate, .stop = &stop}); });
+        std::mt19937 rng(7);
+        std::vector<double> after, arrived, stop_us;
+        std::uint8_t buf[4096];
+        using clock = std::chrono::steady_clock;
+        // Reads what the emulator sends until quiet for quiet_ms: the number of bytes and when the last came.
+        auto drain = [&](int quiet_ms, clock::time_point& last) {
+            std::size_t n = 0;
+            for (;;) {
+                pollfd p{master, POLLIN, 0};
+                if (::poll(&p, 1, quiet_ms) <= 0) return n;
+                ssize_t got = ::read(master, buf, sizeof buf);
+                if (got <= 0) return n;
+                n += static_cast<std::size_t>(got);
+                last = clock::now();
+            }
+        };
+        bool ok = true;
+        for (int i = 0; i < stops && ok; ++i) {
+            std::uint8_t dc1 = tape::dc1, dc3 = tape::dc3;
+            ok = ::write(master, &dc1, 1) == 1;
+            // Frames flow for a random 20 to 60 ms (the controller's buffer filling), read as they come.
+            auto until = clock::now() + std::chrono::microseconds(20000 + rng() % 40000);
+            clock::time_point last{};
+            std::size_t running = 0;
+            while (clock::now() < until) {
+                pollfd p{master, POLLIN, 0};
+                if (::poll(&p, 1, 1) > 0) {
+                    ssize_t got = ::read(master, buf, sizeof buf);
+                    if (got > 0) running += static_cast<std::size_t>(got);
+                }
+            }
+            // Frames the emulator wrote before DC3 may still wait in the pseudo-terminal (the controller's
+            // side was not scheduled): those waiting just before DC3 is written are not charged to the stop.
+            int waiting = 0;
+            ::ioctl(master, FIONREAD, &waiting);
+            auto sent_dc3 = clock::now();
+            ok = ok && ::write(master, &dc3, 1) == 1 && running > 0;
+            last = sent_dc3;
+            std::size_t n = drain(50, last);
+            arrived.push_back(static_cast<double>(n));
+            double sent_after = static_cast<double>(n) - std::min<double>(waiting, static_cast<double>(n));
+            after.push_back(sent_after);
+            stop_us.push_back(n ? std::chrono::duration<double, std::micro>(last - sent_dc3).count() : 0.0);
+        }
+        stop = true;
+        emulator.join();
+        line.reset();
+        ::close(master);
+        ::close(slave);
+        if (!ok) {
+            state.SkipWithError("the pseudo-terminal failed");
+            return;
+        }
+        state.counters["stops"] = static_cast<double>(after.size());
+        state.counters["stops_over_1_frame"] =
+            static_cast<double>(std::count_if(after.begin(), after.end(), [](double n) { return n > 1; }));
+        distribution(state, "frames_after_dc3", after);
+        distribution(state, "frames_arrived_after_dc3", arrived);
+        distribution(state, "last_frame_us", stop_us);
+    }
+}
+BENCHMARK(BM_EmulateStopOnDc3)->Arg(300)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+
+void BM_AdapterPunchHostStall(benchmark::State& state) {
+    const std::size_t n = static_cast<std::size_t>(state.range(0));
+    std::vector<std::uint8_t> frames;
+    std::string tape = make_tape(n, frames);
+    // Rows punched wrong, each with a lowest hole to lose (so that the read-back differs).
+    std::vector<std::string> sim_args = {"--loop", "--stats"};
+    std::vector<std::size_t> planted;
+    for (std::size_t at = 700; planted.size() < 8 && at < n; at += n / 9) {
+        while (frames[at - 1] == 0) ++at;
+        planted.push_back(at);
+        sim_args.insert(sim_args.end(), {"--miss-hole-at", std::to_string(at)});
+    }
+    const std::string dir = "/tmp/adapter_bench_";
+    for (auto _ : state) {
+        Sim sim(sim_args, dir + "sim.out", dir + "sim.err");
+        if (sim.device.empty()) {
+            state.SkipWithError("tape-adapter-sim did not start");
+            return;
+        }
+        // The adapter's watchdog (500 ms) would stop the punch in a 1 s stall, as it should: it is set to 3 s.
+        if (run_tape({"adapter", "config", sim.device, "--watchdog", "3000"}, dir + "cfg.out", dir + "cfg.err", 10s) !=
+            0) {
+            state.SkipWithError("tape adapter config failed");
+            return;
+        }
+        pid_t pid = -1;
+        int status = -1;
+        std::thread punch([&] {
+            status = run_tape({"punch", tape, sim.device, "--verify", sim.device, "--verify-timeout", "1"},
+                              dir + "punch.out", dir + "punch.err", 200s, &pid);
+        });
+        // The host stalls for 1 s, 20 s into the run (about 3000 rows punched, the adapter's queue full).
+        std::this_thread::sleep_for(20s);
+        bool stalled = pid > 0 && ::kill(pid, SIGSTOP) == 0;
+        std::this_thread::sleep_for(1s);
+        if (pid > 0) ::kill(pid, SIGCONT);
+        punch.join();
+        sim.stop();
+        std::string err = slurp(dir + "punch.err"), stats = slurp(dir + "sim.err");
+        std::size_t named = 0;
+        for (auto at : planted)
+            if (err.find("frame " + std::to_string(at) + ": punched ") != std::string::npos) ++named;
+        state.counters["exit_status"] = status;
+        state.counters["stalled"] = stalled;
+        state.counters["rows_punched"] = sim_stat(stats, "rows_punched");
+        state.counters["underruns"] = sim_stat(stats, "underruns");
+        state.counters["late_punches"] = sim_stat(stats, "late_punches");
+        state.counters["longest_punch_gap_ms"] = sim_stat(stats, "longest_punch_gap_us") / 1000;
+        state.counters["planted"] = static_cast<double>(planted.size());
+        state.counters["planted_named"] = static_cast<double>(named);
+        state.counters["other_differences_named"] =
+            static_cast<double>(std::count(err.begin(), err.end(), '\n')) - static_cast<double>(named);
+    }
+}
+BENCHMARK(BM_AdapterPunchHostStall)->Arg(10000)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+
+// Reads a whole tape through the backend, noting the longest wait between two deliveries of rows.
+struct TimedRead {
+    std::vector<std::uint8_t> rows;
+    double longest_wait_ms = 0;
+    std::string error;
+};
+TimedRead timed_read(const std::string& device) {
+    TimedRead r;
+    try {
+        auto t = tape::open_device(device, tape::DeviceUse::read);
+        std::uint8_t buf[4096];
+        std::chrono::steady_clock::time_point last{};
+        for (;;) {
+            auto got = t->read(buf, 5ms);
+            if (got.count) {
+                auto now = std::chrono::steady_clock::now();
+                if (last != std::chrono::steady_clock::time_point{})
+                    r.longest_wait_ms =
+                        std::max(r.longest_wait_ms, std::chrono::duration<double, std::milli>(now - last).count());
+                last = now;
+            }
+            r.rows.insert(r.rows.end(), buf, buf + got.count);
+            if (got.end) break;
+        }
+    } catch (const tape::Error& e) {
+        r.error = e.what();
+    }
+    return r;
+}
+
+void BM_AdapterDesyncs(benchmark::State& state) {
+    std::vector<std::uint8_t> frames;
+    std::string tape = make_tape(static_cast<std::size_t>(state.range(0)), frames);
+    const std::string dir = "/tmp/adapter_bench_";
+    for (auto _ : state) {
+        TimedRead clean, faulty;
+        {
+            Sim sim({"--reader", tape}, dir + "sim.out");
+            clean = timed_read(sim.device);
+        }
+        Sim sim({"--reader", tape, "--stats", "--garbage-every", std::to_string(state.range(1))}, dir + "sim.out",
+                dir + "sim.err");
+        if (sim.device.empty()) {
+            state.SkipWithError("tape-adapter-sim did not start");
+            return;
+        }
+        faulty = timed_read(sim.device);
+        sim.stop();
+        std::string stats = slurp(dir + "sim.err");
+        if (!faulty.error.empty()) {
+            state.SkipWithError(faulty.error.c_str());
+            return;
+        }
+        state.counters["desyncs"] = sim_stat(stats, "desyncs");
+        state.counters["complete_and_in_order"] = faulty.rows == frames && clean.rows == frames;
+        // From the last rows before a desync to the first after it, at most: the recovery time's bound.
+        state.counters["longest_wait_ms"] = faulty.longest_wait_ms;
+        state.counters["longest_wait_clean_ms"] = clean.longest_wait_ms;
+    }
+}
+BENCHMARK(BM_AdapterDesyncs)->Args({40000, 20})->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+
+void BM_AdapterUnplugs(benchmark::State& state) {
+    const int runs = static_cast<int>(state.range(0));
+    std::vector<std::uint8_t> frames;
+    std::string tape = make_tape(3000, frames);
+    const std::string dir = "/tmp/adapter_bench_";
+    for (auto _ : state) {
+        int exit3 = 0, prefix = 0, gone = 0;
+        std::vector<double> kept, short_of;
+        for (int i = 0; i < runs; ++i) {
+            std::size_t after = 100 + static_cast<std::size_t>(i) * 27;
+            Sim sim({"--reader", tape, "--speed", "4", "--unplug-after", std::to_string(after)}, dir + "sim.out",
+                    dir + "sim.err");
+            if (sim.device.empty()) {
+                state.SkipWithError("tape-adapter-sim did not start");
+                return;
+            }
+            std::remove((dir + "unplug.ptp").c_str());
+            int status =
+                run_tape({"read", sim.device, "-o", dir + "unplug.ptp"}, dir + "read.out", dir + "read.err", 20s);
+            std::string got = slurp(dir + "unplug.ptp");
+            exit3 += status == 3;
+            prefix += got.size() <= frames.size() &&
+                      std::equal(got.begin(), got.end(), frames.begin(),
+                                 [](char a, std::uint8_t b) { return static_cast<std::uint8_t>(a) == b; });
+            gone += slurp(dir + "read.err").find("the adapter is gone") != std::string::npos;
+            kept.push_back(static_cast<double>(got.size()));
+            // The simulator unplugs once it has read at least N: rows still in it or on the line are lost.
+            short_of.push_back(static_cast<double>(after) - static_cast<double>(got.size()));
+        }
+        state.counters["runs"] = runs;
+        state.counters["exit_3"] = exit3;
+        state.counters["file_is_prefix"] = prefix;
+        state.counters["said_gone"] = gone;
+        distribution(state, "frames_kept", kept);
+        distribution(state, "frames_short_of_unplug", short_of);
+    }
+}
+BENCHMARK(BM_AdapterUnplugs)->Arg(100)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <thread>
 
@@ -363,6 +364,38 @@ TEST(AdapterCdc, ConfigThroughTheCliIsWhatTheAdapterReadsWith) {
               "invert=0xFF lines=0x06 tracks=7 sample_delay_us=80 punch_pulse_us=2500 drive_pulse_us=300 "
               "sprocket_timeout_ms=50 watchdog_ms=1500")
         << sim.err();
+}
+
+TEST(AdapterCdc, DevicesProbeAsksEveryAdapterAttached) {
+    // A sysfs laid out as the kernel does for two CDC ports of tape adapters: ttyACM0 is the simulator
+    // (its port linked into a /dev of the test's own), ttyACM1 answers nothing (no such port).
+    TempDir dir;
+    namespace fs = std::filesystem;
+    fs::path sys = dir.file("sys"), dev = dir.file("dev");
+    fs::create_directories(dev);
+    fs::create_directories(sys / "class/tty");
+    for (std::string n : {"0", "1"}) {
+        fs::path usb = sys / ("devices/pci0/usb1/1-" + n), tty = usb / ("1-" + n + ":1.0/tty/ttyACM" + n);
+        fs::create_directories(tty);
+        std::ofstream(usb / "idVendor") << "1209\n";
+        std::ofstream(usb / "idProduct") << "0001\n";
+        std::ofstream(usb / "serial") << "TP000" << n << "\n";
+        fs::create_directory_symlink("../../../1-" + n + ":1.0", tty / "device");
+        fs::create_directory_symlink(tty, sys / "class/tty" / ("ttyACM" + n));
+    }
+    SIM_OR_SKIP(sim, dir, {"--serial", "TP0000", "--no-punch", "--link", (dev / "ttyACM0").string()});
+    ::setenv("TAPE_SYSFS_ROOT", sys.c_str(), 1);
+    ::setenv("TAPE_DEV_ROOT", dev.c_str(), 1);
+    Process tape({"devices", "--probe"}, dir);
+    ::unsetenv("TAPE_SYSFS_ROOT");
+    ::unsetenv("TAPE_DEV_ROOT");
+    EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+    std::string out = read_text(dir.file("stdout"));
+    std::string port0 = "adapter:" + (dev / "ttyACM0").string(), port1 = "adapter:" + (dev / "ttyACM1").string();
+    EXPECT_NE(out.find(port0 + "\t1209:0001 serial TP0000\n\tprotocol 1, firmware 0.1.0, reader 1500 frames/s\n"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find(port1 + "\t1209:0001 serial TP0001\n\tno answer: "), std::string::npos) << out;
 }
 
 TEST(AdapterCdc, PunchVerifyReadsTheTapeBackAndNamesAFrameThatDiffers) {

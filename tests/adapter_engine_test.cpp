@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <deque>
+#include <map>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "adapter_sim/sim_hardware.hpp"
@@ -507,4 +509,76 @@ TEST(AdapterEngine, OnePacketPerTransferForHidAndBulk) {
     ErrorReply er;
     ASSERT_TRUE(er.decode(e));
     EXPECT_EQ(er.code, ErrorCode::bad_packet);
+}
+
+TEST(AdapterEngine, ReadsBackwardsFromWhereTheTapeStandsWithTheRowFlagsTheBoardSets) {
+    tapesim::SimOptions o;
+    o.row_flags = {{10, row_flag::timing}, {250, row_flag::no_sprocket | row_flag::marginal}};
+    auto tape = test_tape(300);
+    Identity id;
+    id.capabilities = caps::reader | caps::reverse | caps::row_flags;
+    Bench b(tape, o, id);
+    // Forwards to the end first: 300 rows, two of them flagged where the board flagged them.
+    Packet p;
+    ReadStart{}.encode(p);
+    b.send(p);
+    b.run(400000);
+    std::vector<Rows> packets;
+    std::vector<std::uint8_t> got;
+    std::map<std::uint32_t, std::uint8_t> flagged;
+    auto collect = [&] {
+        while (auto q = b.take(Msg::rows)) {
+            Rows r;
+            ASSERT_TRUE(r.decode(*q));
+            ASSERT_EQ(r.first, got.size());
+            for (std::size_t i = 0; i < r.count; ++i) {
+                got.push_back(r.rows[i]);
+                if (r.flags[i]) flagged[static_cast<std::uint32_t>(r.first + i)] = r.flags[i];
+            }
+        }
+    };
+    collect();
+    ASSERT_EQ(got, tape);
+    EXPECT_EQ(flagged, (std::map<std::uint32_t, std::uint8_t>{{10, row_flag::timing},
+                                                              {250, row_flag::no_sprocket | row_flag::marginal}}));
+    // Then backwards, from the end to the start: the same frames, last first, numbered from 0 again.
+    b.inbox.clear();
+    ReadStart back;
+    back.reverse = 1;
+    back.encode(p);
+    b.send(p);
+    ASSERT_TRUE(b.take(Msg::ok));
+    EXPECT_EQ(b.hw.drive_state(), Drive::reverse);
+    b.run(400000);
+    got.clear();
+    flagged.clear();
+    collect();
+    ASSERT_EQ(got, std::vector<std::uint8_t>(tape.rbegin(), tape.rend()));
+    EXPECT_EQ(flagged, (std::map<std::uint32_t, std::uint8_t>{{289, row_flag::timing},
+                                                              {49, row_flag::no_sprocket | row_flag::marginal}}));
+    // The start of the tape has passed the head: tape out ends the run (the last STATUS; an earlier
+    // one told that tape out went off when the reader moved back from the end).
+    std::optional<Packet> st;
+    while (auto q = b.take(Msg::status)) st = q;
+    ASSERT_TRUE(st);
+    Status s;
+    ASSERT_TRUE(s.decode(*st));
+    EXPECT_TRUE(s.bits & status::tape_out);
+    EXPECT_EQ(s.frame, 300u);
+    EXPECT_EQ(b.hw.position(), 0u);
+}
+
+TEST(AdapterEngine, ReverseIsRefusedByAReaderThatCannot) {
+    Bench b(test_tape(50));  // the default identity: no reverse
+    Packet p;
+    ReadStart back;
+    back.reverse = 1;
+    back.encode(p);
+    b.send(p);
+    auto err = b.take(Msg::error);
+    ASSERT_TRUE(err);
+    ErrorReply e;
+    ASSERT_TRUE(e.decode(*err));
+    EXPECT_EQ(e.code, ErrorCode::bad_payload);
+    EXPECT_EQ(b.hw.drive_state(), Drive::stop);
 }

@@ -21,9 +21,11 @@ void add_devices(CLI::App& app) {
         std::string out;
         for (const auto& b : tape::device_backends())
             out += std::string(b.prefix) + "\t" + std::string(b.syntax) + "\n\t" + std::string(b.description) + "\n";
-        // TAPE_SYSFS_ROOT: another sysfs, for the tests.
+        // TAPE_SYSFS_ROOT and TAPE_DEV_ROOT: another sysfs and /dev, for the tests (--probe reaches a
+        // simulator through a link in the one /dev).
         const char* root = std::getenv("TAPE_SYSFS_ROOT");
-        auto ports = tape::attached_ports(root ? root : "/sys");
+        const char* dev = std::getenv("TAPE_DEV_ROOT");
+        auto ports = tape::attached_ports(root ? root : "/sys", dev ? dev : "/dev");
         out += ports.empty() ? "no USB serial port or tape adapter attached\n" : "attached:\n";
         for (const auto& p : ports) {
             char ids[16];

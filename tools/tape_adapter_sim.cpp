@@ -114,9 +114,11 @@ int run(const SimArgs& a) {
         while (hw.now() < target) {
             hw.advance_to(std::min(target, hw.now() + step), engine);
             engine.poll();
+            hw.after_poll();
             chad();
         }
         engine.poll();
+        hw.after_poll();
         chad();
         if (punched_out && hw.punched().size() > punched_written) {
             std::fwrite(hw.punched().data() + punched_written, 1, hw.punched().size() - punched_written, punched_out);
@@ -153,18 +155,18 @@ int run(const SimArgs& a) {
         // One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
         const tapefw::Config& c = hw.config();
         char line[512];
-        std::snprintf(line, sizeof line,
-                      "tape-adapter-sim: stats: tape_position=%llu rows_punched=%llu late_punches=%llu "
-                      "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
-                      "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
-                      "watchdog_ms=%u\n",
-                      static_cast<unsigned long long>(hw.position()),
-                      static_cast<unsigned long long>(hw.punched().size()),
-                      static_cast<unsigned long long>(hw.late_punches()),
-                      static_cast<unsigned long long>(hw.longest_punch_gap_us()),
-                      static_cast<unsigned long long>(filter.desyncs()),
-                      static_cast<unsigned long long>(engine.bad_packets()), c.data_invert, c.lines, c.tracks,
-                      c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us, c.sprocket_timeout_ms, c.watchdog_ms);
+        std::snprintf(
+            line, sizeof line,
+            "tape-adapter-sim: stats: tape_position=%llu rows_punched=%llu underruns=%llu late_punches=%llu "
+            "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
+            "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
+            "watchdog_ms=%u\n",
+            static_cast<unsigned long long>(hw.position()), static_cast<unsigned long long>(hw.punched().size()),
+            static_cast<unsigned long long>(hw.underruns()), static_cast<unsigned long long>(hw.late_punches()),
+            static_cast<unsigned long long>(hw.longest_punch_gap_us()),
+            static_cast<unsigned long long>(filter.desyncs()), static_cast<unsigned long long>(engine.bad_packets()),
+            c.data_invert, c.lines, c.tracks, c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us,
+            c.sprocket_timeout_ms, c.watchdog_ms);
         std::cerr << line;
     }
     return cli::ok;
@@ -223,9 +225,10 @@ int main(int argc, char** argv) {
     app.add_option("--garbage-every", a.faults.garbage_every,
                    "Before every K-th ROWS packet, a desync on the line: noise, or half a packet, in turn")
         ->check(whole_number(1, most));
-    app.add_flag("--stats", a.stats,
-                 "At the end, print on stderr the rows read and punched, late punch cycles, desyncs injected, bad "
-                 "packets from the host and the line settings in force");
+    app.add_flag(
+        "--stats", a.stats,
+        "At the end, print on stderr the tape's position, rows punched, punch underruns and late cycles, desyncs "
+        "injected, bad packets from the host and the line settings in force");
     app.add_option("--drop-packet", a.faults.drop_rows_packet, "Do not send the K-th ROWS packet (from 1)")
         ->check(whole_number(1, most));
     app.add_option("--drop-times", a.faults.drop_times,

@@ -14,10 +14,12 @@ SimHardware::SimHardware(std::vector<std::uint8_t> tape, SimOptions options)
 void SimHardware::drive(tapefw::Drive d) {
     if (d == drive_) return;
     drive_ = d;
-    if (d == tapefw::Drive::forward) {
+    if (d != tapefw::Drive::stop) {
         ++starts_;
         braking_left_ = 0;
-        if (!moving_) next_row_at_ = now_ + o_.start_us;
+        // A reversal goes through a stand-still: the clutch engages afresh.
+        if (!moving_ || backwards_ != (d == tapefw::Drive::reverse)) next_row_at_ = now_ + o_.start_us;
+        backwards_ = d == tapefw::Drive::reverse;
         moving_ = true;
     } else if (moving_) {
         braking_left_ = o_.stop_frames;
@@ -29,12 +31,23 @@ void SimHardware::advance_to(std::uint64_t t, tapefw::Engine& engine) {
     while (moving_ && next_row_at_ <= t) {
         now_ = next_row_at_;
         const auto& tape = reader_tape();
-        bool sprocket = position_ < tape.size() && !(o_.torn_at && position_ >= *o_.torn_at);
+        // The frame passing the head: the one at position_ forwards, the one before it backwards.
+        bool on_tape = backwards_ ? position_ > 0 : position_ < tape.size();
+        std::uint64_t frame = backwards_ ? position_ - 1 : position_;
+        bool sprocket = on_tape && !(o_.torn_at && frame >= *o_.torn_at);
         if (sprocket) {
+            std::uint8_t flags = 0;
+            for (const auto& [at, f] : o_.row_flags)
+                if (at == frame) flags = f;
             // The board gives the levels on the lines, as this unit's wiring makes them.
-            engine.on_row(static_cast<std::uint8_t>(tape[position_] ^ o_.active_low));
+            engine.on_row(static_cast<std::uint8_t>(tape[frame] ^ o_.active_low), flags);
         }
-        if (position_ < tape.size()) ++position_;
+        if (on_tape) {
+            if (backwards_)
+                --position_;
+            else
+                ++position_;
+        }
         next_row_at_ += period_us_;
         if (drive_ == tapefw::Drive::stop && (braking_left_ == 0 || --braking_left_ == 0)) moving_ = false;
     }
@@ -49,11 +62,17 @@ std::uint64_t SimHardware::next_event() const {
     return next;
 }
 
+void SimHardware::after_poll() {
+    if (punched_once_ && punch_ready()) punch_idle_ = true;
+}
+
 bool SimHardware::punch_ready() { return !punched_once_ || now_ >= last_punch_ + punch_period_us_; }
 
 void SimHardware::punch(std::uint8_t row) {
     if (std::find(o_.miss_hole_at.begin(), o_.miss_hole_at.end(), punched_.size() + 1) != o_.miss_hole_at.end())
         row = static_cast<std::uint8_t>(row & (row - 1));
+    if (punch_idle_) ++underruns_;
+    punch_idle_ = false;
     if (punched_once_) {
         std::uint64_t gap = now_ - last_punch_;
         if (2 * gap > 3 * punch_period_us_) ++late_punches_;
@@ -66,7 +85,7 @@ void SimHardware::punch(std::uint8_t row) {
 
 std::uint16_t SimHardware::status_lines() {
     std::uint16_t bits = forced_status;
-    if (position_ >= reader_tape().size()) bits |= tapefw::status::tape_out;
+    if (backwards_ ? position_ == 0 : position_ >= reader_tape().size()) bits |= tapefw::status::tape_out;
     return bits;
 }
 

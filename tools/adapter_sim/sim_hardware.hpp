@@ -2,14 +2,16 @@
 // interface, on a virtual clock: the simulator (tape_adapter_sim.cpp) and the engine tests drive it.
 //
 // The reader moves tape at its rate while driven; told to stop it brakes, and the rows that pass the
-// head while it brakes (the stopping distance) are still read. When the tape's end has passed the
-// head the tape-out input goes on. A torn tape is one whose sprocket holes stop at a frame: no more
+// head while it brakes (the stopping distance) are still read. Driven in reverse it reads the frames
+// before the head, last first. When the tape's end (or, in reverse, its start) has passed the head the
+// tape-out input goes on. A torn tape is one whose sprocket holes stop at a frame: no more
 // rows come, and tape-out stays off. The punch takes one row per cycle at its rate.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/engine.hpp"
@@ -25,6 +27,8 @@ struct SimOptions {
     std::optional<std::uint64_t> torn_at{};  ///< no sprocket from this frame (0-based) on
     std::uint8_t active_low = 0;             ///< the unit's data lines that read a hole as a low level (its wiring)
     bool loop = false;                       ///< the tape the punch punches goes on into the reader (to read it back)
+    /// Frames (0-based) the board flags as it samples them (row_flag bits: no sprocket, timing, marginal).
+    std::vector<std::pair<std::uint64_t, std::uint8_t>> row_flags{};
     std::vector<std::uint64_t> miss_hole_at{};  ///< rows N (from 1) punched with their lowest hole missing (a worn pin)
 };
 
@@ -52,6 +56,11 @@ public:
     /// Rows punched more than one and a half punch cycles after the row before: the punch stood idle
     /// for want of a row (the queue ran dry), and the longest such wait, on the virtual clock.
     std::uint64_t late_punches() const { return late_punches_; }
+    /// Called after each Engine::poll: a punch still ready then had no row queued (the engine punches
+    /// whenever it is ready and has one). A row punched after such a poll counts as an underrun: the
+    /// punch waited for the host, not for the simulator's clock.
+    void after_poll();
+    std::uint64_t underruns() const { return underruns_; }
     std::uint64_t longest_punch_gap_us() const { return longest_punch_gap_us_; }
 
     std::uint32_t now_us() override { return static_cast<std::uint32_t>(now_); }
@@ -72,12 +81,14 @@ private:
     std::uint64_t next_row_at_ = 0;   ///< when it passes, while moving
     std::uint32_t braking_left_ = 0;  ///< rows still to pass while braking
     bool moving_ = false;
+    bool backwards_ = false;  ///< the way the tape moves (or last moved)
     std::uint64_t last_punch_ = 0;
     bool punched_once_ = false;
     std::vector<std::uint8_t> punched_;
     tapefw::Config config_{};
     std::uint64_t starts_ = 0;
-    std::uint64_t late_punches_ = 0, longest_punch_gap_us_ = 0;
+    std::uint64_t late_punches_ = 0, longest_punch_gap_us_ = 0, underruns_ = 0;
+    bool punch_idle_ = false;
     const std::vector<std::uint8_t>& reader_tape() const { return o_.loop ? punched_ : tape_; }
 };
 
