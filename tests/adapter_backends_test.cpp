@@ -110,7 +110,8 @@ TEST_P(AdapterBackend, RecoversADroppedADuplicatedAndADamagedPacket) {
     EXPECT_EQ(r.error, "");
     EXPECT_EQ(r.frames, tape);
     auto notes = t->take_notes();
-    EXPECT_GE(notes.size(), 2u);  // the dropped and the damaged packet's frames came again
+    // The dropped and the damaged packet's frames came again: in one range, when one RESEND got both.
+    EXPECT_GE(notes.size(), 1u);
     expect_clean(a);
 }
 
