@@ -378,10 +378,11 @@ void BM_AdapterDesyncs(benchmark::State& state) {
         faulty = timed_read(sim.device);
         sim.stop();
         std::string stats = slurp(dir + "sim.err");
-        if (!faulty.error.empty()) {
-            state.SkipWithError(faulty.error.c_str());
-            return;
-        }
+        for (const auto* r : {&clean, &faulty})
+            if (!r->error.empty()) {
+                state.SkipWithError(r->error.c_str());
+                return;
+            }
         state.counters["desyncs"] = sim_stat(stats, "desyncs");
         state.counters["complete_and_in_order"] = faulty.rows == frames && clean.rows == frames;
         // From the last rows before a desync to the first after it, at most: the recovery time's bound.

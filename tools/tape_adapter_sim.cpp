@@ -111,7 +111,16 @@ int run(const SimArgs& a) {
             if (a.chad_full_after && hw.punched().size() >= a.chad_full_after)
                 hw.forced_status |= tapefw::status::chad_full;
         };
+        // Catching up after the process was not scheduled: the host's packets that came meanwhile are
+        // taken step by step, as the board's USB interrupt would take them, so that the watchdog does
+        // not count the simulator's own pause as the host's silence.
+        auto take_input = [&] {
+            std::uint8_t buf[4096];
+            ssize_t n = ::read(master, buf, sizeof buf);
+            if (n > 0) engine.receive(buf, static_cast<std::size_t>(n));
+        };
         while (hw.now() < target) {
+            take_input();
             hw.advance_to(std::min(target, hw.now() + step), engine);
             engine.poll();
             hw.after_poll();
