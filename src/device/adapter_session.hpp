@@ -33,6 +33,38 @@ public:
     virtual std::string name() const = 0;
 };
 
+/// The vendor and product id a usb: or hid: device string starts with, "1209:0001" in hex.
+struct UsbId {
+    std::uint16_t vendor = 0, product = 0;
+    /// "1209:0001"
+    std::string text() const;
+};
+/// Error(Errc::usage) when the query's path is no VID:PID. backend: "usb" or "hid", for the message.
+UsbId usb_id(std::string_view backend, const DeviceQuery& query);
+
+/// A pipe carrying one packet per transfer (vendor bulk, HID reports): the receive loop and the count of
+/// transfers that were no packet, once for both.
+class TransferPipe : public PacketPipe {
+public:
+    std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout) final;
+    std::uint64_t bad_packets() const final { return bad_; }
+
+protected:
+    /// Waits up to wait for one transfer into in (room for tapefw::report_size bytes): its bytes, 0 on
+    /// time-out, -1 for a transfer that cannot be a packet. Throws Error(Errc::io) when the adapter is gone.
+    virtual int receive_transfer(std::uint8_t* in, std::chrono::milliseconds wait) = 0;
+
+private:
+    std::uint64_t bad_ = 0;
+};
+
+/// Error(Errc::io) "NAME: the adapter is gone (unplugged?)", with why when the library said more.
+Error adapter_gone(const std::string& name, const std::string& why = {});
+/// Error(Errc::io) "NAME: no adapter VID:PID [with serial S] is attached (attached: A B)": seen are the
+/// serials of the adapters with that id that did not match.
+Error none_attached(const std::string& name, const UsbId& id, std::optional<std::string_view> serial,
+                    const std::vector<std::string>& seen);
+
 /// The pipe to the adapter a device string names (adapter:PATH, usb:VID:PID, hid:VID:PID). Throws
 /// Error(Errc::usage) for a string that names no adapter, Error(Errc::io) when it cannot be opened.
 std::unique_ptr<PacketPipe> open_pipe(std::string_view device);
@@ -44,15 +76,6 @@ inline constexpr std::string_view settings_keys[] = {"serial", "tracks", "invert
 /// The adapter as a Transport, over pipe, for use: reads are the reader's rows, writes the punch's.
 /// Refuses (Error(Errc::io)) an adapter whose serial is not the query's serial=.
 std::unique_ptr<Transport> open_transport(std::unique_ptr<PacketPipe> pipe, const DeviceQuery& query, DeviceUse use);
-
-/// The vendor and product id a usb: or hid: device string starts with, "1209:0001" in hex.
-struct UsbId {
-    std::uint16_t vendor = 0, product = 0;
-    /// "1209:0001"
-    std::string text() const;
-};
-/// Error(Errc::usage) when the query's path is no VID:PID. backend: "usb" or "hid", for the message.
-UsbId usb_id(std::string_view backend, const DeviceQuery& query);
 
 /// Timing of the host's side; tests shorten nothing, they are the protocol's own numbers.
 struct SessionTiming {

@@ -55,7 +55,7 @@ public:
             auto left =
                 std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
             ReadResult r = posix::read_fd(fd_, buffer_, std::max(left, std::chrono::milliseconds(0)), name());
-            if (r.end) throw Error(Errc::io, name() + ": the adapter is gone (unplugged?)");
+            if (r.end) throw adapter::adapter_gone(name());
             at_ = 0;
             used_ = r.count;
             if (r.count == 0 && left.count() <= 0) return std::nullopt;
@@ -77,7 +77,7 @@ private:
         try {
             posix::write_fd(fd_, bytes, name());
         } catch (const Error&) {
-            throw Error(Errc::io, name() + ": the adapter is gone (unplugged?)");
+            throw adapter::adapter_gone(name());
         }
     }
 };
@@ -164,6 +164,40 @@ adapter::UsbId adapter::usb_id(std::string_view backend, const DeviceQuery& q) {
         q.fail("'" + std::string(backend) + ":" + path + "' names no vendor:product id in hex, e.g. " +
                std::string(backend) + ":1209:0001");
     return id;
+}
+
+Error adapter::adapter_gone(const std::string& name, const std::string& why) {
+    return Error(Errc::io, name + ": the adapter is gone (unplugged?)" + (why.empty() ? "" : ": " + why));
+}
+
+Error adapter::none_attached(const std::string& name, const UsbId& id, std::optional<std::string_view> serial,
+                             const std::vector<std::string>& seen) {
+    std::string what =
+        "no adapter " + id.text() + (serial ? " with serial " + std::string(*serial) : "") + " is attached";
+    if (!seen.empty()) {
+        what += " (attached:";
+        for (const auto& s : seen) what += " " + s;
+        what += ")";
+    }
+    return Error(Errc::io, name + ": " + what);
+}
+
+std::optional<tapefw::Packet> adapter::TransferPipe::receive(std::chrono::milliseconds timeout) {
+    auto deadline = std::chrono::steady_clock::now() + timeout;
+    for (;;) {
+        auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        std::uint8_t in[tapefw::report_size];
+        int n = receive_transfer(in, std::max(left, std::chrono::milliseconds(0)));
+        if (n != 0) {
+            // A bulk transfer holds the packet alone, a HID report has it padded: decode_report takes both.
+            tapefw::Packet p;
+            if (n > 0 && tapefw::decode_report(in, static_cast<std::size_t>(n), p) == tapefw::PacketFault::none)
+                return p;
+            ++bad_;
+            continue;
+        }
+        if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
+    }
 }
 
 std::string adapter::UsbId::text() const {

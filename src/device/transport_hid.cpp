@@ -20,7 +20,7 @@ std::string narrow(const wchar_t* w) {
     return s;
 }
 
-class HidPipe : public adapter::PacketPipe {
+class HidPipe : public adapter::TransferPipe {
 public:
     explicit HidPipe(const DeviceQuery& q) {
         adapter::UsbId id = adapter::usb_id("hid", q);
@@ -40,14 +40,7 @@ public:
         }
         hid_free_enumeration(list);
         if (path.empty()) {
-            std::string what =
-                "no adapter " + id.text() + (serial ? " with serial " + std::string(*serial) : "") + " is attached";
-            if (!seen.empty()) {
-                what += " (attached:";
-                for (const auto& s : seen) what += " " + s;
-                what += ")";
-            }
-            throw Error(Errc::io, name_ + ": " + what);
+            throw adapter::none_attached(name_, id, serial, seen);
         }
         device_ = hid_open_path(path.c_str());
         if (!device_) {
@@ -64,36 +57,21 @@ public:
         std::uint8_t report[1 + tapefw::report_size] = {};
         tapefw::encode_packet(p, report + 1);
         int n = hid_write(device_, report, sizeof report);
-        if (n < 0) throw Error(Errc::io, name_ + ": the adapter is gone (unplugged?): " + narrow(hid_error(device_)));
+        if (n < 0) throw adapter::adapter_gone(name_, narrow(hid_error(device_)));
     }
 
-    std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout) override {
-        auto deadline = std::chrono::steady_clock::now() + timeout;
-        for (;;) {
-            auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-            std::uint8_t report[tapefw::report_size];
-            int n = hid_read_timeout(device_, report, sizeof report,
-                                     static_cast<int>(std::max<std::int64_t>(0, left.count())));
-            if (n < 0)
-                throw Error(Errc::io, name_ + ": the adapter is gone (unplugged?): " + narrow(hid_error(device_)));
-            if (n > 0) {
-                tapefw::Packet p;
-                if (tapefw::decode_report(report, static_cast<std::size_t>(n), p) == tapefw::PacketFault::none)
-                    return p;
-                ++bad_;
-                continue;
-            }
-            if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
-        }
-    }
-
-    std::uint64_t bad_packets() const override { return bad_; }
     std::string name() const override { return name_; }
+
+protected:
+    int receive_transfer(std::uint8_t* in, std::chrono::milliseconds wait) override {
+        int n = hid_read_timeout(device_, in, tapefw::report_size, static_cast<int>(wait.count()));
+        if (n < 0) throw adapter::adapter_gone(name_, narrow(hid_error(device_)));
+        return n;
+    }
 
 private:
     std::string name_;
     hid_device* device_ = nullptr;
-    std::uint64_t bad_ = 0;
 };
 
 }  // namespace

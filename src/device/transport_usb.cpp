@@ -14,7 +14,7 @@ namespace {
 
 constexpr unsigned send_timeout_ms = 1000;
 
-class UsbPipe : public adapter::PacketPipe {
+class UsbPipe : public adapter::TransferPipe {
 public:
     explicit UsbPipe(const DeviceQuery& q) : id_(adapter::usb_id("usb", q)) {
         name_ = "usb:" + id_.text();
@@ -46,32 +46,18 @@ public:
         if (done != n) throw Error(Errc::io, name_ + ": the adapter took part of a packet");
     }
 
-    std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout) override {
-        auto deadline = std::chrono::steady_clock::now() + timeout;
-        for (;;) {
-            auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-            // libusb takes 0 as no time-out at all: a poll asks for the shortest wait instead.
-            unsigned ms = static_cast<unsigned>(std::max<std::int64_t>(1, left.count()));
-            std::uint8_t in[tapefw::report_size];
-            int got = 0;
-            int r = libusb_bulk_transfer(handle_, in_ep_, in, sizeof in, &got, ms);
-            if (r == LIBUSB_ERROR_OVERFLOW) {
-                ++bad_;  // more than one packet's bytes: not ours
-                continue;
-            }
-            if (r != 0 && r != LIBUSB_ERROR_TIMEOUT) check(r, "cannot receive a packet");
-            if (got > 0) {
-                tapefw::Packet p;
-                if (tapefw::decode_packet(in, static_cast<std::size_t>(got), p) == tapefw::PacketFault::none) return p;
-                ++bad_;
-                continue;
-            }
-            if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
-        }
-    }
-
-    std::uint64_t bad_packets() const override { return bad_; }
     std::string name() const override { return name_; }
+
+protected:
+    int receive_transfer(std::uint8_t* in, std::chrono::milliseconds wait) override {
+        // libusb takes 0 as no time-out at all: a poll asks for the shortest wait instead.
+        unsigned ms = static_cast<unsigned>(std::max<std::int64_t>(1, wait.count()));
+        int got = 0;
+        int r = libusb_bulk_transfer(handle_, in_ep_, in, static_cast<int>(tapefw::report_size), &got, ms);
+        if (r == LIBUSB_ERROR_OVERFLOW) return -1;  // more than one packet's bytes: not ours
+        if (r != 0 && r != LIBUSB_ERROR_TIMEOUT) check(r, "cannot receive a packet");
+        return got;
+    }
 
 private:
     adapter::UsbId id_;
@@ -80,11 +66,10 @@ private:
     libusb_device_handle* handle_ = nullptr;
     int interface_ = -1;
     unsigned char in_ep_ = 0, out_ep_ = 0;
-    std::uint64_t bad_ = 0;
 
     void check(int r, const std::string& what) const {
         if (r >= 0) return;
-        if (r == LIBUSB_ERROR_NO_DEVICE) throw Error(Errc::io, name_ + ": the adapter is gone (unplugged?)");
+        if (r == LIBUSB_ERROR_NO_DEVICE) throw adapter::adapter_gone(name_);
         if (r == LIBUSB_ERROR_ACCESS)
             throw Error(Errc::io,
                         name_ + ": " + what + ": no permission (install udev/70-tape-adapter.rules, see tape-usb(7))");
@@ -129,14 +114,7 @@ private:
         libusb_free_device_list(list, 1);  // the handle keeps its device
         if (!chosen) {
             if (refused) check(refused, "cannot open the adapter");
-            std::string what = "no adapter " + id_.text() +
-                               (serial ? " with serial " + std::string(*serial) : std::string()) + " is attached";
-            if (!seen.empty()) {
-                what += " (attached:";
-                for (const auto& s : seen) what += " " + s;
-                what += ")";
-            }
-            throw Error(Errc::io, name_ + ": " + what);
+            throw adapter::none_attached(name_, id_, serial, seen);
         }
         find_interface(libusb_get_device(handle_));
         // The kernel may have bound a driver to the interface; it goes back when the interface is released.
