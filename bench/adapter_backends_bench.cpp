@@ -11,19 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "adapter_reading.hpp"
 #include "fake_adapter/fake_adapter.hpp"
-#include "tape/device.hpp"
-#include "tape/error.hpp"
 
 namespace {
 
 using namespace std::chrono_literals;
-
-std::vector<std::uint8_t> make_tape(std::size_t n) {
-    std::vector<std::uint8_t> frames(n);
-    for (std::size_t i = 0; i < n; ++i) frames[i] = static_cast<std::uint8_t>((i * 131 + i / 977) & 0xFF);
-    return frames;
-}
 
 void BM_AdapterRead(benchmark::State& state) {
     const auto link = static_cast<fake::Link>(state.range(0));
@@ -34,7 +27,7 @@ void BM_AdapterRead(benchmark::State& state) {
         return;
     }
     state.SetLabel(fake::link_name(link));
-    auto tape = make_tape(n);
+    auto tape = adapter_test_tape(n);
     for (auto _ : state) {
         fake::Options o;
         o.link = link;
@@ -42,29 +35,7 @@ void BM_AdapterRead(benchmark::State& state) {
         o.speed = speed;
         o.tape = tape;
         fake::Adapter a(o);
-        std::vector<std::uint8_t> got;
-        got.reserve(n);
-        auto start = std::chrono::steady_clock::now();
-        try {
-            auto t = tape::open_device(a.device(), tape::DeviceUse::read);
-            std::uint8_t buf[4096];
-            for (;;) {
-                auto r = t->read(buf, 100ms);
-                got.insert(got.end(), buf, buf + r.count);
-                if (r.end) break;
-            }
-        } catch (const tape::Error& e) {
-            state.SkipWithError(e.what());
-            return;
-        }
-        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::size_t same = 0;
-        while (same < std::min(n, got.size()) && got[same] == tape[same]) ++same;
-        state.counters["frames"] = static_cast<double>(got.size());
-        state.counters["sim_fps"] = static_cast<double>(got.size()) / (s * speed);
-        state.counters["lost"] = static_cast<double>(n - std::min(n, same));
-        state.counters["doubled"] = static_cast<double>(got.size() > n ? got.size() - n : 0);
-        state.counters["real_s"] = s;
+        read_and_score(state, a.device(), tape, speed);
     }
 }
 
@@ -75,7 +46,7 @@ void BM_AdapterLostPacketReported(benchmark::State& state) {
         return;
     }
     state.SetLabel(fake::link_name(link));
-    auto tape = make_tape(30000);
+    auto tape = adapter_test_tape(30000);
     for (auto _ : state) {
         fake::Options o;
         o.link = link;
@@ -85,30 +56,7 @@ void BM_AdapterLostPacketReported(benchmark::State& state) {
         o.faults.drop_rows_packet = 20;
         o.faults.drop_times = 1000000;
         fake::Adapter a(o);
-        std::size_t got = 0;
-        std::chrono::steady_clock::time_point stalled{};
-        std::string error;
-        try {
-            auto t = tape::open_device(a.device(), tape::DeviceUse::read);
-            std::uint8_t buf[4096];
-            for (;;) {
-                auto r = t->read(buf, 20ms);
-                if (r.count) stalled = {};
-                if (!r.count && stalled == std::chrono::steady_clock::time_point{})
-                    stalled = std::chrono::steady_clock::now();
-                got += r.count;
-                if (r.end) break;
-            }
-        } catch (const tape::Error& e) {
-            error = e.what();
-        }
-        if (error.find(" lost") == std::string::npos) {
-            state.SkipWithError(("the loss was not reported: " + error).c_str());
-            return;
-        }
-        // From the last row the host took (the loss is right after it) to the report.
-        state.counters["report_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - stalled).count();
-        state.counters["kept_frames"] = static_cast<double>(got);
+        time_loss_report(state, a.device());
     }
 }
 

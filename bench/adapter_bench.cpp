@@ -38,6 +38,8 @@
 #include <thread>
 #include <vector>
 
+#include "adapter_reading.hpp"
+#include "emulator_on_pty.hpp"
 #include "spawn_util.hpp"
 #include "tape/device.hpp"
 #include "tape/dnc.hpp"
@@ -107,8 +109,7 @@ void distribution(benchmark::State& state, const std::string& prefix, std::vecto
 }
 
 std::string make_tape(std::size_t n, std::vector<std::uint8_t>& frames) {
-    frames.resize(n);
-    for (std::size_t i = 0; i < n; ++i) frames[i] = static_cast<std::uint8_t>((i * 131 + i / 977) & 0xFF);
+    frames = adapter_test_tape(n);
     std::string path = "/tmp/adapter_bench_tape.ptp";
     std::ofstream(path, std::ios::binary)
         .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(n));
@@ -126,28 +127,7 @@ void BM_AdapterCdcRead(benchmark::State& state) {
             state.SkipWithError("tape-adapter-sim did not start");
             return;
         }
-        std::vector<std::uint8_t> got;
-        got.reserve(n);
-        auto start = std::chrono::steady_clock::now();
-        try {
-            auto t = tape::open_device(sim.device, tape::DeviceUse::read);
-            std::uint8_t buf[4096];
-            for (;;) {
-                auto r = t->read(buf, 100ms);
-                got.insert(got.end(), buf, buf + r.count);
-                if (r.end) break;
-            }
-        } catch (const tape::Error& e) {
-            state.SkipWithError(e.what());
-            return;
-        }
-        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::size_t same = 0;
-        while (same < got.size() && same < n && got[same] == frames[same]) ++same;
-        state.counters["sim_fps"] = static_cast<double>(got.size()) / (s * speed);
-        state.counters["lost"] = static_cast<double>(n - std::min(n, same));
-        state.counters["doubled"] = static_cast<double>(got.size() > n ? got.size() - n : 0);
-        state.counters["real_s"] = s;
+        read_and_score(state, sim.device, frames, speed);
     }
 }
 // 10 minutes of tape at 1500 frames/s, 30 times faster than real time.
@@ -162,30 +142,7 @@ void BM_AdapterCdcLostPacketReported(benchmark::State& state) {
             state.SkipWithError("tape-adapter-sim did not start");
             return;
         }
-        std::size_t got = 0;
-        std::chrono::steady_clock::time_point stalled{};
-        std::string error;
-        try {
-            auto t = tape::open_device(sim.device, tape::DeviceUse::read);
-            std::uint8_t buf[4096];
-            for (;;) {
-                auto r = t->read(buf, 20ms);
-                if (r.count) stalled = {};
-                if (!r.count && stalled == std::chrono::steady_clock::time_point{})
-                    stalled = std::chrono::steady_clock::now();
-                got += r.count;
-                if (r.end) break;
-            }
-        } catch (const tape::Error& e) {
-            error = e.what();
-        }
-        if (error.find(" lost") == std::string::npos) {
-            state.SkipWithError("the loss was not reported");
-            return;
-        }
-        // From the last row the host took (the loss is right after it) to the report.
-        state.counters["report_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - stalled).count();
-        state.counters["kept_frames"] = static_cast<double>(got);
+        time_loss_report(state, sim.device);
     }
 }
 BENCHMARK(BM_AdapterCdcLostPacketReported)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
@@ -193,23 +150,14 @@ BENCHMARK(BM_AdapterCdcLostPacketReported)->Unit(benchmark::kMillisecond)->Itera
 void BM_EmulateStopOnDc3(benchmark::State& state) {
     const double rate = 1500;
     const int stops = static_cast<int>(state.range(0));
-    // A tape longer than the run, with no end of program to rewind at.
-    std::string text = "%\n";
-    for (int n = 1; text.size() < 400000; ++n)
-        text += "N" + std::to_string(n) + " G01 X+" + std::to_string(n) + ".5 F120\n";
-    auto tape = tape::encode(text, tape::EncodeOptions{.leader = 0, .trailer = 0});
+    auto tape = long_program_tape(400000);
     for (auto _ : state) {
-        int master = -1, slave = -1;
-        char name[128];
-        if (::openpty(&master, &slave, name, nullptr, nullptr) != 0) {
+        EmulatorOnPty emulator(tape, rate);
+        if (emulator.master < 0) {
             state.SkipWithError("openpty failed");
             return;
         }
-        auto line =
-            tape::open_device(std::string("serial:") + name + "?baud=115200&flow=xonxoff", tape::DeviceUse::both);
-        std::atomic<bool> stop{false};
-        std::thread emulator(
-            [&] { tape::emulate_reader(*line, tape, tape::EmulatorOptions{.rate = rate, .stop = &stop}); });
+        const int master = emulator.master;
         std::mt19937 rng(7);
         std::vector<double> after, arrived, stop_us;
         std::uint8_t buf[4096];
@@ -254,11 +202,6 @@ void BM_EmulateStopOnDc3(benchmark::State& state) {
             after.push_back(sent_after);
             stop_us.push_back(n ? std::chrono::duration<double, std::micro>(last - sent_dc3).count() : 0.0);
         }
-        stop = true;
-        emulator.join();
-        line.reset();
-        ::close(master);
-        ::close(slave);
         if (!ok) {
             state.SkipWithError("the pseudo-terminal failed");
             return;

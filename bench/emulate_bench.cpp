@@ -10,35 +10,26 @@
 
 #include <algorithm>
 #include <atomic>
+#include <optional>
 #include <thread>
 #include <vector>
 
-#include "tape/device.hpp"
+#include "emulator_on_pty.hpp"
 #include "tape/dnc.hpp"
-#include "tape/encode.hpp"
 
 namespace {
 
 void BM_EmulateIntoPty(benchmark::State& state) {
     const double rate = static_cast<double>(state.range(0));
     const auto seconds = std::chrono::seconds(state.range(1));
-    // A tape longer than the run, with no end of program to rewind at.
-    std::string text = "%\n";
-    for (int n = 1; text.size() < 40000; ++n)
-        text += "N" + std::to_string(n) + " G01 X+" + std::to_string(n) + ".5 F120\n";
-    auto tape = tape::encode(text, tape::EncodeOptions{.leader = 0, .trailer = 0});
+    auto tape = long_program_tape(40000);
     for (auto _ : state) {
-        int master = -1, slave = -1;
-        char name[128];
-        if (::openpty(&master, &slave, name, nullptr, nullptr) != 0) {
+        std::optional<EmulatorOnPty> emulator(std::in_place, tape, rate);
+        if (emulator->master < 0) {
             state.SkipWithError("openpty failed");
             return;
         }
-        auto line =
-            tape::open_device(std::string("serial:") + name + "?baud=115200&flow=xonxoff", tape::DeviceUse::both);
-        std::atomic<bool> stop{false};
-        std::thread emulator(
-            [&] { tape::emulate_reader(*line, tape, tape::EmulatorOptions{.rate = rate, .stop = &stop}); });
+        const int master = emulator->master;
         std::uint8_t dc1 = tape::dc1;
         if (::write(master, &dc1, 1) != 1) state.SkipWithError("write failed");
         std::vector<std::chrono::steady_clock::time_point> arrivals;
@@ -52,11 +43,7 @@ void BM_EmulateIntoPty(benchmark::State& state) {
             auto now = std::chrono::steady_clock::now();
             for (ssize_t i = 0; i < n; ++i) arrivals.push_back(now);
         }
-        stop = true;
-        emulator.join();
-        line.reset();
-        ::close(master);
-        ::close(slave);
+        emulator.reset();
         if (arrivals.size() < 2) {
             state.SkipWithError("no frames");
             return;

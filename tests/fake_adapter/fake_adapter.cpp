@@ -284,7 +284,6 @@ struct Adapter::Impl {
     void run() {
         const auto t0 = clock::now();
         const std::uint64_t step = static_cast<std::uint64_t>(16e6 / o.sim.read_rate);
-        std::size_t punched_seen = 0;
         for (;;) {
             std::deque<std::vector<std::uint8_t>> in;
             {
@@ -306,10 +305,9 @@ struct Adapter::Impl {
             {
                 std::lock_guard l(m);
                 rows = engine->rows_read();
-                if (hw.punched().size() > punched_seen) {
-                    punched.assign(hw.punched().begin(), hw.punched().end());
-                    punched_seen = punched.size();
-                }
+                // Only the rows punched since: the whole run is not copied at every turn.
+                punched.insert(punched.end(), hw.punched().begin() + static_cast<long>(punched.size()),
+                               hw.punched().end());
             }
             if (up && o.unplug_after && engine->rows_read() >= o.unplug_after) unplug();
             deliver();
