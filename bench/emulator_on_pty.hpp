@@ -33,8 +33,9 @@ public:
             return;
         }
         line_ = tape::open_device(std::string("serial:") + name + "?baud=115200&flow=xonxoff", tape::DeviceUse::both);
-        emulator_ = std::thread(
-            [this, &tape, rate] { tape::emulate_reader(*line_, tape, tape::EmulatorOptions{.rate = rate, .stop = &stop_}); });
+        emulator_ = std::thread([this, &tape, rate] {
+            tape::emulate_reader(*line_, tape, tape::EmulatorOptions{.rate = rate, .stop = &stop_});
+        });
     }
     ~EmulatorOnPty() {
         stop_ = true;
