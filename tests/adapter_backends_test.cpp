@@ -98,6 +98,34 @@ TEST_P(AdapterBackend, ReadsATapeWholeEveryFrameOnce) {
     expect_clean(a);
 }
 
+// From the tape's end, direction=reverse: the rows come last first, and the rows the adapter flags are
+// named in runs of alike ones, counted in the order they came.
+TEST_P(AdapterBackend, ReadsBackwardsAndNamesTheRowsTheReaderDoubts) {
+    auto tape = pattern(3000, 9);
+    auto o = options(tape);
+    o.sim.head_at_end = true;
+    o.sim.row_flags = {
+        {10, tapefw::row_flag::no_sprocket}, {11, tapefw::row_flag::no_sprocket}, {2000, tapefw::row_flag::marginal}};
+    fake::Adapter a(o);
+    auto t = tape::open_device(a.device() + "&direction=reverse", tape::DeviceUse::read);
+    EXPECT_TRUE(t->backwards());
+    ReadRun r = read_all(*t);
+    EXPECT_EQ(r.error, "");
+    EXPECT_TRUE(r.ended);
+    EXPECT_EQ(r.frames, std::vector<std::uint8_t>(tape.rbegin(), tape.rend()));
+    auto doubts = t->take_doubts();
+    ASSERT_EQ(doubts.runs.size(), 2u);
+    EXPECT_EQ(doubts.runs[0].first, 1000u);  // tape frame 2001, the 1000th to come
+    EXPECT_EQ(doubts.runs[0].last, 1000u);
+    EXPECT_EQ(doubts.runs[0].what, "a track's level was near its threshold");
+    EXPECT_EQ(doubts.runs[1].first, 2989u);
+    EXPECT_EQ(doubts.runs[1].last, 2990u);
+    EXPECT_EQ(doubts.runs[1].what, "read without a sprocket hole (sampled by time)");
+    EXPECT_EQ(doubts.unkept, 0u);
+    EXPECT_TRUE(t->take_doubts().runs.empty());
+    expect_clean(a);
+}
+
 TEST_P(AdapterBackend, RecoversADroppedADuplicatedAndADamagedPacket) {
     auto tape = pattern(6000, 1);
     auto o = options(tape);
@@ -261,6 +289,36 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
         EXPECT_EQ(std::vector<std::uint8_t>(got.begin(), got.end()),
                   std::vector<std::uint8_t>(tape.begin(), tape.begin() + static_cast<long>(got.size())));
         expect_clean(a);
+    }
+}
+
+// Two adapters at once, one on its vendor interface and one on HID: tape devices (a real process) finds
+// both in sysfs, told apart by serial, under the device strings that reach them, and --probe asks each
+// for its capabilities through them. (The CDC layout, a tty in sysfs, is the devices-list CLI case's.)
+TEST(AdapterDevices, TapeDevicesListsUsbAndHidAdaptersBySerialAndProbesThem) {
+    std::string why = fake::umockdev_unavailable();
+    if (!why.empty()) GTEST_SKIP() << why;
+    TempDir dir;
+    fake::Adapter bulk(fake::Options{.link = Link::usb, .serial = "TP-BULK-7"});
+    fake::Adapter hid(fake::Options{.link = Link::hid, .serial = "TP-HID-9"});
+    ::setenv("LD_PRELOAD", "libumockdev-preload.so.0", 1);
+    struct Unset {
+        ~Unset() { ::unsetenv("LD_PRELOAD"); }
+    } unset;
+    pid_t pid = spawn_to_files(TAPE_BINARY, {"devices", "--probe"}, dir.file("out"), dir.file("err"));
+    ASSERT_GT(pid, 0);
+    auto status = wait_for_exit(pid, 60s);
+    ASSERT_TRUE(status.has_value());
+    EXPECT_EQ(WEXITSTATUS(*status), 0) << read_text(dir.file("err"));
+    std::string out = read_text(dir.file("out"));
+    EXPECT_EQ(bulk.device(), "usb:1209:0001?serial=TP-BULK-7");
+    EXPECT_EQ(hid.device(), "hid:1209:0001?serial=TP-HID-9");
+    for (auto [a, serial] : {std::pair{&bulk, "TP-BULK-7"}, std::pair{&hid, "TP-HID-9"}}) {
+        std::string line = a->device() + "\t1209:0001 serial " + serial + "\ttape project tape adapter\n";
+        auto at = out.find(line);
+        ASSERT_NE(at, std::string::npos) << "no line " << line << "in:\n" << out;
+        EXPECT_EQ(out.compare(at + line.size(), 20, "\tprotocol 1, firmwar"), 0) << out;
+        for (const auto& u : a->unexpected()) ADD_FAILURE() << "unexpected request: " << u;
     }
 }
 

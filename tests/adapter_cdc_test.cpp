@@ -312,7 +312,7 @@ TEST(AdapterCdc, InfoAndSelftestThroughTheCli) {
         std::string out = read_text(dir.file("stdout"));
         EXPECT_NE(out.find("serial\tTP0042\n"), std::string::npos) << out;
         EXPECT_NE(out.find("protocol\t1\n"), std::string::npos) << out;
-        EXPECT_NE(out.find("reader\tyes, 1500 frames/s\n"), std::string::npos) << out;
+        EXPECT_NE(out.find("reader\tyes, 1500 frames/s, reverse, flags doubtful rows\n"), std::string::npos) << out;
         EXPECT_NE(out.find("punch\tno\n"), std::string::npos) << out;
     }
     {
@@ -463,4 +463,89 @@ TEST(AdapterCdc, ARecoveredPacketIsNamedWithVerbose) {
     EXPECT_EQ(bytes_of(read_text(dir.file("out.ptp"))), frames);
     EXPECT_NE(tape.err().find(" came again after a lost or damaged packet\n"), std::string::npos) << tape.err();
     EXPECT_NE(tape.err().find(": frames "), std::string::npos) << tape.err();
+}
+
+// Read backwards from the tape's end (direction=reverse), the image comes out in the tape's own order,
+// the same as read forwards, in any format; cut short, the frames on disk are those read, in the order
+// read, and the message says so. A reader that cannot reverse is refused before anything is written.
+TEST(AdapterCdc, ReadingBackwardsGivesTheTapeInItsOwnOrder) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 1500, &frames);
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--at-end", "--no-sprocket-at", "100", "--no-sprocket-at", "101"});
+        Process tape({"read", sim.device + "?direction=reverse", "-o", dir.file("back.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_EQ(bytes_of(read_text(dir.file("back.ptp"))), frames);
+        // The doubtful frames are named where they are on the tape.
+        EXPECT_EQ(tape.err(), "tape: " + sim.device + ": frame 100: doubtful, to frame 101: read without a sprocket " +
+                                  "hole (sampled by time)\ntape: " + sim.device +
+                                  "?direction=reverse: 1500 frames read into " + dir.file("back.ptp") +
+                                  " (end of tape, or the other side hung up; read backwards, turned to the tape's "
+                                  "order)\n");
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--at-end"});
+        Process tape({"read", sim.device + "?direction=reverse", "-o", dir.file("back.holes")}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in});
+        Process tape({"read", sim.device, "-o", dir.file("forward.holes")}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_EQ(read_text(dir.file("back.holes")), read_text(dir.file("forward.holes")));
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--at-end", "--unplug-after", "300"});
+        Process tape({"read", sim.device + "?direction=reverse", "-o", dir.file("cut.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 3) << tape.err();
+        auto got = bytes_of(read_text(dir.file("cut.ptp")));
+        ASSERT_GT(got.size(), 200u);
+        ASSERT_LE(got.size(), 300u);
+        EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.rbegin()));
+        EXPECT_NE(tape.err().find("read backwards: its frames are in the order read, the tape's last first"),
+                  std::string::npos)
+            << tape.err();
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--at-end", "--no-reverse"});
+        Process tape({"read", sim.device + "?direction=reverse", "-o", dir.file("never.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 3) << tape.err();
+        EXPECT_EQ(tape.err(),
+                  "tape: " + sim.device + ": this adapter's reader cannot read backwards (direction=reverse)\n");
+        EXPECT_FALSE(std::filesystem::exists(dir.file("never.ptp")));
+    }
+}
+
+// Rows the adapter flags (no sprocket seen, mistimed, a marginal level) are kept as read and named as
+// doubtful, a run of alike ones at once; past --max-errors they are counted.
+TEST(AdapterCdc, RowsTheReaderFlagsAreNamedAsDoubtful) {
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 1500, &frames);
+    std::vector<std::string> faults = {"--reader",         in,    "--no-sprocket-at", "100", "--no-sprocket-at", "101",
+                                       "--no-sprocket-at", "102", "--mistimed-at",    "500", "--marginal-at",    "500",
+                                       "--marginal-at",    "900"};
+    {
+        SIM_OR_SKIP(sim, dir, faults);
+        Process tape({"read", sim.device, "-o", dir.file("out.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_EQ(bytes_of(read_text(dir.file("out.ptp"))), frames);
+        std::string d = "tape: " + sim.device + ": ";
+        EXPECT_EQ(tape.err(),
+                  d + "frame 100: doubtful, to frame 102: read without a sprocket hole (sampled by time)\n" + d +
+                      "frame 500: doubtful: its sprocket hole came early or late; a track's level " +
+                      "was near its threshold\n" + d + "frame 900: doubtful: a track's level was near its threshold\n" +
+                      d + "1500 frames read into " + dir.file("out.ptp") +
+                      " (end of tape, or the other side hung up)\n");
+    }
+    {
+        SIM_OR_SKIP(sim, dir, faults);
+        Process tape({"--max-errors", "1", "read", sim.device, "-o", dir.file("few.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_NE(tape.err().find("frame 100: doubtful"), std::string::npos) << tape.err();
+        EXPECT_EQ(tape.err().find("frame 500"), std::string::npos) << tape.err();
+        EXPECT_NE(tape.err().find("2 more doubtful frame(s) not shown (--max-errors 1)"), std::string::npos)
+            << tape.err();
+    }
 }

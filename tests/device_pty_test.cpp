@@ -582,7 +582,11 @@ struct ScriptedLine : Transport {
         clock.t += timeout;
         return {};
     }
-    void write(std::span<const std::uint8_t> b) override { writes.insert(writes.end(), b.size(), clock.t); }
+    std::optional<std::pair<std::size_t, std::chrono::milliseconds>> stall;  // after the n-th write, this long
+    void write(std::span<const std::uint8_t> b) override {
+        writes.insert(writes.end(), b.size(), clock.t);
+        if (stall && writes.size() == stall->first) clock.t += stall->second;
+    }
     void drain() override {}
     std::string name() const override { return "scripted line"; }
 };
@@ -605,6 +609,23 @@ TEST(DeviceEmulate, Dc3DuringTheWaitForTheNextFrameStopsIt) {
         EXPECT_FALSE(at >= 1101ms) << "a frame at " << at.count() << " us, after DC3 at 1101 ms";
     }
     EXPECT_EQ(line.writes.size(), 3U);  // at 10 and 210 ms, then at 1000 ms (1200 ms would be after DC3)
+}
+
+// The process not scheduled for 6 frame times: the reader catches up at no more than twice its speed,
+// never sending frames back to back, so a DC3 meanwhile finds at most one frame on its way.
+TEST(DeviceEmulate, CatchingUpAfterAStallNeverBursts) {
+    SteppedClock clock;
+    std::atomic<bool> stop{false};
+    ScriptedLine line(clock, 1000ms, stop);
+    line.incoming = {{0ms, dc1}};
+    line.stall = {{5, 60ms}};
+    std::vector<Frame> tape(80, 0xA5);
+    emulate_reader(line, tape, EmulatorOptions{.rate = 100, .stop = &stop}, clock);
+    ASSERT_EQ(line.writes.size(), 80U);
+    for (std::size_t i = 1; i < line.writes.size(); ++i)
+        EXPECT_GE(line.writes[i] - line.writes[i - 1], 5ms) << "frames " << i << " and " << i + 1;
+    // It does catch up: the 80 frames take 790 ms of reading plus no more than half the stall.
+    EXPECT_LE(line.writes.back() - line.writes.front(), 820ms);
 }
 
 namespace {

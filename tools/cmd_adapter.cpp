@@ -18,7 +18,9 @@ std::string info_text(const tape::AdapterInfo& i) {
     out += "protocol\t" + std::to_string(i.protocol) + "\n";
     out += "firmware\t" + i.firmware + "\n";
     out += "reader\t" + std::string(i.reader ? "yes" : "no") +
-           (i.reader ? ", " + std::to_string(i.max_read_rate) + " frames/s" + (i.reverse ? ", reverse" : "") : "") +
+           (i.reader ? ", " + std::to_string(i.max_read_rate) + " frames/s" + (i.reverse ? ", reverse" : "") +
+                           (i.row_flags ? ", flags doubtful rows" : "")
+                     : "") +
            "\n";
     out += "punch\t" + std::string(i.punch ? "yes" : "no") +
            (i.punch ? ", " + std::to_string(i.max_punch_rate) + " rows/s" : "") + "\n";

@@ -1,4 +1,8 @@
 // tape receive: take a program a controller punches out over a line, frames kept as they arrive.
+#include <algorithm>
+#include <optional>
+#include <utility>
+
 #include "cli_device.hpp"
 #include "cli_numbers.hpp"
 #include "commands.hpp"
@@ -26,6 +30,17 @@ const char* end_text(tape::ReceiveResult::End e) {
             return "stopped";
     }
     return "";
+}
+
+// A tape read backwards, whole: its image is written again, atomically, first frame first.
+void turn_around(const std::string& output, const tape::ImageFormat& format, const tape::FrameCode& annotate) {
+    try {
+        auto frames = format.read(tape::read_file(output));
+        std::reverse(frames.begin(), frames.end());
+        tape::write_file_atomic(output, format.write(frames, tape::ImageWriteOptions{.annotate = &annotate}), true);
+    } catch (const tape::Error& e) {
+        fail(output, e);
+    }
 }
 
 }  // namespace
@@ -59,18 +74,51 @@ tape::ReceiveResult::End receive_into_image(const std::string& device, const std
     };
     ProgressLine progress(verb, progress_forced);
     o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
+    // Frames the reader itself doubts are kept, and named, also when the run fails after them; in the
+    // tape's order when a tape read backwards is turned around (frames - n + 1 for the n-th that came).
+    auto say_doubts = [&line](std::optional<std::uint64_t> turned_of) {
+        auto doubts = line->take_doubts();
+        std::uint64_t shown = 0, unshown = doubts.unkept;
+        if (turned_of) std::reverse(doubts.runs.begin(), doubts.runs.end());
+        for (const auto& d : doubts.runs) {
+            if (shown == globals().max_errors) {
+                unshown += d.last - d.first + 1;
+                continue;
+            }
+            ++shown;
+            auto [first, last] =
+                turned_of ? std::pair(*turned_of - d.last + 1, *turned_of - d.first + 1) : std::pair(d.first, d.last);
+            std::string run = last > first ? "doubtful, to frame " + std::to_string(last) + ": " : "doubtful: ";
+            say_diagnostic(line->name(),
+                           tape::Diagnostic{.code = tape::Errc::doubtful_frame,
+                                            .where = tape::Position{.frame = first},
+                                            .message = run + d.what,
+                                            .severity = tape::Severity::warning},
+                           false);
+        }
+        if (unshown) say_unlisted(line->name(), unshown, "doubtful frame(s)");
+    };
     tape::ReceiveResult r;
     try {
         r = tape::receive_frames(*line, o);
     } catch (const tape::Error& e) {
         out->sync();
+        say_doubts(std::nullopt);
+        if (line->backwards() && out->frames() > 1)
+            say(output, "read backwards: its frames are in the order read, the tape's last first");
         fail("", e);
     }
     out->sync();
+    if (line->backwards()) {
+        out.reset();  // closed, with its format's ending, before it is read back
+        turn_around(output, *format, annotate);
+    }
+    say_doubts(line->backwards() ? std::optional(r.frames) : std::nullopt);
     if (globals().verbosity > 0)
         for (const auto& note : line->take_notes()) say(line->name(), note);
     if (globals().verbosity >= 0)
-        say(device, std::to_string(r.frames) + " frames " + verb + " into " + output + " (" + end_text(r.end) + ")");
+        say(device, std::to_string(r.frames) + " frames " + verb + " into " + output + " (" + end_text(r.end) +
+                        (line->backwards() ? "; read backwards, turned to the tape's order" : "") + ")");
     return r.end;
 }
 

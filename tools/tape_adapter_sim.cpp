@@ -28,9 +28,10 @@ struct SimArgs {
     double speed = 1, read_rate = 1500, punch_rate = 150;
     std::uint32_t stop_frames = 1;
     std::uint64_t unplug_after = 0, torn_at = 0, chad_full_after = 0;
-    std::vector<std::uint64_t> miss_hole_at;
+    std::vector<std::uint64_t> miss_hole_at, no_sprocket_at, mistimed_at, marginal_at;
     unsigned active_low = 0;
-    bool torn = false, no_reader = false, no_punch = false, loop = false, stats = false;
+    bool torn = false, no_reader = false, no_punch = false, no_reverse = false, at_end = false, loop = false,
+         stats = false;
     tapesim::Faults faults;
 };
 
@@ -76,11 +77,19 @@ int run(const SimArgs& a) {
     so.loop = a.loop;
     so.miss_hole_at = a.miss_hole_at;
     so.active_low = static_cast<std::uint8_t>(a.active_low);
+    so.head_at_end = a.at_end;
+    for (auto [frames, flag] :
+         {std::pair{&a.no_sprocket_at, tapefw::row_flag::no_sprocket},
+          std::pair{&a.mistimed_at, tapefw::row_flag::timing}, std::pair{&a.marginal_at, tapefw::row_flag::marginal}})
+        for (auto n : *frames) so.row_flags.emplace_back(n - 1, flag);
     tapesim::SimHardware hw(tape, so);
     tapefw::Identity id;
     id.serial = a.serial.c_str();
-    id.capabilities =
-        static_cast<std::uint8_t>((a.no_reader ? 0 : tapefw::caps::reader) | (a.no_punch ? 0 : tapefw::caps::punch));
+    // The simulated board tells a row without a sprocket, a mistimed one and a marginal level apart.
+    id.capabilities = static_cast<std::uint8_t>(
+        (a.no_reader ? 0
+                     : tapefw::caps::reader | tapefw::caps::row_flags | (a.no_reverse ? 0 : tapefw::caps::reverse)) |
+        (a.no_punch ? 0 : tapefw::caps::punch));
     id.max_read_rate = static_cast<std::uint16_t>(std::lround(a.read_rate));
     id.max_punch_rate = static_cast<std::uint16_t>(std::lround(a.punch_rate));
     tapesim::FaultFilter filter(a.faults);
@@ -217,6 +226,20 @@ int main(int argc, char** argv) {
         ->excludes("--reader");
     app.add_flag("--no-reader", a.no_reader, "An adapter with a punch only");
     app.add_flag("--no-punch", a.no_punch, "An adapter with a reader only");
+    app.add_flag("--no-reverse", a.no_reverse, "A reader that cannot read backwards");
+    app.add_flag("--at-end", a.at_end,
+                 "The tape is loaded with its end at the head, as after reading it through: read it back with "
+                 "direction=reverse");
+    app.add_option("--no-sprocket-at", a.no_sprocket_at,
+                   "Frame N (from 1) is read without its sprocket hole, sampled by time, and flagged so "
+                   "(repeatable)")
+        ->check(whole_number(1, most));
+    app.add_option("--mistimed-at", a.mistimed_at,
+                   "Frame N's sprocket hole comes early or late, and the row is flagged so (repeatable)")
+        ->check(whole_number(1, most));
+    app.add_option("--marginal-at", a.marginal_at,
+                   "A track of frame N reads near its threshold, and the row is flagged so (repeatable)")
+        ->check(whole_number(1, most));
     app.add_option("--unplug-after", a.unplug_after, "Unplug (hang the line up and end) after N frames read")
         ->check(whole_number(1, most));
     app.add_option("--torn-at", a.torn_at, "The tape is torn after N frames: no sprocket hole from there")

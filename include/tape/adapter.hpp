@@ -73,17 +73,21 @@ void adapter_configure(std::string_view device, const AdapterConfig& config);
 
 namespace tape {
 
-/// A USB serial port found in sysfs: a tape adapter (by its vendor and product id) or another.
+/// A USB serial port or a tape adapter's interface found in sysfs: a tape adapter (by its vendor and
+/// product id) or another serial port.
 struct AttachedPort {
-    std::string device;  ///< "adapter:/dev/ttyACM0" or "serial:/dev/ttyUSB0"
+    std::string
+        device;  ///< "adapter:/dev/ttyACM0", "usb:1209:0001?serial=S", "hid:1209:0001?serial=S", "serial:/dev/ttyUSB0"
     std::uint16_t vendor = 0, product = 0;
     std::string serial;       ///< the USB serial string ("" when it has none)
     std::string description;  ///< manufacturer and product strings
     bool adapter = false;     ///< 1209:0001, a tape adapter
 };
 
-/// The USB serial ports under sysfs_root (/sys: class/tty/NAME/device, up to the USB device with its
-/// idVendor), named under dev_root (/dev), sorted by device. Reads files only: no port is opened.
+/// Under sysfs_root (/sys), each without opening anything: the USB serial ports (class/tty/NAME/device,
+/// up to the USB device with its idVendor), named under dev_root (/dev); and the tape adapters' vendor
+/// interfaces (bus/usb/devices, class ff) and HID interfaces (class/hidraw). An adapter offering several
+/// interfaces is listed once for each. Adapters first, by serial, then the other ports, by device.
 std::vector<AttachedPort> attached_ports(const std::string& sysfs_root = "/sys", const std::string& dev_root = "/dev");
 
 }  // namespace tape

@@ -26,6 +26,16 @@ struct ReadResult {
     bool end = false;       ///< the other side hung up, or a file ended: no more will come
 };
 
+/// A run of frames a reader itself doubts, alike, counted from 1 in the order they came.
+struct FrameDoubt {
+    std::uint64_t first = 0, last = 0;
+    std::string what;  ///< "read without a sprocket hole (sampled by time)"
+};
+struct FrameDoubts {
+    std::vector<FrameDoubt> runs;
+    std::uint64_t unkept = 0;  ///< doubtful frames only counted, beyond the runs a device keeps
+};
+
 /// Modem control lines, where a transport has them (serial ports do, files and ptys do not).
 class ModemLines {
 public:
@@ -59,6 +69,11 @@ public:
     /// What the transport recovered from on its own since the last call (frames a USB adapter sent
     /// again after a lost or damaged packet), one line each, for a verbose report. Empty for most.
     virtual std::vector<std::string> take_notes() { return {}; }
+    /// Frames the device itself doubts since the last call (a tape adapter's row flags: read without a
+    /// sprocket hole, mistimed, a level near its threshold). Empty for most.
+    virtual FrameDoubts take_doubts() { return {}; }
+    /// True when frames come last first: a tape adapter's reader reading backwards.
+    virtual bool backwards() const { return false; }
 };
 
 /// What a backend is opened for.

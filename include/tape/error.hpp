@@ -13,16 +13,18 @@ namespace tape {
 
 /// Every error kind has a stable short name (errc_name) and belongs to one exit class.
 enum class Errc {
-    parity,        ///< a frame whose holes fail the parity check
-    not_in_code,   ///< a frame with good parity that is no character of the code
-    unknown_code,  ///< the tape fits neither ISO nor EIA
-    bad_image,     ///< an image file that does not follow its format
-    bad_text,      ///< a text character the chosen code cannot carry
-    bad_table,     ///< a code table file that cannot be read
-    bad_program,   ///< a program that breaks a rule of ГОСТ 20999-83 or of a controller format
-    io,            ///< reading or writing failed
-    usage,         ///< the caller asked for something impossible
-    exists,        ///< an output that already exists and may not be replaced
+    parity,          ///< a frame whose holes fail the parity check
+    not_in_code,     ///< a frame with good parity that is no character of the code
+    unknown_code,    ///< the tape fits neither ISO nor EIA
+    bad_image,       ///< an image file that does not follow its format
+    bad_text,        ///< a text character the chosen code cannot carry
+    bad_table,       ///< a code table file that cannot be read
+    bad_program,     ///< a program that breaks a rule of ГОСТ 20999-83 or of a controller format
+    io,              ///< reading or writing failed
+    usage,           ///< the caller asked for something impossible
+    exists,          ///< an output that already exists and may not be replaced
+    doubtful_frame,  ///< a frame the reader itself doubts: read without a sprocket, mistimed, a level near its
+                     ///< threshold
 };
 
 /// Stable short name, e.g. "parity".

@@ -20,6 +20,8 @@ std::string_view errc_name(Errc code) {
             return "bad-program";
         case Errc::exists:
             return "exists";
+        case Errc::doubtful_frame:
+            return "doubtful-frame";
         case Errc::io:
             return "io";
         case Errc::usage:

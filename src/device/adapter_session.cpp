@@ -194,7 +194,10 @@ void Session::handle_rows(const Packet& p) {
         return;
     }
     std::uint32_t end = r.first + r.count;
-    for (std::uint32_t f = expected_; f < end; ++f) ready_.push_back(r.rows[f - r.first]);
+    for (std::uint32_t f = expected_; f < end; ++f) {
+        ready_.push_back(r.rows[f - r.first]);
+        if (r.flags[f - r.first]) note_flags(f, r.flags[f - r.first]);
+    }
     if (end > expected_) expected_ = end;
     if (gap_tries_ && (!gap_end_ || expected_ >= *gap_end_)) {
         // Only a gap seen is named: a resend after a damaged packet may have had nothing to fill.
@@ -202,6 +205,16 @@ void Session::handle_rows(const Packet& p) {
         gap_end_.reset();
         gap_tries_ = 0;
     }
+}
+
+void Session::note_flags(std::uint32_t row, std::uint8_t flags) {
+    std::uint64_t frame = std::uint64_t{row} + 1;
+    if (!doubts_.empty() && doubts_.back().last + 1 == frame && doubts_.back().flags == flags)
+        doubts_.back().last = frame;
+    else if (doubts_.size() < max_doubts)
+        doubts_.push_back({frame, frame, flags});
+    else
+        ++unkept_doubts_;
 }
 
 void Session::handle_status(const Packet& p) {

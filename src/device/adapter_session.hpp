@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/packet.hpp"
@@ -69,9 +70,11 @@ Error none_attached(const std::string& name, const UsbId& id, std::optional<std:
 /// Error(Errc::usage) for a string that names no adapter, Error(Errc::io) when it cannot be opened.
 std::unique_ptr<PacketPipe> open_pipe(std::string_view device);
 
-/// The settings after '?' every adapter backend takes: which adapter (its serial string), and the
-/// unit's line settings, sent as CONFIG when any is given.
-inline constexpr std::string_view settings_keys[] = {"serial", "tracks", "invert", "watchdog", "sprocket-timeout"};
+/// The settings after '?' every adapter backend takes: which adapter (its serial string), which way
+/// its reader reads (direction=forward|reverse), and the unit's line settings, sent as CONFIG when any
+/// is given.
+inline constexpr std::string_view settings_keys[] = {"serial", "direction", "tracks",
+                                                     "invert", "watchdog",  "sprocket-timeout"};
 
 /// The adapter as a Transport, over pipe, for use: reads are the reader's rows, writes the punch's.
 /// Refuses (Error(Errc::io)) an adapter whose serial is not the query's serial=.
@@ -122,6 +125,16 @@ public:
     /// Rows read or punched so far.
     std::uint64_t rows_read() const { return expected_; }
     std::uint64_t rows_punched() const { return punched_; }
+    /// A run of rows the adapter flagged alike (tapefw::row_flag bits), frames counted from 1.
+    struct Doubt {
+        std::uint64_t first = 0, last = 0;
+        std::uint8_t flags = 0;
+    };
+    /// The runs of flagged rows since the last call, and how many flagged rows were only counted
+    /// (beyond max_doubts runs kept, so that a tape flagged throughout takes bounded memory).
+    std::vector<Doubt> take_doubts() { return std::exchange(doubts_, {}); }
+    std::uint64_t take_unkept_doubts() { return std::exchange(unkept_doubts_, 0); }
+    static constexpr std::size_t max_doubts = 10000;
     /// Frame ranges (from, to, counted from 1) that were missing or damaged and then came again.
     const std::vector<std::pair<std::uint64_t, std::uint64_t>>& recovered() const { return recovered_; }
     /// Packets from the adapter that failed their CRC, and ours it reported as such.
@@ -149,6 +162,9 @@ private:
     std::uint32_t gap_first_ = 0;
     std::vector<std::pair<std::uint64_t, std::uint64_t>> recovered_;
     std::uint64_t bad_seen_ = 0;
+    std::vector<Doubt> doubts_;
+    std::uint64_t unkept_doubts_ = 0;
+    void note_flags(std::uint32_t row, std::uint8_t flags);
     /// A fault that ends the run once every row before its frame is here.
     struct Pending {
         std::uint32_t frame;

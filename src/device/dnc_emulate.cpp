@@ -64,8 +64,11 @@ public:
                 throw Error(e.code(), std::string(e.what()) + "; " + std::to_string(r_.frames_sent) + " frame(s) sent");
             }
             ++r_.frames_sent;
-            next_ += period;
-            if (clock_.now() > next_ + 10 * period) next_ = clock_.now();  // late: no burst to catch up
+            // Late (this process was not scheduled), the reader catches up, but never faster than twice its
+            // speed: frames sent back to back would be on the line before a DC3 already on its way is seen.
+            due_ += period;
+            if (clock_.now() > due_ + 10 * period) due_ = clock_.now();  // very late: give up catching up
+            next_ = std::max(due_, clock_.now() + period / 2);
             Frame sent = tape_[pos_++];
             if (code_.kind(sent) == FrameKind::character &&
                 watch_.feed(code_.character(sent)) == ProgramEndWatch::Event::program_end) {
@@ -87,7 +90,8 @@ private:
     Flow flow_;
     std::size_t pos_ = 0;
     bool running_ = false;
-    Clock::time_point next_{};  // when the next frame is due while running
+    Clock::time_point due_{};   // when the next frame is due while running, at the reader's speed
+    Clock::time_point next_{};  // when it may go: due, or half a frame time after the last one
     ProgramEndWatch watch_;
     EmulatorResult r_;
     std::optional<std::string> search_digits_;  // after the search character, until a non-digit
@@ -99,7 +103,7 @@ private:
     void set_running(bool on) {
         if (on == running_) return;
         running_ = on;
-        if (on) next_ = clock_.now();  // a started reader sends its first frame at once
+        if (on) due_ = next_ = clock_.now();  // a started reader sends its first frame at once
         ++(on ? r_.starts : r_.stops);
         log(on ? "start" : "stop");
     }

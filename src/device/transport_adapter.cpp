@@ -82,13 +82,33 @@ private:
     }
 };
 
+// What the adapter's row flags say about a frame, in words.
+std::string flags_text(std::uint8_t flags) {
+    namespace rf = tapefw::row_flag;
+    std::string s;
+    auto add = [&s](const char* what) { s += (s.empty() ? "" : "; ") + std::string(what); };
+    if (flags & rf::no_sprocket) add("read without a sprocket hole (sampled by time)");
+    if (flags & rf::timing) add("its sprocket hole came early or late");
+    if (flags & rf::marginal) add("a track's level was near its threshold");
+    if (s.empty()) add("flagged by the adapter");
+    return s;
+}
+
 class AdapterTransport : public Transport {
 public:
-    AdapterTransport(std::unique_ptr<adapter::PacketPipe> pipe, DeviceUse use) : use_(use), session_(std::move(pipe)) {}
+    AdapterTransport(std::unique_ptr<adapter::PacketPipe> pipe, DeviceUse use, tapefw::ReadStart start)
+        : use_(use), start_(start), session_(std::move(pipe)) {}
 
     ReadResult read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override {
         if (use_ == DeviceUse::write) return session_.punch_input(timeout);
-        return session_.read(buffer, timeout);
+        return session_.read(buffer, timeout, start_);
+    }
+    bool backwards() const override { return start_.reverse != 0; }
+    FrameDoubts take_doubts() override {
+        FrameDoubts out;
+        for (const auto& d : session_.take_doubts()) out.runs.push_back({d.first, d.last, flags_text(d.flags)});
+        out.unkept = session_.take_unkept_doubts();
+        return out;
     }
     void write(std::span<const std::uint8_t> bytes) override {
         // A reader being stopped is asked in band by a DC3 on other lines; here the session stops it.
@@ -111,6 +131,7 @@ public:
 
 private:
     DeviceUse use_;
+    tapefw::ReadStart start_;
     adapter::Session session_;
     std::size_t noted_ = 0;
 };
@@ -138,15 +159,21 @@ std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> p
     if (sprocket < 1 || sprocket > 65535)
         q.bad_value("sprocket-timeout", *q.value("sprocket-timeout"), "is not 1 to 65535 milliseconds");
     c.sprocket_timeout_ms = static_cast<std::uint16_t>(sprocket);
+    tapefw::ReadStart start;
+    start.reverse = q.choice<std::uint8_t>("direction", 0, {{"forward", 0}, {"reverse", 1}});
     bool configure = false;
-    for (auto key : settings_keys) configure = configure || (key != "serial" && q.value(key).has_value());
+    for (auto key : settings_keys)
+        configure = configure || (key != "serial" && key != "direction" && q.value(key).has_value());
 
-    auto t = std::make_unique<AdapterTransport>(std::move(pipe), use);
+    auto t = std::make_unique<AdapterTransport>(std::move(pipe), use, start);
     // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
     auto serial = q.value("serial");
     if (serial && *serial != t->session().info().serial)
         throw Error(Errc::io, t->name() + ": this adapter's serial is " + t->session().info().serial + ", not " +
                                   std::string(*serial));
+    // Refused before anything is read or written, as the adapter would refuse its READ_START.
+    if (start.reverse && !(t->session().info().capabilities & tapefw::caps::reverse))
+        throw Error(Errc::io, t->name() + ": this adapter's reader cannot read backwards (direction=reverse)");
     if (configure) t->session().configure(c);
     return t;
 }

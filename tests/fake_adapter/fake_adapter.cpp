@@ -144,6 +144,7 @@ struct Adapter::Impl {
 
     explicit Impl(Options options) : o(std::move(options)), hw(o.tape, o.sim), filter(o.faults) {
         id.serial = o.serial.c_str();
+        id.capabilities |= tapefw::caps::reverse | tapefw::caps::row_flags;  // SimHardware does both
         hw.on_send = [this](const std::uint8_t* b, std::size_t n) {
             std::lock_guard l(m);
             if (gone) return true;  // into the void: nobody listens
@@ -203,8 +204,12 @@ struct Adapter::Impl {
         syspath = "/sys" + usb;
         handler = umockdev_ioctl_base_new();
         std::string rec;
+        std::string intf = usb + "/1-" + std::to_string(devnum) + ":1.0";
         if (o.link == Link::usb) {
             devnode = std::string("/dev/") + bus_dev;
+            // The vendor interface, unbound, as tape devices finds it.
+            rec += "P: " + intf + "\nE: SUBSYSTEM=usb\nE: DEVTYPE=usb_interface\nA: bInterfaceNumber=00\\n\n" +
+                   "A: bInterfaceClass=ff\\n\n\n";
             g_signal_connect(handler, "handle-ioctl",
                              G_CALLBACK(+[](UMockdevIoctlBase*, UMockdevIoctlClient* c, gpointer self) -> gboolean {
                                  return static_cast<Impl*>(self)->usb_ioctl(c);
@@ -227,7 +232,6 @@ struct Adapter::Impl {
                                  return static_cast<Impl*>(self)->hid_write(c);
                              }),
                              this);
-            std::string intf = usb + "/1-" + std::to_string(devnum) + ":1.0";
             std::string hid = intf + "/0003:1209:0001." + std::to_string(1000 + hidraw);
             std::string raw = "hidraw" + std::to_string(hidraw);
             rec += "P: " + hid + "/hidraw/" + raw + "\nN: " + raw + "\nE: SUBSYSTEM=hidraw\nE: DEVNAME=" + devnode +

@@ -9,7 +9,9 @@ SimHardware::SimHardware(std::vector<std::uint8_t> tape, SimOptions options)
     : tape_(std::move(tape)),
       o_(options),
       period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.read_rate))),
-      punch_period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.punch_rate))) {}
+      punch_period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.punch_rate))) {
+    if (o_.head_at_end) position_ = tape_.size();
+}
 
 void SimHardware::drive(tapefw::Drive d) {
     if (d == drive_) return;
@@ -38,7 +40,7 @@ void SimHardware::advance_to(std::uint64_t t, tapefw::Engine& engine) {
         if (sprocket) {
             std::uint8_t flags = 0;
             for (const auto& [at, f] : o_.row_flags)
-                if (at == frame) flags = f;
+                if (at == frame) flags |= f;
             // The board gives the levels on the lines, as this unit's wiring makes them.
             engine.on_row(static_cast<std::uint8_t>(tape[frame] ^ o_.active_low), flags);
         }

@@ -27,6 +27,7 @@ struct SimOptions {
     std::optional<std::uint64_t> torn_at{};  ///< no sprocket from this frame (0-based) on
     std::uint8_t active_low = 0;             ///< the unit's data lines that read a hole as a low level (its wiring)
     bool loop = false;                       ///< the tape the punch punches goes on into the reader (to read it back)
+    bool head_at_end = false;                ///< the tape loaded with its end at the head, as after reading it through
     /// Frames (0-based) the board flags as it samples them (row_flag bits: no sprocket, timing, marginal).
     std::vector<std::pair<std::uint64_t, std::uint8_t>> row_flags{};
     std::vector<std::uint64_t> miss_hole_at{};  ///< rows N (from 1) punched with their lowest hole missing (a worn pin)
