@@ -503,9 +503,26 @@ TEST(AdapterCdc, ReadingBackwardsGivesTheTapeInItsOwnOrder) {
         ASSERT_GT(got.size(), 200u);
         ASSERT_LE(got.size(), 300u);
         EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.rbegin()));
-        EXPECT_NE(tape.err().find("read backwards: its frames are in the order read, the tape's last first"),
+        EXPECT_NE(tape.err().find("read backwards and not to the tape's start: its frames are in the order read, "
+                                  "the tape's last first"),
                   std::string::npos)
             << tape.err();
+    }
+    {
+        // Stopped by the user: a part of the tape, kept as read, not turned.
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--at-end", "--speed", "0.2"});
+        Process tape({"read", sim.device + "?direction=reverse", "-o", dir.file("part.ptp")}, dir);
+        auto end = std::chrono::steady_clock::now() + 10s;
+        while (read_text(dir.file("part.ptp")).size() < 20 && std::chrono::steady_clock::now() < end)
+            std::this_thread::sleep_for(10ms);
+        tape.interrupt();
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        auto got = bytes_of(read_text(dir.file("part.ptp")));
+        ASSERT_GE(got.size(), 20u);
+        ASSERT_LT(got.size(), frames.size());
+        EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.rbegin()));
+        EXPECT_NE(tape.err().find("its frames are in the order read"), std::string::npos) << tape.err();
+        EXPECT_EQ(tape.err().find("turned"), std::string::npos) << tape.err();
     }
     {
         SIM_OR_SKIP(sim, dir, {"--reader", in, "--at-end", "--no-reverse"});
@@ -514,6 +531,10 @@ TEST(AdapterCdc, ReadingBackwardsGivesTheTapeInItsOwnOrder) {
         EXPECT_EQ(tape.err(),
                   "tape: " + sim.device + ": this adapter's reader cannot read backwards (direction=reverse)\n");
         EXPECT_FALSE(std::filesystem::exists(dir.file("never.ptp")));
+        Process punch({"punch", in, sim.device + "?direction=reverse"}, dir);
+        EXPECT_EQ(punch.wait(20s), 2) << punch.err();
+        EXPECT_NE(punch.err().find("direction is the reader's, and this device is opened to punch"), std::string::npos)
+            << punch.err();
     }
 }
 
@@ -547,5 +568,12 @@ TEST(AdapterCdc, RowsTheReaderFlagsAreNamedAsDoubtful) {
         EXPECT_EQ(tape.err().find("frame 500"), std::string::npos) << tape.err();
         EXPECT_NE(tape.err().find("2 more doubtful frame(s) not shown (--max-errors 1)"), std::string::npos)
             << tape.err();
+    }
+    {
+        SIM_OR_SKIP(sim, dir, faults);
+        Process tape({"--max-errors", "0", "read", sim.device, "-o", dir.file("all.ptp")}, dir);  // 0: all
+        EXPECT_EQ(tape.wait(20s), 0) << tape.err();
+        EXPECT_NE(tape.err().find("frame 900: doubtful"), std::string::npos) << tape.err();
+        EXPECT_EQ(tape.err().find("not shown"), std::string::npos) << tape.err();
     }
 }

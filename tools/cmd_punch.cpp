@@ -1,5 +1,7 @@
 // tape punch: the generic punch: a tape image's frames out to any device.
 
+#include <algorithm>
+
 #include "cli_device.hpp"
 #include "cli_numbers.hpp"
 #include "commands.hpp"
@@ -27,6 +29,7 @@ void verify(const PunchArgs& a, const std::vector<tape::Frame>& punched) {
     } catch (const tape::Error& e) {
         fail("", e);
     }
+    if (reader->backwards()) std::reverse(read.begin(), read.end());  // the tape read back from its end
     std::uint64_t differ = 0, shown = 0;
     std::size_t common = std::min(read.size(), punched.size());
     for (std::size_t i = 0; i < common; ++i) {

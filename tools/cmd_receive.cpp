@@ -32,15 +32,12 @@ const char* end_text(tape::ReceiveResult::End e) {
     return "";
 }
 
-// A tape read backwards, whole: its image is written again, atomically, first frame first.
+// A tape read backwards, whole: its image is written again, atomically, first frame first. Throws
+// Error; the image is then as read.
 void turn_around(const std::string& output, const tape::ImageFormat& format, const tape::FrameCode& annotate) {
-    try {
-        auto frames = format.read(tape::read_file(output));
-        std::reverse(frames.begin(), frames.end());
-        tape::write_file_atomic(output, format.write(frames, tape::ImageWriteOptions{.annotate = &annotate}), true);
-    } catch (const tape::Error& e) {
-        fail(output, e);
-    }
+    auto frames = format.read(tape::read_file(output));
+    std::reverse(frames.begin(), frames.end());
+    tape::write_file_atomic(output, format.write(frames, tape::ImageWriteOptions{.annotate = &annotate}), true);
 }
 
 }  // namespace
@@ -74,20 +71,20 @@ tape::ReceiveResult::End receive_into_image(const std::string& device, const std
     };
     ProgressLine progress(verb, progress_forced);
     o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
-    // Frames the reader itself doubts are kept, and named, also when the run fails after them; in the
-    // tape's order when a tape read backwards is turned around (frames - n + 1 for the n-th that came).
-    auto say_doubts = [&line](std::optional<std::uint64_t> turned_of) {
+    // Frames the reader itself doubts are kept, and named, also when the run fails after them. A tape
+    // read backwards and turned: in the tape's order (rows - n + 1 for the n-th row that came).
+    auto say_doubts = [&line](std::optional<std::uint64_t> turned_rows) {
         auto doubts = line->take_doubts();
         std::uint64_t shown = 0, unshown = doubts.unkept;
-        if (turned_of) std::reverse(doubts.runs.begin(), doubts.runs.end());
+        if (turned_rows) std::reverse(doubts.runs.begin(), doubts.runs.end());
         for (const auto& d : doubts.runs) {
-            if (shown == globals().max_errors) {
+            if (globals().max_errors && shown >= globals().max_errors) {
                 unshown += d.last - d.first + 1;
                 continue;
             }
             ++shown;
-            auto [first, last] =
-                turned_of ? std::pair(*turned_of - d.last + 1, *turned_of - d.first + 1) : std::pair(d.first, d.last);
+            auto [first, last] = turned_rows ? std::pair(*turned_rows - d.last + 1, *turned_rows - d.first + 1)
+                                             : std::pair(d.first, d.last);
             std::string run = last > first ? "doubtful, to frame " + std::to_string(last) + ": " : "doubtful: ";
             say_diagnostic(line->name(),
                            tape::Diagnostic{.code = tape::Errc::doubtful_frame,
@@ -98,27 +95,50 @@ tape::ReceiveResult::End receive_into_image(const std::string& device, const std
         }
         if (unshown) say_unlisted(line->name(), unshown, "doubtful frame(s)");
     };
+    // Said before the doubts, whose frame numbers then count in the order read.
+    auto say_read_order = [&] {
+        if (line->backwards() && out->frames() > 1)
+            say(output,
+                "read backwards and not to the tape's start: its frames are in the order read, the "
+                "tape's last first");
+    };
     tape::ReceiveResult r;
     try {
         r = tape::receive_frames(*line, o);
     } catch (const tape::Error& e) {
-        out->sync();
+        try {
+            out->sync();
+        } catch (const tape::Error&) {  // the run's own failure is the one to report
+        }
+        say_read_order();
         say_doubts(std::nullopt);
-        if (line->backwards() && out->frames() > 1)
-            say(output, "read backwards: its frames are in the order read, the tape's last first");
         fail("", e);
     }
-    out->sync();
-    if (line->backwards()) {
-        out.reset();  // closed, with its format's ending, before it is read back
-        turn_around(output, *format, annotate);
+    // Only a whole reading, to the tape's start, is turned: a part of a tape (stopped, quiet) turned
+    // would number its frames from nowhere on the tape. tape read keeps every row, so the image's
+    // frames are the reader's rows.
+    bool turn = line->backwards() && r.end == tape::ReceiveResult::End::hangup && !o.drop_flow_codes &&
+                !o.until_program_end && out->frames() == r.frames;
+    try {
+        if (turn) {
+            out->close();  // with its format's ending, before it is read back
+            turn_around(output, *format, annotate);
+        } else {
+            out->sync();
+        }
+    } catch (const tape::Error& e) {
+        if (!turn) fail(output, e);
+        say_read_order();
+        say_doubts(std::nullopt);
+        fail(output, e);
     }
-    say_doubts(line->backwards() ? std::optional(r.frames) : std::nullopt);
+    if (!turn) say_read_order();
+    say_doubts(turn ? std::optional(r.frames) : std::nullopt);
     if (globals().verbosity > 0)
         for (const auto& note : line->take_notes()) say(line->name(), note);
     if (globals().verbosity >= 0)
         say(device, std::to_string(r.frames) + " frames " + verb + " into " + output + " (" + end_text(r.end) +
-                        (line->backwards() ? "; read backwards, turned to the tape's order" : "") + ")");
+                        (turn ? "; read backwards, turned to the tape's order" : "") + ")");
     return r.end;
 }
 

@@ -26,6 +26,9 @@ public:
     void append(std::span<const Frame> frames);
     /// Flushes to disk now.
     void sync();
+    /// Writes the format's ending, flushes and closes, throwing Error(Errc::io) where the destructor
+    /// could only keep silent. Nothing may be appended after.
+    void close();
     std::uint64_t frames() const { return frames_; }
 
 private:

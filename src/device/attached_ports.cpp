@@ -85,7 +85,9 @@ void add_vendor_interfaces(const fs::path& sys, std::vector<AttachedPort>& ports
             ec.clear();
             continue;
         }
-        AttachedPort p = describe(usb_device_above(interface));
+        fs::path usb = usb_device_above(interface);
+        if (usb.empty()) continue;
+        AttachedPort p = describe(usb);
         if (!p.adapter) continue;  // another maker's vendor interface: no backend of ours speaks to it
         p.device = by_id("usb", p);
         ports.push_back(std::move(p));

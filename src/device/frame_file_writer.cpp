@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <utility>
 
 #include "common/fd_util.hpp"
 #include "tape/error.hpp"
@@ -28,13 +29,19 @@ FrameFileWriter::FrameFileWriter(const std::string& path, const ImageFormat& for
 FrameFileWriter::~FrameFileWriter() {
     if (fd_ < 0) return;
     try {
-        buffer_.clear();
-        writer_->finish(buffer_);
-        put(buffer_);
+        close();
     } catch (const Error&) {  // a destructor cannot report: what was written before stays
     }
-    ::fsync(fd_);
-    ::close(fd_);
+    if (fd_ >= 0) ::close(fd_);
+}
+
+void FrameFileWriter::close() {
+    buffer_.clear();
+    writer_->finish(buffer_);
+    put(buffer_);
+    sync();
+    int fd = std::exchange(fd_, -1);
+    if (::close(fd) != 0) io_fail("cannot close");
 }
 
 void FrameFileWriter::append(std::span<const Frame> frames) {

@@ -161,6 +161,8 @@ std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> p
     c.sprocket_timeout_ms = static_cast<std::uint16_t>(sprocket);
     tapefw::ReadStart start;
     start.reverse = q.choice<std::uint8_t>("direction", 0, {{"forward", 0}, {"reverse", 1}});
+    if (use == DeviceUse::write && q.value("direction"))
+        q.fail("direction is the reader's, and this device is opened to punch");
     bool configure = false;
     for (auto key : settings_keys)
         configure = configure || (key != "serial" && key != "direction" && q.value(key).has_value());
