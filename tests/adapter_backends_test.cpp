@@ -9,6 +9,7 @@
 #include <chrono>
 #include <thread>
 
+#include "device/adapter_session.hpp"
 #include "fake_adapter/fake_adapter.hpp"
 #include "spawn_util.hpp"
 #include "tape/adapter.hpp"
@@ -53,6 +54,14 @@ ReadRun read_all(tape::Transport& t, std::chrono::seconds limit = 30s) {
     return r;
 }
 
+// Reads t to the tape's end: expected, every frame once, and no error.
+void expect_reads(tape::Transport& t, const std::vector<std::uint8_t>& expected) {
+    ReadRun r = read_all(t);
+    EXPECT_EQ(r.error, "");
+    EXPECT_TRUE(r.ended);
+    EXPECT_EQ(r.frames, expected);
+}
+
 class AdapterBackend : public ::testing::TestWithParam<Link> {
 protected:
     void SetUp() override {
@@ -91,10 +100,7 @@ TEST_P(AdapterBackend, ReadsATapeWholeEveryFrameOnce) {
     auto tape = pattern(9000);
     fake::Adapter a(options(tape));
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
-    ReadRun r = read_all(*t);
-    EXPECT_EQ(r.error, "");
-    EXPECT_TRUE(r.ended);
-    EXPECT_EQ(r.frames, tape);
+    expect_reads(*t, tape);
     expect_clean(a);
 }
 
@@ -109,10 +115,7 @@ TEST_P(AdapterBackend, ReadsBackwardsAndNamesTheRowsTheReaderDoubts) {
     fake::Adapter a(o);
     auto t = tape::open_device(a.device() + "&direction=reverse", tape::DeviceUse::read);
     EXPECT_TRUE(t->backwards());
-    ReadRun r = read_all(*t);
-    EXPECT_EQ(r.error, "");
-    EXPECT_TRUE(r.ended);
-    EXPECT_EQ(r.frames, std::vector<std::uint8_t>(tape.rbegin(), tape.rend()));
+    expect_reads(*t, std::vector<std::uint8_t>(tape.rbegin(), tape.rend()));
     auto doubts = t->take_doubts();
     ASSERT_EQ(doubts.runs.size(), 2u);
     EXPECT_EQ(doubts.runs[0].first, 1000u);  // tape frame 2001, the 1000th to come
@@ -126,6 +129,25 @@ TEST_P(AdapterBackend, ReadsBackwardsAndNamesTheRowsTheReaderDoubts) {
     expect_clean(a);
 }
 
+// A tape flagged throughout, every row unlike the one before: the first runs are kept, the rest only
+// counted, so that the host's memory stays bounded however doubtful the tape.
+TEST(AdapterDoubts, BeyondTheRunsKeptDoubtfulRowsAreCounted) {
+    const std::size_t rows = tape::adapter::Session::max_doubts + 2500;
+    std::vector<std::uint8_t> tape(rows, 0x55);
+    fake::Options o{.link = Link::cdc, .serial = "FLAGGED"};
+    o.tape = tape;
+    for (std::uint64_t f = 0; f < rows; ++f)
+        o.sim.row_flags.emplace_back(f, f % 2 ? tapefw::row_flag::timing : tapefw::row_flag::marginal);
+    fake::Adapter a(o);
+    auto t = tape::open_device(a.device(), tape::DeviceUse::read);
+    expect_reads(*t, tape);
+    auto doubts = t->take_doubts();
+    ASSERT_EQ(doubts.runs.size(), tape::adapter::Session::max_doubts);
+    EXPECT_EQ(doubts.runs.back().first, tape::adapter::Session::max_doubts);
+    EXPECT_EQ(doubts.unkept, 2500u);
+    for (const auto& u : a.unexpected()) ADD_FAILURE() << "unexpected request: " << u;
+}
+
 TEST_P(AdapterBackend, RecoversADroppedADuplicatedAndADamagedPacket) {
     auto tape = pattern(6000, 1);
     auto o = options(tape);
@@ -134,9 +156,7 @@ TEST_P(AdapterBackend, RecoversADroppedADuplicatedAndADamagedPacket) {
     o.faults.corrupt_rows_packet = 9;
     fake::Adapter a(o);
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
-    ReadRun r = read_all(*t);
-    EXPECT_EQ(r.error, "");
-    EXPECT_EQ(r.frames, tape);
+    expect_reads(*t, tape);
     auto notes = t->take_notes();
     // The dropped and the damaged packet's frames came again: in one range, when one RESEND got both.
     EXPECT_GE(notes.size(), 1u);

@@ -11,6 +11,7 @@ SimHardware::SimHardware(std::vector<std::uint8_t> tape, SimOptions options)
       period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.read_rate))),
       punch_period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.punch_rate))) {
     if (o_.head_at_end) position_ = tape_.size();
+    for (const auto& [at, f] : o_.row_flags) row_flags_[at] |= f;
 }
 
 void SimHardware::drive(tapefw::Drive d) {
@@ -38,9 +39,8 @@ void SimHardware::advance_to(std::uint64_t t, tapefw::Engine& engine) {
         std::uint64_t frame = backwards_ ? position_ - 1 : position_;
         bool sprocket = on_tape && !(o_.torn_at && frame >= *o_.torn_at);
         if (sprocket) {
-            std::uint8_t flags = 0;
-            for (const auto& [at, f] : o_.row_flags)
-                if (at == frame) flags |= f;
+            auto flagged = row_flags_.find(frame);
+            std::uint8_t flags = flagged == row_flags_.end() ? 0 : flagged->second;
             // The board gives the levels on the lines, as this unit's wiring makes them.
             engine.on_row(static_cast<std::uint8_t>(tape[frame] ^ o_.active_low), flags);
         }

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -90,6 +91,7 @@ private:
     std::uint64_t starts_ = 0;
     std::uint64_t late_punches_ = 0, longest_punch_gap_us_ = 0, underruns_ = 0;
     bool punch_idle_ = false;
+    std::map<std::uint64_t, std::uint8_t> row_flags_;  ///< o_.row_flags by frame, ORed: looked up every row
     const std::vector<std::uint8_t>& reader_tape() const { return o_.loop ? punched_ : tape_; }
 };
 
