@@ -11,7 +11,7 @@
 
 #include "device/adapter_session.hpp"
 #include "fake_adapter/fake_adapter.hpp"
-#include "spawn_util.hpp"
+#include "process_util.hpp"
 #include "tape/adapter.hpp"
 #include "tape/device.hpp"
 #include "tape/error.hpp"
@@ -283,12 +283,8 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
     } unset;
     {
         fake::Adapter a(options(tape));
-        pid_t pid = spawn_to_files(TAPE_BINARY, {"read", a.device(), "-o", dir.file("whole.ptp")}, dir.file("out"),
-                                   dir.file("err"));
-        ASSERT_GT(pid, 0);
-        auto status = wait_for_exit(pid, 60s);
-        ASSERT_TRUE(status.has_value());
-        EXPECT_EQ(WEXITSTATUS(*status), 0) << read_text(dir.file("err"));
+        Process read({"read", a.device(), "-o", dir.file("whole.ptp")}, dir);
+        EXPECT_EQ(read.wait(60s), 0) << read.err();
         auto got = read_text(dir.file("whole.ptp"));
         EXPECT_EQ(std::vector<std::uint8_t>(got.begin(), got.end()), tape);
         expect_clean(a);
@@ -297,13 +293,9 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
         auto o = options(tape);
         o.unplug_after = 2000;
         fake::Adapter a(o);
-        pid_t pid = spawn_to_files(TAPE_BINARY, {"read", a.device(), "-o", dir.file("part.ptp")}, dir.file("out"),
-                                   dir.file("err"));
-        ASSERT_GT(pid, 0);
-        auto status = wait_for_exit(pid, 60s);
-        ASSERT_TRUE(status.has_value());
-        EXPECT_EQ(WEXITSTATUS(*status), 3) << read_text(dir.file("err"));
-        EXPECT_NE(read_text(dir.file("err")).find("gone"), std::string::npos) << read_text(dir.file("err"));
+        Process read({"read", a.device(), "-o", dir.file("part.ptp")}, dir);
+        EXPECT_EQ(read.wait(60s), 3) << read.err();
+        EXPECT_NE(read.err().find("gone"), std::string::npos) << read.err();
         auto got = read_text(dir.file("part.ptp"));
         EXPECT_GT(got.size(), 0u);
         EXPECT_EQ(std::vector<std::uint8_t>(got.begin(), got.end()),
@@ -325,12 +317,9 @@ TEST(AdapterDevices, TapeDevicesListsUsbAndHidAdaptersBySerialAndProbesThem) {
     struct Unset {
         ~Unset() { ::unsetenv("LD_PRELOAD"); }
     } unset;
-    pid_t pid = spawn_to_files(TAPE_BINARY, {"devices", "--probe"}, dir.file("out"), dir.file("err"));
-    ASSERT_GT(pid, 0);
-    auto status = wait_for_exit(pid, 60s);
-    ASSERT_TRUE(status.has_value());
-    EXPECT_EQ(WEXITSTATUS(*status), 0) << read_text(dir.file("err"));
-    std::string out = read_text(dir.file("out"));
+    Process devices({"devices", "--probe"}, dir);
+    EXPECT_EQ(devices.wait(60s), 0) << devices.err();
+    std::string out = read_text(dir.file("stdout"));
     EXPECT_EQ(bulk.device(), "usb:1209:0001?serial=TP-BULK-7");
     EXPECT_EQ(hid.device(), "hid:1209:0001?serial=TP-HID-9");
     for (auto [a, serial] : {std::pair{&bulk, "TP-BULK-7"}, std::pair{&hid, "TP-HID-9"}}) {

@@ -15,6 +15,7 @@
 #include "core/packet.hpp"
 #include "core/protocol.hpp"
 #include "device_query.hpp"
+#include "tape/adapter.hpp"
 #include "tape/device.hpp"
 #include "tape/error.hpp"
 
@@ -40,6 +41,8 @@ struct UsbId {
     /// "1209:0001"
     std::string text() const;
 };
+/// "usb:1209:0001?serial=S" (no "?serial=" for an empty serial): the device string reaching one adapter.
+std::string device_string(std::string_view backend, const UsbId& id, std::string_view serial);
 /// Error(Errc::usage) when the query's path is no VID:PID. backend: "usb" or "hid", for the message.
 UsbId usb_id(std::string_view backend, const DeviceQuery& query);
 
@@ -76,9 +79,22 @@ std::unique_ptr<PacketPipe> open_pipe(std::string_view device);
 inline constexpr std::string_view settings_keys[] = {"serial", "direction", "tracks",
                                                      "invert", "watchdog",  "sprocket-timeout"};
 
+/// What a device string's settings ask of an adapter.
+struct Settings {
+    std::optional<std::string> serial;     ///< the adapter meant
+    tapefw::ReadStart start{};             ///< which way its reader reads
+    std::optional<tapefw::Config> config;  ///< sent as CONFIG: some line setting was given
+};
+/// The query's settings, checked before anything is opened: Error(Errc::usage) for one out of range
+/// (adapter_config_problem) or a direction for a punch.
+Settings settings_of(const DeviceQuery& query, DeviceUse use);
+/// The user's line settings as the CONFIG message carries them.
+tapefw::Config to_wire(const AdapterConfig& config);
+
 /// The adapter as a Transport, over pipe, for use: reads are the reader's rows, writes the punch's.
-/// Refuses (Error(Errc::io)) an adapter whose serial is not the query's serial=.
-std::unique_ptr<Transport> open_transport(std::unique_ptr<PacketPipe> pipe, const DeviceQuery& query, DeviceUse use);
+/// Refuses (Error(Errc::io)) an adapter whose serial is not settings.serial, or that cannot read the
+/// way asked; sends settings.config.
+std::unique_ptr<Transport> open_transport(std::unique_ptr<PacketPipe> pipe, const Settings& settings, DeviceUse use);
 
 /// Timing of the host's side; tests shorten nothing, they are the protocol's own numbers.
 struct SessionTiming {

@@ -58,8 +58,7 @@ std::string adapter_config_problem(const AdapterConfig& c) {
     return "";
 }
 
-void adapter_configure(std::string_view device, const AdapterConfig& c) {
-    if (auto problem = adapter_config_problem(c); !problem.empty()) throw Error(Errc::usage, problem);
+tapefw::Config adapter::to_wire(const AdapterConfig& c) {
     namespace lb = tapefw::line_bit;
     tapefw::Config f;
     f.data_invert = static_cast<std::uint8_t>(c.data_invert);
@@ -74,8 +73,13 @@ void adapter_configure(std::string_view device, const AdapterConfig& c) {
     f.drive_pulse_us = static_cast<std::uint16_t>(c.drive_pulse_us);
     f.sprocket_timeout_ms = static_cast<std::uint16_t>(c.sprocket_timeout_ms);
     f.watchdog_ms = static_cast<std::uint16_t>(c.watchdog_ms);
+    return f;
+}
+
+void adapter_configure(std::string_view device, const AdapterConfig& c) {
+    if (auto problem = adapter_config_problem(c); !problem.empty()) throw Error(Errc::usage, problem);
     adapter::Session s(adapter::open_pipe(device));
-    s.configure(f);
+    s.configure(adapter::to_wire(c));
 }
 
 AdapterSelftest adapter_selftest(std::string_view device, std::chrono::milliseconds duration, std::uint32_t seed) {

@@ -48,12 +48,6 @@ AttachedPort describe(const fs::path& usb) {
     return p;
 }
 
-// "usb:1209:0001?serial=S": the device string the usb: and hid: backends take.
-std::string by_id(const char* backend, const AttachedPort& p) {
-    return std::string(backend) + ":" + adapter::UsbId{p.vendor, p.product}.text() +
-           (p.serial.empty() ? "" : "?serial=" + p.serial);
-}
-
 // The nodes of a sysfs class (tty, hidraw) with a USB device behind them: NAME/device leads to it.
 template <typename Take>
 void for_each_usb_node(const fs::path& class_dir, Take take) {
@@ -89,7 +83,7 @@ void add_vendor_interfaces(const fs::path& sys, std::vector<AttachedPort>& ports
         if (usb.empty()) continue;
         AttachedPort p = describe(usb);
         if (!p.adapter) continue;  // another maker's vendor interface: no backend of ours speaks to it
-        p.device = by_id("usb", p);
+        p.device = adapter::device_string("usb", {p.vendor, p.product}, p.serial);
         ports.push_back(std::move(p));
     }
 }
@@ -98,7 +92,7 @@ void add_vendor_interfaces(const fs::path& sys, std::vector<AttachedPort>& ports
 void add_hid_interfaces(const fs::path& sys, std::vector<AttachedPort>& ports) {
     for_each_usb_node(sys / "class" / "hidraw", [&](const std::string&, AttachedPort p) {
         if (!p.adapter) return;  // keyboards, mice, UPSes
-        p.device = by_id("hid", p);
+        p.device = adapter::device_string("hid", {p.vendor, p.product}, p.serial);
         ports.push_back(std::move(p));
     });
 }

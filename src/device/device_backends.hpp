@@ -12,12 +12,10 @@ namespace tape {
 std::unique_ptr<Transport> open_file_device(std::string_view rest, DeviceUse use, bool replace);
 std::unique_ptr<Transport> open_serial_device(std::string_view rest, DeviceUse use, bool replace);
 
-// Tape adapters: the device, and the bare packet pipe for asking the adapter about itself.
-std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool replace);
-std::unique_ptr<adapter::PacketPipe> open_cdc_pipe(std::string_view rest);
-std::unique_ptr<Transport> open_usb_device(std::string_view rest, DeviceUse use, bool replace);
-std::unique_ptr<adapter::PacketPipe> open_usb_pipe(std::string_view rest);
-std::unique_ptr<Transport> open_hid_device(std::string_view rest, DeviceUse use, bool replace);
-std::unique_ptr<adapter::PacketPipe> open_hid_pipe(std::string_view rest);
+// Tape adapters: each backend opens its packet pipe alone; the table makes the device of it, with the
+// session and settings all of them share (adapter::open_transport).
+std::unique_ptr<adapter::PacketPipe> open_cdc_pipe(const DeviceQuery& query);
+std::unique_ptr<adapter::PacketPipe> open_usb_pipe(const DeviceQuery& query);
+std::unique_ptr<adapter::PacketPipe> open_hid_pipe(const DeviceQuery& query);
 
 }  // namespace tape

@@ -143,40 +143,36 @@ std::string cdc_path(const DeviceQuery& q) {
 
 }  // namespace
 
-std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> pipe, const DeviceQuery& q,
-                                                   DeviceUse use) {
-    // The unit's line settings, sent as CONFIG when any is given (the adapter keeps its own otherwise).
-    tapefw::Config c;
-    c.tracks = static_cast<std::uint8_t>(q.number("tracks", c.tracks));
-    if (c.tracks < 5 || c.tracks > 8) q.bad_value("tracks", *q.value("tracks"), "is not 5 to 8");
-    unsigned invert = q.number("invert", 0);
-    if (invert > 255) q.bad_value("invert", *q.value("invert"), "is no mask of 8 data lines (0 to 255)");
-    c.data_invert = static_cast<std::uint8_t>(invert);
-    unsigned watchdog = q.number("watchdog", c.watchdog_ms);
-    if (watchdog > 65535) q.bad_value("watchdog", *q.value("watchdog"), "is not 0 to 65535 milliseconds");
-    c.watchdog_ms = static_cast<std::uint16_t>(watchdog);
-    unsigned sprocket = q.number("sprocket-timeout", c.sprocket_timeout_ms);
-    if (sprocket < 1 || sprocket > 65535)
-        q.bad_value("sprocket-timeout", *q.value("sprocket-timeout"), "is not 1 to 65535 milliseconds");
-    c.sprocket_timeout_ms = static_cast<std::uint16_t>(sprocket);
-    tapefw::ReadStart start;
-    start.reverse = q.choice<std::uint8_t>("direction", 0, {{"forward", 0}, {"reverse", 1}});
+adapter::Settings adapter::settings_of(const DeviceQuery& q, DeviceUse use) {
+    Settings s;
+    if (auto serial = q.value("serial")) s.serial = std::string(*serial);
+    s.start.reverse = q.choice<std::uint8_t>("direction", 0, {{"forward", 0}, {"reverse", 1}});
     if (use == DeviceUse::write && q.value("direction"))
         q.fail("direction is the reader's, and this device is opened to punch");
-    bool configure = false;
-    for (auto key : settings_keys)
-        configure = configure || (key != "serial" && key != "direction" && q.value(key).has_value());
+    // The unit's line settings, sent as CONFIG when any is given (the adapter keeps its own otherwise);
+    // those not given at their defaults, as tape adapter config sends them.
+    AdapterConfig c;
+    c.tracks = q.number("tracks", c.tracks);
+    c.data_invert = q.number("invert", c.data_invert);
+    c.watchdog_ms = q.number("watchdog", c.watchdog_ms);
+    c.sprocket_timeout_ms = q.number("sprocket-timeout", c.sprocket_timeout_ms);
+    if (auto problem = adapter_config_problem(c); !problem.empty()) q.fail(problem);
+    bool given = false;
+    for (auto key : {"tracks", "invert", "watchdog", "sprocket-timeout"}) given = given || q.value(key);
+    if (given) s.config = to_wire(c);
+    return s;
+}
 
-    auto t = std::make_unique<AdapterTransport>(std::move(pipe), use, start);
+std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> pipe, const Settings& s, DeviceUse use) {
+    auto t = std::make_unique<AdapterTransport>(std::move(pipe), use, s.start);
     // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
-    auto serial = q.value("serial");
-    if (serial && *serial != t->session().info().serial)
-        throw Error(Errc::io, t->name() + ": this adapter's serial is " + t->session().info().serial + ", not " +
-                                  std::string(*serial));
+    const tapefw::Info& info = t->session().info();
+    if (s.serial && *s.serial != info.serial)
+        throw Error(Errc::io, t->name() + ": this adapter's serial is " + info.serial + ", not " + *s.serial);
     // Refused before anything is read or written, as the adapter would refuse its READ_START.
-    if (start.reverse && !(t->session().info().capabilities & tapefw::caps::reverse))
+    if (s.start.reverse && !(info.capabilities & tapefw::caps::reverse))
         throw Error(Errc::io, t->name() + ": this adapter's reader cannot read backwards (direction=reverse)");
-    if (configure) t->session().configure(c);
+    if (s.config) t->session().configure(*s.config);
     return t;
 }
 
@@ -235,14 +231,12 @@ std::string adapter::UsbId::text() const {
     return s;
 }
 
-std::unique_ptr<adapter::PacketPipe> open_cdc_pipe(std::string_view rest) {
-    DeviceQuery q("adapter", rest, adapter::settings_keys);
-    return std::make_unique<CdcPipe>(cdc_path(q));
+std::string adapter::device_string(std::string_view backend, const UsbId& id, std::string_view serial) {
+    return std::string(backend) + ":" + id.text() + (serial.empty() ? "" : "?serial=" + std::string(serial));
 }
 
-std::unique_ptr<Transport> open_adapter_device(std::string_view rest, DeviceUse use, bool) {
-    DeviceQuery q("adapter", rest, adapter::settings_keys);
-    return adapter::open_transport(std::make_unique<CdcPipe>(cdc_path(q)), q, use);
+std::unique_ptr<adapter::PacketPipe> open_cdc_pipe(const DeviceQuery& q) {
+    return std::make_unique<CdcPipe>(cdc_path(q));
 }
 
 }  // namespace tape

@@ -25,7 +25,7 @@ public:
     explicit HidPipe(const DeviceQuery& q) {
         adapter::UsbId id = adapter::usb_id("hid", q);
         auto serial = q.value("serial");
-        name_ = "hid:" + id.text() + (serial ? "?serial=" + std::string(*serial) : std::string());
+        name_ = adapter::device_string("hid", id, serial.value_or(""));
         if (hid_init() != 0) throw Error(Errc::io, name_ + ": cannot start hidapi");
         hid_device_info* list = hid_enumerate(id.vendor, id.product);
         std::string path;
@@ -76,13 +76,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<adapter::PacketPipe> open_hid_pipe(std::string_view rest) {
-    return std::make_unique<HidPipe>(DeviceQuery("hid", rest, adapter::settings_keys));
-}
-
-std::unique_ptr<Transport> open_hid_device(std::string_view rest, DeviceUse use, bool) {
-    DeviceQuery q("hid", rest, adapter::settings_keys);
-    return adapter::open_transport(std::make_unique<HidPipe>(q), q, use);
-}
+std::unique_ptr<adapter::PacketPipe> open_hid_pipe(const DeviceQuery& q) { return std::make_unique<HidPipe>(q); }
 
 }  // namespace tape

@@ -17,9 +17,8 @@ constexpr unsigned send_timeout_ms = 1000;
 class UsbPipe : public adapter::TransferPipe {
 public:
     explicit UsbPipe(const DeviceQuery& q) : id_(adapter::usb_id("usb", q)) {
-        name_ = "usb:" + id_.text();
         auto serial = q.value("serial");
-        if (serial) name_ += "?serial=" + std::string(*serial);
+        name_ = adapter::device_string("usb", id_, serial.value_or(""));
         check(libusb_init(&ctx_), "cannot start libusb");
         try {
             open(serial);
@@ -152,13 +151,6 @@ private:
 
 }  // namespace
 
-std::unique_ptr<adapter::PacketPipe> open_usb_pipe(std::string_view rest) {
-    return std::make_unique<UsbPipe>(DeviceQuery("usb", rest, adapter::settings_keys));
-}
-
-std::unique_ptr<Transport> open_usb_device(std::string_view rest, DeviceUse use, bool) {
-    DeviceQuery q("usb", rest, adapter::settings_keys);
-    return adapter::open_transport(std::make_unique<UsbPipe>(q), q, use);
-}
+std::unique_ptr<adapter::PacketPipe> open_usb_pipe(const DeviceQuery& q) { return std::make_unique<UsbPipe>(q); }
 
 }  // namespace tape

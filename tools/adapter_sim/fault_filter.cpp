@@ -1,8 +1,13 @@
 #include "fault_filter.hpp"
 
+#include <iterator>
+
 #include "core/protocol.hpp"
 
 namespace tapesim {
+
+// Bytes that are no packet, with no zero among them (a zero would end a COBS frame).
+constexpr std::uint8_t line_noise[] = {0x55, 0xAA, 0x13, 0xFF, 0x01, 0x80, 0x7E};
 
 void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& out) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -22,8 +27,7 @@ void FaultFilter::pass(const std::uint8_t* bytes, std::size_t n, std::string& ou
             [this, &out](const tapefw::Packet& p) {
                 if (desyncs_++ % 2 == 0) {
                     // Noise: bytes that are no packet (no zero among them), then the delimiter.
-                    for (std::uint8_t b : {0x55, 0xAA, 0x13, 0xFF, 0x01, 0x80, 0x7E})
-                        out.push_back(static_cast<char>(b));
+                    out.append(reinterpret_cast<const char*>(line_noise), sizeof line_noise);
                     out.push_back('\0');
                     return;
                 }
@@ -51,7 +55,7 @@ void FaultFilter::pass_packet(const std::uint8_t* bytes, std::size_t n, std::vec
         },
         [this, &out](const tapefw::Packet&) {
             ++desyncs_;
-            out.push_back({0x55, 0xAA, 0x13, 0xFF, 0x01, 0x80, 0x7E});  // a transfer that is no packet
+            out.emplace_back(std::begin(line_noise), std::end(line_noise));  // a transfer that is no packet
         });
 }
 
