@@ -5,13 +5,19 @@
 
 #include <algorithm>
 
+#include "tape/code_tables.hpp"
+
 using namespace tape;
 
 namespace {
-std::size_t count(std::string_view text, std::string_view rule, const FormatSpec* spec = nullptr) {
-    auto findings = lint(load(std::string(text)), LintOptions{spec});
+std::size_t count(std::string_view text, std::string_view rule, const FormatSpec* spec = nullptr,
+                  Dialect dialect = Dialect::gost) {
+    auto findings = lint(load(std::string(text), {}, LoadOptions{dialect}), LintOptions{spec});
     return static_cast<std::size_t>(
         std::count_if(findings.begin(), findings.end(), [&](const Finding& f) { return f.rule == rule; }));
+}
+std::size_t count_in(Dialect dialect, std::string_view text, std::string_view rule) {
+    return count(text, rule, nullptr, dialect);
 }
 }  // namespace
 
@@ -96,4 +102,53 @@ TEST(LintSpec, EveryWordAgainstTheFormat) {
     FormatSpec strict = parse_format_spec("N3 G2 X+53 M2");
     EXPECT_EQ(count("%\nN1 M02\n", "spec-digits", &strict), 1U);  // N3: exactly three digits
     EXPECT_EQ(count("%\nN001 M02\n", "spec-digits", &strict), 0U);
+}
+
+TEST(CodeTables, ValuesAreComparedWithoutLeadingZerosAndTrailingFractionZeros) {
+    EXPECT_EQ(code_value("01"), "1");
+    EXPECT_EQ(code_value("000"), "0");
+    EXPECT_EQ(code_value("012.10"), "12.1");
+    EXPECT_EQ(code_value("1.0"), "1");
+    EXPECT_EQ(code_value("38.2"), "38.2");
+    EXPECT_EQ(code_value("#1"), "");
+    EXPECT_EQ(code_value("1.2.3"), "");
+}
+
+TEST(CodeTables, GostKnowsTwoDigitCodesAndTheAcknowledgedThreeDigitM) {
+    EXPECT_TRUE(code_known(Dialect::gost, 'G', "1"));
+    EXPECT_TRUE(code_known(Dialect::gost, 'G', "12"));  // undefined: the controller's to use (note 1)
+    EXPECT_FALSE(code_known(Dialect::gost, 'G', "890"));
+    EXPECT_FALSE(code_known(Dialect::gost, 'G', "12.1"));
+    EXPECT_TRUE(code_known(Dialect::gost, 'M', "102"));  // M02 after the machine's acknowledgement
+    EXPECT_FALSE(code_known(Dialect::gost, 'M', "930"));
+    EXPECT_TRUE(code_known(Dialect::gost, 'X', "930"));  // only G and M have tables
+}
+
+TEST(CodeTables, FanucKnowsLatheMillAndDecimalCodes) {
+    for (const char* g : {"12.1", "13.1", "5.1", "50", "71", "76", "84.2", "112", "154"})
+        EXPECT_TRUE(code_known(Dialect::fanuc, 'G', g)) << "G" << g;
+    for (const char* g : {"38.2", "33.1", "890", "64.1"}) EXPECT_FALSE(code_known(Dialect::fanuc, 'G', g)) << "G" << g;
+    EXPECT_TRUE(code_known(Dialect::fanuc, 'M', "930"));  // the machine builder's
+    EXPECT_FALSE(code_known(Dialect::fanuc, 'M', "1234"));
+    EXPECT_EQ(code_meanings(Dialect::fanuc, 'G', "90").size(), 2U);  // a lathe cycle, a mill's absolute mode
+}
+
+TEST(CodeTables, LinuxcncKnowsItsReferenceAndTheUsersMCodes) {
+    for (const char* g : {"38.2", "33.1", "64", "5.2", "7", "90.1", "92.3", "59.3"})
+        EXPECT_TRUE(code_known(Dialect::linuxcnc, 'G', g)) << "G" << g;
+    EXPECT_FALSE(code_known(Dialect::linuxcnc, 'G', "12.1"));
+    for (const char* m : {"62", "68", "100", "199"}) EXPECT_TRUE(code_known(Dialect::linuxcnc, 'M', m)) << "M" << m;
+    EXPECT_FALSE(code_known(Dialect::linuxcnc, 'M', "200"));
+    EXPECT_FALSE(code_known(Dialect::linuxcnc, 'M', "13"));
+}
+
+TEST(Lint, UnknownCode) {
+    EXPECT_EQ(count("%\nN1 G890 X1\nN2 M930\nN3 M02\n", "unknown-code"), 2U);
+    EXPECT_EQ(count("%\nN1 G01 X1 F100\nN2 M102\n", "unknown-code"), 0U);
+    EXPECT_EQ(count("%\nN1 G01 X1 F100\nN2 M102\n", "program-end"), 0U);  // M102 is M02, acknowledged
+    EXPECT_EQ(count_in(Dialect::fanuc, "O1\nG12.1\nG38.2 Z-5\nM30\n", "unknown-code"), 1U);
+    EXPECT_EQ(count_in(Dialect::linuxcnc, "G38.2 Z-5 F10\nG12.1\nM2\n", "unknown-code"), 1U);
+    // The letters of a macro call are its arguments: M0.070 is #13, not an M code.
+    EXPECT_EQ(count_in(Dialect::fanuc, "O1\nG65 P9010 X1. M0.070\nM30\n", "unknown-code"), 0U);
+    EXPECT_EQ(count_in(Dialect::fanuc, "O1\nG#1 M#2\nM30\n", "unknown-code"), 0U);  // macro values
 }

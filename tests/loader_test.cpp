@@ -123,7 +123,7 @@ TEST(Loader, SeedPrograms) {
     ASSERT_EQ(turning.programs.size(), 1U);
     const auto& blocks = turning.programs[0].blocks;
     ASSERT_EQ(blocks.size(), 11U);
-    EXPECT_EQ(blocks[0].text(), "N001 G27 F2000 S64 T102 M102");
+    EXPECT_EQ(blocks[0].text(), "N001 G27 F2000 S64 T102 M104");
     EXPECT_EQ(blocks[9].text(), "N010 X+002000 Z-001000 F10000");
     auto circles = load(read_text(sample_path("circle-examples.txt")));
     EXPECT_EQ(circles.programs.at(0).blocks.at(6).text(), "N21 G03 G90 X250.0 Z140.0 I-100.0 J-50.0 F100");

@@ -13,8 +13,8 @@ namespace {
 // Columns: needs_percent lowercase semicolon_ends_block semicolon_comment macro_b o_words
 // o_program_number main_blocks skip_levels closing_percent ordered_words increasing_numbers corner_words.
 constexpr std::array<DialectRules, 3> table = {{
-    {Dialect::gost, true, false, false, false, false, false, false, true, false, false, true, true, false, "2 30",
-     "ГОСТ 20999-83 (ISO 6983)"},
+    {Dialect::gost, true, false, false, false, false, false, false, true, false, false, true, true, false,
+     "2 30 102 130", "ГОСТ 20999-83 (ISO 6983)"},
     {Dialect::fanuc, false, false, true, false, true, false, true, false, true, true, false, false, true, "2 30 99",
      "Fanuc Series 0i/16i/18i/21i/30i operator's manual: program format, Custom Macro B"},
     {Dialect::linuxcnc, false, true, false, true, false, true, false, false, false, true, false, false, false, "2 30",

@@ -6,6 +6,7 @@
 #include <functional>
 #include <utility>
 
+#include "tape/code_tables.hpp"
 #include "tape/functions.hpp"
 #include "tape/rules.hpp"
 
@@ -46,6 +47,24 @@ bool is_end_point(char a) { return std::string_view("XYZUVWABC").find(a) != std:
 
 using Add = const std::function<void(Finding)>&;
 
+std::string unknown_code_reason(Dialect d, char letter) {
+    switch (d) {
+        case Dialect::gost:
+            return letter == 'G' ? "is no G function of ГОСТ 20999-83: they have two digits, G00-G99 (table 4)"
+                                 : "is no M function of ГОСТ 20999-83: they have two digits, M00-M99 (table 7), or "
+                                   "three with a first 1 for after the machine's acknowledgement";
+        case Dialect::fanuc:
+            return letter == 'G'
+                       ? "is no G code of Fanuc lathes, mills or the Haas controls that follow them"
+                       : "is not in the Fanuc table: its M codes, the machine builder's, have at most three digits";
+        case Dialect::linuxcnc:
+            return letter == 'G' ? "is no LinuxCNC G code (G-code reference)"
+                                 : "is no LinuxCNC M code (M-code reference; M100-M199 are the user's)";
+        default:
+            return "is not known";
+    }
+}
+
 void add(Add out, std::string_view rule, const Location& where, std::uint64_t block, std::string message) {
     out(program_finding(rule, where, block, std::move(message)));
 }
@@ -68,6 +87,18 @@ void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points) {
     };
     if (b.number) check(*b.number);
     for (const auto& w : b.words) check(w);
+}
+
+// A G or M code outside the dialect's table (tape/code_tables.hpp); a macro value is not a code yet,
+// and the letters of a macro call (G65, G66) are its arguments (M0.070 is #13).
+void code_checks(Add out, const Block& b, Dialect dialect) {
+    if (has_g(b, {65, 66})) return;
+    for (const auto& w : b.words) {
+        if ((w.address != 'G' && w.address != 'M') || !w.known || w.macro || w.sign) continue;
+        std::string value = code_value(std::string_view(w.text).substr(1));
+        if (value.empty() || code_known(dialect, w.address, value)) continue;
+        add(out, "unknown-code", w.where, b.ordinal, w.text + " " + unknown_code_reason(dialect, w.address));
+    }
 }
 
 void word_checks(Add out, const Block& b, Dialect dialect) {
@@ -170,6 +201,7 @@ void LintVisitor::block(const Block& b) {
         if (n && dialect_ == Dialect::fanuc) numbers_.push_back(*n);
     }
     word_checks(sink_, b, dialect_);
+    code_checks(sink_, b, dialect_);
     motion_checks(b);
     flow_checks(b);
     if (options_.spec) held_.push_back(b);

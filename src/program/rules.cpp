@@ -9,7 +9,7 @@ namespace {
 constexpr auto E = Severity::error, W = Severity::warning, N = Severity::note;
 constexpr std::string_view all = "gost fanuc linuxcnc";
 
-constexpr std::array<Rule, 34> table = {{
+constexpr std::array<Rule, 35> table = {{
     // The loader: how characters become programs, blocks and words.
     {"unexpected-character", E, all, "ГОСТ 20999-83 tables 1-3",
      "a character, or a run of characters, that no program of the dialect may hold outside comments",
@@ -65,6 +65,11 @@ constexpr std::array<Rule, 34> table = {{
      "two G codes of one group in a block (G00/G01/G02/G03, G17/G18/G19, G80-G89, G54-G59, G90/G91, "
      "G93-G95, G96/G97)",
      "only one can be in effect: LinuxCNC refuses the block, Fanuc silently takes the last"},
+    {"unknown-code", E, all,
+     "ГОСТ 20999-83 tables 4 and 7 (G00-G99, M00-M99); the Fanuc and LinuxCNC G- and M-code lists",
+     "a G or M code that is not in the dialect's table (src/program/code_tables.cpp): G890 or M930 in a ГОСТ "
+     "program, G38.2 in a Fanuc one",
+     "the controller stops with an alarm, or the code was misread or mistyped"},
     {"word-order", W, "gost", "ГОСТ 20999-83 §2.2",
      "a word out of the recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (once a block)",
      "controllers of the ГОСТ family may expect this order"},
