@@ -19,7 +19,8 @@ bool needs_reread(tape::FrameStatus s) {
 }
 
 constexpr tape::FrameStatus all_statuses[] = {tape::FrameStatus::clean,    tape::FrameStatus::voted,
-                                              tape::FrameStatus::inferred, tape::FrameStatus::contested,
+                                              tape::FrameStatus::inferred, tape::FrameStatus::guessed,
+                                              tape::FrameStatus::contested,
                                               tape::FrameStatus::unstable, tape::FrameStatus::unresolved,
                                               tape::FrameStatus::missing,  tape::FrameStatus::extra};
 

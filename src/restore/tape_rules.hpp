@@ -1,0 +1,115 @@
+// What a tape's own program says about how it is written, learned from its blocks that no damage
+// touches, for repair to hold a candidate against (repair.cpp): the word formats it keeps, its block
+// numbers' step, the G and M codes it uses, the values its feeds, speeds and tools take, where the tool
+// stands before each damaged block (for arcs), which findings it has anyway, and how its characters
+// follow one another (for guesses).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <unordered_map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tape/format_spec.hpp"
+#include "tape/program.hpp"
+
+namespace tape::detail {
+
+/// How a word is written: its sign, and the digits before and after an explicit point (without one,
+/// all its digits and after = -1).
+struct WordShape {
+    char sign = 0;
+    int before = 0, after = -1;
+    auto operator<=>(const WordShape&) const = default;
+};
+/// The shape of a plain word; nullopt for a macro value or a word with no digits.
+std::optional<WordShape> shape_of(const Word& w);
+
+/// The machine's state where a block begins, as far as the blocks before it tell.
+struct MotionState {
+    std::array<std::optional<double>, 3> at{};  ///< X, Y, Z
+    std::array<bool, 3> pointed{};              ///< the coordinate was written with a decimal point
+    bool absolute = true;                       ///< G90 (G91: incremental)
+    int plane = 17;                             ///< G17, G18, G19
+    int motion = -1;                            ///< the modal motion G code (0-3), or -1
+};
+
+/// Moves state through one block: G90/G91, the plane, the motion code, and X, Y, Z. A block whose
+/// axis words mean something else (a dwell, a reference return, a setting), or whose values are
+/// macro expressions, leaves the axes it names unknown.
+void advance(MotionState& state, const Block& block);
+
+/// For a G02/G03 block with a centre (I, J, K) or a radius (R): true when its start (state) and end lie
+/// on one circle within the controller's tolerance, false when they do not; nullopt when the block is
+/// no arc or where the tool stands is not known.
+std::optional<bool> arc_agrees(const MotionState& before, const Block& block);
+
+class TapeRules {
+public:
+    /// Learns from the loaded program, leaving out the blocks on damaged lines (1-based lines of
+    /// t.text); keeps the motion state before each damaged line.
+    TapeRules(const LoadedTape& t, const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec);
+
+    /// The address is written often on this tape (at least common_words times) and never so.
+    bool shape_unseen(char address, const WordShape& shape) const;
+    /// G or M code value (code_value form) used in an undamaged block.
+    bool code_used(char letter, std::string_view value) const;
+    /// The number a damaged block's N word must have where its neighbours keep a steady step: the
+    /// block numbers before and after line, and the step, agree.
+    std::optional<long long> expected_number(std::uint64_t line) const;
+    /// A feed, speed or tool number far outside the values the tape gives that address.
+    bool value_out_of_range(char address, double value) const;
+    /// A finding the undamaged program has too: its rule and what it is about (the code, or the
+    /// character where it points).
+    bool excused(const std::string& key) const { return excused_.count(key) > 0; }
+    /// The motion state where a damaged line begins, if the blocks before it tell.
+    const MotionState* state_before(std::uint64_t line) const;
+    const FormatSpec* spec() const { return spec_; }
+    /// The program writes explicit points somewhere (for a format spec's checks).
+    bool points() const { return points_; }
+    static constexpr std::size_t common_words = 20;
+
+private:
+    void learn_block(const Block& b, bool damaged);
+    void learn_step();
+
+    std::map<char, std::map<WordShape, std::size_t>> shapes_;
+    std::map<char, std::size_t> words_;
+    std::set<std::string> codes_;
+    std::vector<std::pair<std::uint64_t, long long>> numbers_;  // (line, N) of undamaged blocks
+    std::map<char, std::pair<double, double>> ranges_;          // F S T: least and most
+    std::map<char, std::size_t> range_words_;
+    std::set<std::string> excused_;
+    std::map<std::uint64_t, MotionState> before_;
+    const FormatSpec* spec_;
+    bool points_ = false;
+    long long step_ = 0;  // the block numbers' steady step, 0 for none
+};
+
+/// How a tape's characters follow one another, for guesses: counts of three characters in a row.
+class CharModel {
+public:
+    void learn(std::string_view text);
+    /// How likely c is between the two characters before it and the one after, by how the text goes:
+    /// a log-odds score, higher is likelier.
+    double score(std::string_view before, char c, char after) const;
+
+private:
+    std::unordered_map<std::uint32_t, std::uint32_t> trigrams_;  // (a, b, c) -> count
+    std::unordered_map<std::uint32_t, std::uint32_t> bigrams_;   // (a, b) -> count
+};
+
+/// The key of a finding for TapeRules::excused: its rule, and the code (unknown-code) or the character
+/// at its column in text otherwise.
+std::string finding_key(const Finding& f, std::string_view line_text);
+
+/// True when text reads as an NC program: most of its letters outside comments are addresses followed
+/// by a value, as words are. DEC MACRO source, Elliott SIR and other text get no NC grammar.
+bool looks_like_nc_program(std::string_view text);
+
+}  // namespace tape::detail
