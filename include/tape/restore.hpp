@@ -88,6 +88,8 @@ struct RestoreResult {
     std::uint64_t contested_unwritten = 0;
     /// One read of a tape in no code: nothing could be checked, so nothing is known to be right.
     bool unchecked = false;
+    /// Most frames of the data fail the code given: it is not the tape's, and nothing was repaired.
+    bool code_misfit = false;
 
     std::uint64_t count(FrameStatus s) const { return counts[static_cast<std::size_t>(s)]; }
     /// True when every frame is clean, voted or inferred, and something could be checked.

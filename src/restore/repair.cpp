@@ -61,9 +61,11 @@ void set_status(RestoreResult& out, RestoreProblem& p, FrameStatus s, Frame f, s
 }
 
 // A frame with one hole (in every read that has it) in blank tape: the leader or trailer, or tape fed
-// between blocks (blank on both sides, past other such frames). Blank tape is what fits there.
+// between blocks (blank on both sides, past other such frames). Blank tape is what fits there. Not where
+// another read has it blank: against a hole, a blank reading is a character that may have lost its holes.
 bool hole_in_blank_tape(const RestoreResult& out, const RestoreProblem& p) {
-    if (!std::all_of(p.seen.begin(), p.seen.end(), [&](const std::optional<Frame>& f) { return !f || hole_count(*f) <= 1; }))
+    if (!std::all_of(p.seen.begin(), p.seen.end(),
+                     [&](const std::optional<Frame>& f) { return !f || hole_count(*f) == 1; }))
         return false;
     std::size_t at = static_cast<std::size_t>(*p.frame - 1);
     std::size_t l = at, r = at + 1;
@@ -174,30 +176,25 @@ void BlockRepair::ignore_rules_every_try_breaks() {
     }
 }
 
-// How likely a try's characters are where they stand, by how the tape's text goes.
+// How likely a try's frames are where they stand, by how the tape goes.
 double BlockRepair::score(const Tried& t) const {
+    auto frame = [&](std::size_t i) {
+        for (std::size_t j = 0; j < block_.size(); ++j)
+            if (at(j) == i) return t.choice[j];
+        return out_.frames[i];
+    };
     double sum = 0;
     for (std::size_t k = 0; k < block_.size(); ++k) {
-        const FrameCode& code = w_.setup.code;
-        Frame f = t.choice[k];
-        if (code.kind(f) != FrameKind::character) {
-            sum -= 6;  // a frame the reader skips stands where a character was seldom
-            continue;
-        }
-        std::string before;
-        for (std::size_t i = at(k); i-- > 0 && before.size() < 2;) {
-            std::size_t j = 0;
-            while (j < block_.size() && at(j) != i) ++j;
-            Frame g = j < block_.size() ? t.choice[j] : out_.frames[i];
-            if (code.kind(g) == FrameKind::character) before.insert(before.begin(), code.character(g));
-        }
-        char after = '\n';
+        Frame near[3] = {blank_frame, blank_frame, blank_frame};  // two before, one after
+        std::size_t found = 0;
+        for (std::size_t i = at(k); i-- > 0 && found < 2;)
+            if (frame(i) != blank_frame) near[1 - found++] = frame(i);
         for (std::size_t i = at(k) + 1; i < out_.frames.size(); ++i)
-            if (code.kind(out_.frames[i]) == FrameKind::character) {
-                after = code.character(out_.frames[i]);
+            if (frame(i) != blank_frame) {
+                near[2] = frame(i);
                 break;
             }
-        sum += w_.chars.score(before, code.character(f), after);
+        sum += w_.chars.score(near[0], near[1], t.choice[k], near[2]);
     }
     return sum;
 }

@@ -32,7 +32,7 @@ std::unique_ptr<RepairWorld> learn_world(std::span<const Frame> image, std::span
     for (std::size_t d : damaged) lines.insert(w->line_of(d));
     for (std::size_t l = 1; l < w->block_starts.size(); ++l)
         if (!lines.count(l))
-            w->chars.learn(block_text(code, image.subspan(w->block_starts[l - 1], w->block_starts[l] - w->block_starts[l - 1])));
+            w->chars.learn(image.subspan(w->block_starts[l - 1], w->block_starts[l] - w->block_starts[l - 1]));
     if (!w->setup.nc) return w;
     LoadedTape t = load(w->text, {}, LoadOptions{w->setup.dialect});
     w->rules = std::make_unique<TapeRules>(t, lines, o.spec);

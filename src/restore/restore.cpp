@@ -31,9 +31,17 @@ RestoreResult make_image(const detail::VoteResult& vote) {
     return out;
 }
 
-void add_missing_end(RestoreResult& out, bool start, std::size_t columns) {
+void add_missing_end(RestoreResult& out, const ReadAlignment& a, std::span<const std::span<const Frame>> reads,
+                     bool start) {
+    const std::size_t columns = a.columns();
     RestoreProblem p;
     p.status = FrameStatus::missing;
+    // What each read has at that end of the tape.
+    for (std::size_t r = 0; r < a.reads(); ++r) {
+        bool any = a.first_column(r) < a.end_column(r);
+        p.seen.push_back(!any ? std::nullopt : frame_at(a, reads, start ? a.first_column(r) : a.end_column(r) - 1, r));
+        p.covered.push_back(any);
+    }
     p.frame = start ? 1 : out.frames.size();
     p.after = start ? 0 : out.frames.size();
     p.column = start ? 0 : columns - 1;
@@ -83,11 +91,12 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
     for (std::size_t r = 0; r < a.reads(); ++r) related += a.related(r);
     out.unchecked = related == 1 && !o.code;
     if (o.code) {
+        out.code_misfit = detail::code_does_not_fit(out.frames, *o.code);
         detail::repair_unresolved(out, *o.code, o);
         detail::number_lines(out, *o.code);
     }
-    if (!detail::read_past_end(v, true)) add_missing_end(out, true, a.columns());
-    if (!detail::read_past_end(v, false)) add_missing_end(out, false, a.columns());
+    if (!detail::read_past_end(v, true)) add_missing_end(out, a, reads, true);
+    if (!detail::read_past_end(v, false)) add_missing_end(out, a, reads, false);
     return out;
 }
 

@@ -131,9 +131,10 @@ void TapeRules::learn_block(const Block& b, bool damaged) {
     }
 }
 
-void CharModel::learn(std::string_view text) {
-    unsigned char a = '\n', b = '\n';
-    for (unsigned char c : text) {
+void CharModel::learn(std::span<const Frame> frames) {
+    Frame a = blank_frame, b = blank_frame;
+    for (Frame c : frames) {
+        if (c == blank_frame) continue;
         ++trigrams_[key3(a, b, c)];
         ++bigrams_[key3(0, a, b)];
         a = b, b = c;
@@ -186,17 +187,16 @@ const MotionState* TapeRules::state_before(std::uint64_t line) const {
     return it == before_.end() ? nullptr : &it->second;
 }
 
-double CharModel::score(std::string_view before, char c, char after) const {
+double CharModel::score(Frame before2, Frame before1, Frame f, Frame after) const {
     auto count = [](const std::unordered_map<std::uint32_t, std::uint32_t>& m, std::uint32_t k) {
         auto it = m.find(k);
         return it == m.end() ? 0.0 : static_cast<double>(it->second);
     };
-    unsigned char a = before.size() >= 2 ? static_cast<unsigned char>(before[before.size() - 2]) : '\n';
-    unsigned char b = before.empty() ? '\n' : static_cast<unsigned char>(before.back());
-    auto uc = static_cast<unsigned char>(c), ua = static_cast<unsigned char>(after);
-    constexpr double pseudo = 0.1, kinds = 96;
-    return std::log((count(trigrams_, key3(a, b, uc)) + pseudo) / (count(bigrams_, key3(0, a, b)) + pseudo * kinds)) +
-           std::log((count(trigrams_, key3(b, uc, ua)) + pseudo) / (count(bigrams_, key3(0, b, uc)) + pseudo * kinds));
+    constexpr double pseudo = 0.1, kinds = 128;
+    return std::log((count(trigrams_, key3(before2, before1, f)) + pseudo) /
+                    (count(bigrams_, key3(0, before2, before1)) + pseudo * kinds)) +
+           std::log((count(trigrams_, key3(before1, f, after)) + pseudo) /
+                    (count(bigrams_, key3(0, before1, f)) + pseudo * kinds));
 }
 
 std::string finding_key(const Finding& f, std::string_view line_text) {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <span>
 #include <unordered_map>
 #include <optional>
 #include <set>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "tape/format_spec.hpp"
+#include "tape/frame.hpp"
 #include "tape/program.hpp"
 
 namespace tape::detail {
@@ -91,13 +93,14 @@ private:
     long long step_ = 0;  // the block numbers' steady step, 0 for none
 };
 
-/// How a tape's characters follow one another, for guesses: counts of three characters in a row.
+/// How a tape's frames follow one another, for guesses: counts of three frames in a row (blank tape
+/// skipped, as a reader skips it; DEL counted, as DEC tapes punch it after every tab).
 class CharModel {
 public:
-    void learn(std::string_view text);
-    /// How likely c is between the two characters before it and the one after, by how the text goes:
-    /// a log-odds score, higher is likelier.
-    double score(std::string_view before, char c, char after) const;
+    void learn(std::span<const Frame> frames);
+    /// How likely f is between the two frames before it and the one after (blank tape skipped), by how
+    /// the tape goes: a log-odds score, higher is likelier.
+    double score(Frame before2, Frame before1, Frame f, Frame after) const;
 
 private:
     std::unordered_map<std::uint32_t, std::uint32_t> trigrams_;  // (a, b, c) -> count
