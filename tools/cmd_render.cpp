@@ -5,6 +5,7 @@
 #include "tape/detect.hpp"
 #include "tape/label.hpp"
 #include "tape/render.hpp"
+#include "tape/restore_doubts.hpp"
 
 namespace cli {
 namespace {
@@ -46,6 +47,12 @@ void run(const RenderArgs& a) {
         o.label_first = label->first + 1;
         o.label_frames = label->frames;
     }
+    // Frames a restoration left in doubt (its doubts file beside the image) in the doubt colour.
+    if (a.input != "-")
+        for (const auto& d : tape::doubts_beside(a.input))
+            if (d.frame <= in.frames.size())
+                o.marks.push_back(
+                    {d.frame, tape::MarkKind::doubtful, "restored in doubt (" + d.status + "): " + d.reason});
     std::string svg;
     try {
         svg = tape::render_svg(in.frames, o);

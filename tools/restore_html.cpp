@@ -43,12 +43,13 @@ constexpr std::uint64_t context = 8;  // frames drawn and quoted on each side of
 
 std::string summary_html(const RestoreReportInput& in) {
     const tape::RestoreResult& r = *in.result;
-    std::string s = "<section id=\"summary\">\n<p>" + std::to_string(r.frames.size()) + " frames restored, code " +
-                    tape::xml_escaped(in.code_text) + ", aligned to read " + std::to_string(r.reference + 1) + ". " +
-                    (r.complete() ? "Every frame is clean, voted or inferred."
-                                  : "<strong>Not every frame could be decided:</strong> see the doubtful frames below.") +
-                    "</p>\n<table id=\"reads\">\n<tr><th>read</th><th>file</th><th>frames</th><th>shared with the "
-                    "reference</th></tr>\n";
+    std::string s =
+        "<section id=\"summary\">\n<p>" + std::to_string(r.frames.size()) + " frames restored, code " +
+        tape::xml_escaped(in.code_text) + ", aligned to read " + std::to_string(r.reference + 1) + ". " +
+        (r.complete() ? "Every frame is clean, voted or inferred."
+                      : "<strong>Not every frame could be decided:</strong> see the doubtful frames below.") +
+        "</p>\n<table id=\"reads\">\n<tr><th>read</th><th>file</th><th>frames</th><th>shared with the "
+        "reference</th></tr>\n";
     for (std::size_t i = 0; i < in.names.size(); ++i)
         s += "<tr><td>" + std::to_string(i + 1) + "</td><td>" + tape::xml_escaped(display_name(in.names[i])) +
              "</td><td>" + std::to_string(in.sizes[i]) + "</td><td>" +
@@ -71,7 +72,7 @@ std::string context_html(const RestoreReportInput& in, const tape::RestoreProble
     std::string s;
     for (std::uint64_t f = from; f <= to; ++f) {
         tape::Frame x = frames[f - 1];
-        std::string c = !in.code ? tape::frame_hex(x).substr(2) + " "
+        std::string c = !in.code                                         ? tape::frame_hex(x).substr(2) + " "
                         : in.code->kind(x) == tape::FrameKind::character ? tape::char_label(in.code->character(x))
                         : is_bad_frame(in.code->kind(x))                 ? "?"
                                                                          : "";
@@ -172,7 +173,8 @@ std::string restore_report_html(const RestoreReportInput& in) {
     }
     s += "</table>\n";
     if (r.problems.size() > most_rows)
-        s += "<p>" + std::to_string(r.problems.size() - most_rows) + " more problem frames: see the text or JSON report.</p>\n";
+        s += "<p>" + std::to_string(r.problems.size() - most_rows) +
+             " more problem frames: see the text or JSON report.</p>\n";
     if (r.problems.empty()) s += "<p>No problem frames.</p>\n";
     s += drawing + "</body>\n</html>\n";
     return s;

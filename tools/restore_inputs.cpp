@@ -9,19 +9,20 @@ namespace {
 [[noreturn]] void too_long(const std::string& name) {
     fail(display_name(name), tape::Errc::bad_image,
          "more than " + std::to_string(tape::max_read_frames) +
-             " frames (254 km of tape): no paper tape is that long; restore and diff take reads up to that length");
+             " frames (254 km of tape): no paper tape is that long; restore, diff and tape-damage take reads up to "
+             "that length");
 }
 
 }  // namespace
 
-TapeInput read_bounded(const std::string& path) {
+TapeInput read_bounded(const std::string& path, const std::string& format_id) {
     TapeInput in;
     in.name = path.empty() ? "-" : path;
-    tape::InputOptions o = input_options(CodeChoice{}, "", "image");
+    tape::InputOptions o = input_options(CodeChoice{}, format_id, "image");
     o.detect_code = false;
     auto input = open_input(in.name, o);
     in.format = input->format();
-    struct stat st{};
+    struct stat st {};
     if (in.name != "-" && in.format && in.format->bytes_are_frames && ::stat(in.name.c_str(), &st) == 0 &&
         S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) > tape::max_read_frames)
         too_long(in.name);

@@ -1,4 +1,4 @@
-// The reads of tape restore and tape diff: each read whole, named by its file, and refused above the
+// The reads of tape restore, tape diff and tape-damage: each read whole, named by its file, and refused above the
 // frames any paper tape holds (tape::max_read_frames) before it is held in memory.
 #pragma once
 
@@ -10,10 +10,10 @@
 
 namespace cli {
 
-/// READ read whole as a tape image ("-": standard input). A file of more than tape::max_read_frames
-/// frames is refused (bad data) with a message saying the limit: a raw image by its size before it is
-/// read, any other as soon as it passes the limit.
-TapeInput read_bounded(const std::string& path);
+/// READ read whole as a tape image ("-": standard input), in format_id (empty: by extension or content).
+/// A file of more than tape::max_read_frames frames is refused (bad data) with a message saying the
+/// limit: a raw image by its size before it is read, any other as soon as it passes the limit.
+TapeInput read_bounded(const std::string& path, const std::string& format_id = "");
 
 /// Every read, in order.
 std::vector<TapeInput> read_all_bounded(const std::vector<std::string>& paths);

@@ -19,9 +19,9 @@ std::string cm(std::uint64_t frame) {
 double cm_value(std::uint64_t frame) { return std::round(tape::frame_distance_cm(frame) * 10) / 10; }
 
 constexpr tape::FrameStatus all_statuses[] = {
-    tape::FrameStatus::clean,     tape::FrameStatus::voted,    tape::FrameStatus::inferred,
-    tape::FrameStatus::guessed,   tape::FrameStatus::contested, tape::FrameStatus::unstable,
-    tape::FrameStatus::unresolved, tape::FrameStatus::missing,  tape::FrameStatus::extra};
+    tape::FrameStatus::clean,      tape::FrameStatus::voted,     tape::FrameStatus::inferred,
+    tape::FrameStatus::guessed,    tape::FrameStatus::contested, tape::FrameStatus::unstable,
+    tape::FrameStatus::unresolved, tape::FrameStatus::missing,   tape::FrameStatus::extra};
 
 std::string summary_text(const tape::RestoreResult& r) {
     std::string s = "frames:";
@@ -179,37 +179,47 @@ std::string restore_report_text(const RestoreReportInput& in) {
     return s;
 }
 
+// The report is one JSON object, its members made by nlohmann-json one by one, so that the problems of a
+// long tape are never all held as JSON values at once.
 std::string restore_report_json(const RestoreReportInput& in) {
     using nlohmann::ordered_json;
     const tape::RestoreResult& r = *in.result;
-    ordered_json j;
-    j["schema"] = "tape-restore/2";
-    j["code"] = in.code ? ordered_json(in.code_text) : ordered_json(nullptr);
-    j["reads"] = ordered_json::array();
+    std::string s = "{";
+    auto member = [&s](const char* key, const ordered_json& value) {
+        s += (s.size() > 1 ? "," : "") + ordered_json(key).dump() + ":" + value.dump();
+    };
+    member("schema", "tape-restore/2");
+    member("code", in.code ? ordered_json(in.code_text) : ordered_json(nullptr));
+    ordered_json reads = ordered_json::array();
     for (std::size_t i = 0; i < in.names.size(); ++i)
-        j["reads"].push_back({{"file", display_name(in.names[i])},
-                              {"frames", in.sizes[i]},
-                              {"shared", std::round(r.shared[i] * 1000) / 1000},
-                              {"related", static_cast<bool>(r.related[i])}});
-    j["reference"] = r.reference + 1;
-    j["frames"] = r.frames.size();
-    j["complete"] = r.complete();
-    j["checked"] = !r.unchecked;
+        reads.push_back({{"file", display_name(in.names[i])},
+                         {"frames", in.sizes[i]},
+                         {"shared", std::round(r.shared[i] * 1000) / 1000},
+                         {"related", static_cast<bool>(r.related[i])}});
+    member("reads", reads);
+    member("reference", r.reference + 1);
+    member("frames", r.frames.size());
+    member("complete", r.complete());
+    member("checked", !r.unchecked);
     ordered_json summary;
     for (auto st : all_statuses) summary[std::string(tape::status_name(st))] = r.count(st);
     summary["run_length_votes"] = r.run_length_votes;
     summary["in_doubt_not_written"] = r.contested_unwritten;
-    j["summary"] = summary;
-    j["problems"] = ordered_json::array();
-    for (const auto& p : r.problems) j["problems"].push_back(problem_json(p));
-    j["reread"] = ordered_json::array();
+    member("summary", summary);
+    s += ",\"problems\":[";
+    for (std::size_t i = 0; i < r.problems.size(); ++i) s += (i ? "," : "") + problem_json(r.problems[i]).dump();
+    s += "]";
+    ordered_json reread = ordered_json::array();
     for (const auto& x : reread_list(r))
-        j["reread"].push_back({{"from", x.from}, {"to", x.to}, {"from_cm", cm_value(x.from)}, {"to_cm", cm_value(x.to)}});
+        reread.push_back({{"from", x.from}, {"to", x.to}, {"from_cm", cm_value(x.from)}, {"to_cm", cm_value(x.to)}});
+    member("reread", reread);
     if (!in.image_name.empty() && in.image_name != "-") {
         auto bytes = std::span(reinterpret_cast<const std::uint8_t*>(in.image_bytes.data()), in.image_bytes.size());
-        j["image"] = {{"file", in.image_name}, {"bytes", in.image_bytes.size()}, {"fnv1a64", tape::image_fingerprint(bytes)}};
+        member(
+            "image",
+            {{"file", in.image_name}, {"bytes", in.image_bytes.size()}, {"fnv1a64", tape::image_fingerprint(bytes)}});
     }
-    return j.dump() + "\n";
+    return s + "}\n";
 }
 
 }  // namespace cli

@@ -73,6 +73,8 @@ public:
 
     /// For align_reads: appends one column (reads() entries).
     void add_column(std::span<const std::int32_t> column);
+    /// For align_reads: room for this many columns.
+    void reserve(std::size_t columns) { cells_.reserve(columns * reads_); }
     void set_shared(std::size_t read, double fraction) { shared_.at(read) = fraction; }
     void set_related(std::size_t read, bool related) { related_.at(read) = related; }
     /// Shared and related, as another alignment of the same reads has them.

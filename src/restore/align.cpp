@@ -22,14 +22,17 @@ using Pairs = std::vector<std::pair<std::int32_t, std::int32_t>>;  // (reference
 // next to a gap of the other.
 int score(Frame a, Frame b) {
     if (a == b) return 4;
-    return hole_count(a ^ b) == 1 ? -2 : -18;
+    unsigned x = a ^ b;
+    return (x & (x - 1)) == 0 ? -2 : -18;  // one hole apart
 }
 constexpr int gap_open = -8;    // the first frame of a run of gaps
 constexpr int gap_extend = -2;  // each further one
 constexpr int gap_switch = -7;  // a run of gaps of one kind opening next to one of the other
 
 // The rolling hash of every run of k frames that is not mostly blank (a run of leader anchors
-// nothing), with where it starts: sorted by hash, then by place.
+// nothing), with where it starts: sorted by hash, then by place. One run in four is kept, chosen by its
+// hash, so the same runs in every read: anchors a few frames apart cover the reads as well, at a
+// quarter of the sorting.
 using Runs = std::vector<std::pair<std::uint64_t, std::int32_t>>;
 Runs hashed_runs(std::span<const Frame> s, std::size_t k) {
     Runs all;
@@ -37,7 +40,7 @@ Runs hashed_runs(std::span<const Frame> s, std::size_t k) {
     constexpr std::uint64_t base = 0x100000001B3ULL;
     std::uint64_t top = 1, h = 0;
     for (std::size_t i = 0; i + 1 < k; ++i) top *= base;
-    all.reserve(s.size() - k + 1);
+    all.reserve((s.size() - k + 1) / 3);  // about one run in four is kept
     std::size_t blanks = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (i >= k) {
@@ -46,7 +49,9 @@ Runs hashed_runs(std::span<const Frame> s, std::size_t k) {
         }
         h = h * base + (s[i] + 1ULL);
         blanks += s[i] == blank_frame;
-        if (i + 1 >= k && blanks < k / 2) all.emplace_back(h, static_cast<std::int32_t>(i + 1 - k));
+        std::uint64_t mixed = (h ^ (h >> 29)) * 0xBF58476D1CE4E5B9ULL;
+        if (i + 1 >= k && blanks < k / 2 && (mixed >> 62) == 0)
+            all.emplace_back(h, static_cast<std::int32_t>(i + 1 - k));
     }
     std::sort(all.begin(), all.end());
     return all;
@@ -83,52 +88,58 @@ Pairs matching_runs(const Runs& rr, const Runs& dr, std::size_t& could) {
     return anchors;
 }
 
-// Anchors one frame apart on one diagonal, as one: where both reads run alike.
+// Anchors on one diagonal whose runs touch or overlap, as one: where both reads run alike.
 struct Segment {
-    std::int32_t i, j, length;  // the first anchor, and how many
+    std::int32_t i, j, last_i;          // the first anchor, and where the last one starts
+    std::size_t first_anchor, anchors;  // in the sorted anchors
     std::int64_t diagonal() const { return static_cast<std::int64_t>(j) - i; }
 };
 
-std::vector<Segment> segments_of(const Pairs& anchors) {
+std::vector<Segment> segments_of(const Pairs& anchors, std::int32_t k) {
     std::vector<Segment> out;
-    for (auto [i, j] : anchors) {
+    for (std::size_t a = 0; a < anchors.size(); ++a) {
+        auto [i, j] = anchors[a];
         if (!out.empty()) {
             Segment& s = out.back();
-            if (s.i + s.length == i && s.j + s.length == j) {
-                ++s.length;
+            if (j - i == s.diagonal() && i > s.last_i && i <= s.last_i + k) {
+                s.last_i = i, ++s.anchors;
                 continue;
             }
         }
-        out.push_back({i, j, 1});
+        out.push_back({i, j, i, a, 1});
     }
     return out;
 }
 
-// The best chain of segments increasing in both reads. Each segment gains its anchors; a change of
-// diagonal between two segments costs more the farther it shifts: a reader drops or doubles a frame
-// or a few, so reads drift slowly, while a run that happens to recur elsewhere (a repeated section of
-// a program) jumps far and back, and is left out.
-Pairs chain(const Pairs& anchors) {
-    std::vector<Segment> seg = segments_of(anchors);
+// The best chain of segments increasing in both reads. Each segment gains the frames its runs cover
+// beyond the segment before; a change of diagonal between two costs more the farther it shifts: a
+// reader drops or doubles a frame or a few, so reads drift slowly, while a run that happens to recur
+// elsewhere (a repeated section of a program) jumps far and back, and is left out.
+Pairs chain(const Pairs& anchors, std::int32_t k) {
+    std::vector<Segment> seg = segments_of(anchors, k);
     constexpr std::size_t lookback = 64;
     constexpr std::int64_t shift_cost = 2, frames_per_point = 8;
     std::vector<std::int64_t> score(seg.size());
     std::vector<std::size_t> before(seg.size(), SIZE_MAX);
     std::size_t best = SIZE_MAX;
     for (std::size_t s = 0; s < seg.size(); ++s) {
-        score[s] = seg[s].length;
+        const std::int64_t end = seg[s].last_i + k;
+        score[s] = end - seg[s].i;
         for (std::size_t t = s > lookback ? s - lookback : 0; t < s; ++t) {
-            if (seg[t].i >= seg[s].i || seg[t].j >= seg[s].j) continue;
+            if (seg[t].i >= seg[s].i || seg[t].j >= seg[s].j || seg[t].last_i + k >= end) continue;
             std::int64_t shift = seg[s].diagonal() - seg[t].diagonal();
-            std::int64_t gain =
-                score[t] + seg[s].length - (shift ? shift_cost + (shift < 0 ? -shift : shift) / frames_per_point : 0);
+            std::int64_t gain = score[t] + end - std::max<std::int64_t>(seg[s].i, seg[t].last_i + k) -
+                                (shift ? shift_cost + (shift < 0 ? -shift : shift) / frames_per_point : 0);
             if (gain > score[s]) score[s] = gain, before[s] = t;
         }
         if (best == SIZE_MAX || score[s] > score[best]) best = s;
     }
     Pairs out;
     for (std::size_t s = best; s != SIZE_MAX; s = before[s])
-        for (std::int32_t t = seg[s].length; t-- > 0;) out.emplace_back(seg[s].i + t, seg[s].j + t);
+        for (std::size_t a = seg[s].first_anchor + seg[s].anchors; a-- > seg[s].first_anchor;) {
+            auto [i, j] = anchors[a];
+            if (j - i == seg[s].diagonal()) out.emplace_back(i, j);
+        }
     std::reverse(out.begin(), out.end());
     return out;
 }
@@ -151,8 +162,12 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     enum : std::uint8_t { M = 0, X = 1, Y = 2 };
     constexpr int never = INT_MIN / 4;
     auto run = [](std::size_t len) { return gap_open + static_cast<int>(len - 1) * gap_extend; };
-    std::vector<std::uint8_t> trace((a + 1) * (b + 1));
-    std::vector<int> pm(b + 1, never), px(b + 1, never), py(b + 1, never), cm(b + 1), cx(b + 1), cy(b + 1);
+    // Scratch kept between calls: the stretches between anchors are many and mostly a few frames long.
+    thread_local std::vector<std::uint8_t> trace;
+    thread_local std::vector<int> pm, px, py, cm, cx, cy;
+    trace.assign((a + 1) * (b + 1), 0);
+    pm.assign(b + 1, never), px.assign(b + 1, never), py.assign(b + 1, never);
+    cm.assign(b + 1, 0), cx.assign(b + 1, 0), cy.assign(b + 1, 0);
     pm[0] = 0;
     for (std::size_t j = 1; j <= b; ++j) py[j] = free_start ? 0 : run(j);
     auto best3 = [](int m, int x, int y, std::uint8_t& from) {
@@ -191,11 +206,11 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     }
     std::size_t i = best_i, j = best_j;
     std::uint8_t state = best_state;
-    Pairs stretch;
+    const std::size_t first = out.size();  // the pairs come last first: turned once all are in
     while (i > 0 && j > 0) {
         std::uint8_t t = trace[i * (b + 1) + j];
         if (state == M) {
-            stretch.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
+            out.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
             state = t & 3, --i, --j;
         } else if (state == X) {
             state = (t >> 2) & 3, --i;
@@ -203,7 +218,7 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
             state = (t >> 4) & 3, --j;
         }
     }
-    out.insert(out.end(), stretch.rbegin(), stretch.rend());
+    std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
 }
 
 // The pairs of ref and read frames that stand in one column, in order.
@@ -214,7 +229,7 @@ Pairs pair_up(std::span<const Frame> ref, const Runs& ref_runs, std::span<const 
               double& anchored_share) {
     const std::size_t k = anchor_length(o);
     std::size_t could = 0;
-    Pairs runs, chained = chain(matching_runs(ref_runs, hashed_runs(read, k), could));
+    Pairs runs, chained = chain(matching_runs(ref_runs, hashed_runs(read, k), could), static_cast<std::int32_t>(k));
     // How much of what could anchor did: runs that occur as often in each read, in order.
     anchored_share = could ? std::min(1.0, static_cast<double>(chained.size()) / static_cast<double>(could)) : 0;
     // Each anchor's frames, checked (a hash may collide), become pairs on its diagonal.
@@ -375,6 +390,7 @@ ReadAlignment refine(std::span<const std::span<const Frame>> reads, const ReadAl
     const std::size_t n_reads = a.reads();
     ReadAlignment out(n_reads, a.reference());
     out.take_read_facts(a);
+    out.reserve(a.columns() + a.columns() / 64);
     auto solid = [&](std::size_t c) { return unanimous(a, reads, c); };
     std::vector<std::int32_t> column(n_reads), lo(n_reads), len(n_reads);
     auto copy = [&](std::size_t c) {
@@ -444,6 +460,7 @@ ReadAlignment merge_substitutions(const ReadAlignment& a) {
     const std::size_t n = a.reads();
     ReadAlignment out(n, a.reference());
     out.take_read_facts(a);
+    out.reserve(a.columns());
     auto same_reads = [&](std::size_t x, std::size_t y) {
         for (std::size_t r = 0; r < n; ++r)
             if ((a.frame(x, r) == ReadAlignment::none) != (a.frame(y, r) == ReadAlignment::none)) return false;
@@ -614,6 +631,10 @@ ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const A
         for (std::size_t r = 0; r < reads.size(); ++r)
             if (!w.related[r]) throw UnrelatedRead(r, w.ref, w.anchored[r]);
     ReadAlignment out(reads.size(), w.ref);
+    std::size_t inserted = 0;  // frames standing between reference frames: at most this many more columns
+    for (const auto& ins : w.inserts)
+        for (const auto& i : ins) inserted += static_cast<std::size_t>(i.count);
+    out.reserve(reads[w.ref].size() + inserted);
     for (std::size_t r = 0; r < reads.size(); ++r) {
         out.set_shared(r, w.related[r] ? w.shared[r] : 0);
         out.set_related(r, w.related[r]);

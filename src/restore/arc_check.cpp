@@ -9,7 +9,7 @@ namespace tape::detail {
 namespace {
 
 struct PlaneAxes {
-    int u, v;          // X=0, Y=1, Z=2
+    int u, v;  // X=0, Y=1, Z=2
     char centre_u, centre_v;
 };
 
@@ -62,7 +62,8 @@ std::optional<bool> arc_agrees(const MotionState& before, const Block& block) {
     if (!su || !sv || !eu || !ev) return std::nullopt;
     ArcWords a = arc_words(block, axes);
     // Values with and without points in one arc have no common scale (an implied point).
-    bool start_pointed = before.pointed[static_cast<std::size_t>(axes.u)] || before.pointed[static_cast<std::size_t>(axes.v)];
+    bool start_pointed =
+        before.pointed[static_cast<std::size_t>(axes.u)] || before.pointed[static_cast<std::size_t>(axes.v)];
     if (a.macro || (a.pointed && a.unpointed) || (a.unpointed && start_pointed && (*su != 0 || *sv != 0)))
         return std::nullopt;
     double unit = a.unpointed ? 1 : std::pow(10.0, -std::max(a.decimals, 1));

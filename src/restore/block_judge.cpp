@@ -98,8 +98,10 @@ std::string block_text(const FrameCode& code, std::span<const Frame> frames, std
 
 BlockJudge::BlockJudge(const RepairSetup& setup, std::span<const Frame> image, std::size_t from, std::size_t to,
                        std::uint64_t line, std::span<const std::size_t> damaged)
-    : s_(setup), frames_(image.begin() + static_cast<std::ptrdiff_t>(from), image.begin() + static_cast<std::ptrdiff_t>(to)),
-      from_(from), line_(line) {
+    : s_(setup),
+      frames_(image.begin() + static_cast<std::ptrdiff_t>(from), image.begin() + static_cast<std::ptrdiff_t>(to)),
+      from_(from),
+      line_(line) {
     auto [b, e] = around(s_.code, image, from, to, 2);
     before_ = block_text(s_.code, image.subspan(b, from - b));
     after_ = block_text(s_.code, image.subspan(to, e - to));
@@ -113,7 +115,8 @@ BlockJudge::BlockJudge(const RepairSetup& setup, std::span<const Frame> image, s
     for (std::size_t i = 0; i < chars.size(); ++i)
         if (chars[i] == 1) {
             auto [x, y] = word_span(chars, i);
-            std::fill(gone.begin() + static_cast<std::ptrdiff_t>(x), gone.begin() + static_cast<std::ptrdiff_t>(y), true);
+            std::fill(gone.begin() + static_cast<std::ptrdiff_t>(x), gone.begin() + static_cast<std::ptrdiff_t>(y),
+                      true);
         }
     std::u32string kept;
     for (std::size_t i = 0; i < chars.size(); ++i)
@@ -124,6 +127,10 @@ BlockJudge::BlockJudge(const RepairSetup& setup, std::span<const Frame> image, s
 LoadedTape BlockJudge::load_with_context(const std::string& block_text) const {
     return load(before_ + block_text + after_, {}, LoadOptions{s_.dialect});
 }
+
+// Rules about the program as a whole (a GOTO's target, loops and o-words closed), which a block and its
+// neighbours cannot settle.
+bool whole_program_rule(std::string_view id) { return id == "goto-target" || id == "control-flow"; }
 
 // The error findings of the snippet (context, block, context) by key, from the block's first line on.
 std::map<std::string, int> BlockJudge::error_keys(const LoadedTape& t) const {
@@ -136,7 +143,9 @@ std::map<std::string, int> BlockJudge::error_keys(const LoadedTape& t) const {
     std::map<std::string, int> out;
     for (const auto& f : lint(t, LintOptions{s_.spec})) {
         std::uint64_t l = f.where.line.value_or(0);
-        if (f.severity != Severity::error || l <= before_lines_ || l > lines.size() || f.id() == "parity") continue;
+        if (f.severity != Severity::error || l <= before_lines_ || l > lines.size() || f.id() == "parity" ||
+            whole_program_rule(f.id()))
+            continue;
         ++out[finding_key(f, lines[l - 1])];
     }
     return out;
@@ -187,13 +196,14 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
         auto shape = shape_of(*w);
         if (shape && rules.shape_unseen(w->address, *shape)) out.push_back("word-format");
         if (s_.spec)
-            for (const auto& [rule, message] : check_word(*w, *s_.spec, rules.points())) out.push_back(std::string(rule));
+            for (const auto& [rule, message] : check_word(*w, *s_.spec, rules.points()))
+                out.push_back(std::string(rule));
         if (w->address == 'N' && w->where.line == before_lines_ + 1)
             if (auto expected = rules.expected_number(line_); expected && w->integer() != expected)
                 out.push_back("block-number");
         if ((w->address == 'F' || w->address == 'S' || w->address == 'T') && shape)
-            if (rules.value_out_of_range(w->address, std::strtod(w->digits().c_str(), nullptr) /
-                                                         std::pow(10.0, std::max(shape->after, 0))))
+            if (rules.value_out_of_range(
+                    w->address, std::strtod(w->digits().c_str(), nullptr) / std::pow(10.0, std::max(shape->after, 0))))
                 out.push_back("value-range");
     }
     if (const MotionState* state = rules.state_before(line_); state && first)

@@ -43,8 +43,10 @@ bool read_went_past(const VoteContext& v, std::size_t r, bool start) {
         }
         bool others_cover = false;
         bool data = alone || backed_by_another(v, c, r, *f, others_cover) || (!others_cover && since_data <= close);
-        if (data) past = false, since_data = 0;
-        else ++since_data;
+        if (data)
+            past = false, since_data = 0;
+        else
+            ++since_data;
     };
     if (start)
         for (std::size_t c = end; c-- > first;) step(c);

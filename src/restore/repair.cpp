@@ -255,20 +255,55 @@ bool code_does_not_fit(std::span<const Frame> frames, const FrameCode& code) {
     return data.size() >= 8 && bad * 4 > data.size();
 }
 
-void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreOptions& o) {
-    std::vector<RestoreProblem*> unresolved;
+// With --guess, good readings the vote could not choose between: the likeliest by how the tape goes (the
+// one a reading failing parity leans to, when there is one, comes first among the candidates).
+void guess_ties(RestoreResult& out, const RepairWorld& w, std::span<RestoreProblem* const> ties) {
+    for (RestoreProblem* p : ties) {
+        std::size_t at = static_cast<std::size_t>(*p->frame - 1);
+        Frame near[3] = {blank_frame, blank_frame, blank_frame};
+        std::size_t found = 0;
+        for (std::size_t i = at; i-- > 0 && found < 2;)
+            if (out.frames[i] != blank_frame) near[1 - found++] = out.frames[i];
+        for (std::size_t i = at + 1; i < out.frames.size(); ++i)
+            if (out.frames[i] != blank_frame) {
+                near[2] = out.frames[i];
+                break;
+            }
+        bool leans = p->reason.find("one hole from") != std::string::npos;
+        Frame best = p->candidates.front();
+        double best_score = w.chars.score(near[0], near[1], best, near[2]);
+        for (Frame c : p->candidates)
+            if (!leans && w.chars.score(near[0], near[1], c, near[2]) > best_score)
+                best = c, best_score = w.chars.score(near[0], near[1], c, near[2]);
+        std::erase(p->candidates, best);
+        p->candidates.insert(p->candidates.begin(), best);
+        set_status(out, *p, FrameStatus::guessed, best,
+                   "guessed: the likeliest of " + std::to_string(p->candidates.size()) +
+                       " good readings that disagree, by how the tape goes" +
+                       (leans ? " (a reading failing parity is one hole from it)" : ""));
+    }
+}
+
+void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreOptions& o,
+                       std::unique_ptr<RepairWorld> world) {
+    std::vector<RestoreProblem*> unresolved, ties;
     std::vector<std::size_t> doubtful;
     for (auto& p : out.problems) {
         if (!p.frame) continue;
         if (p.status != FrameStatus::clean) doubtful.push_back(static_cast<std::size_t>(*p.frame - 1));
         if (p.status == FrameStatus::unresolved) unresolved.push_back(&p);
+        if (o.guess && (p.status == FrameStatus::contested || p.status == FrameStatus::unstable) &&
+            p.candidates.size() > 1 && !p.run_length)
+            ties.push_back(&p);
     }
-    if (unresolved.empty()) return;
+    if (unresolved.empty() && ties.empty()) return;
     if (code_does_not_fit(out.frames, code)) {
-        for (RestoreProblem* p : unresolved) p->reason = "not repaired: most frames fail the code, so it is not the tape's";
+        for (RestoreProblem* p : unresolved)
+            p->reason = "not repaired: most frames fail the code, so it is not the tape's";
         return;
     }
-    auto world = learn_world(out.frames, doubtful, code, o);
+    if (!world) world = learn_world(out.frames, doubtful, code, o);
+    guess_ties(out, *world, ties);
     std::vector<RestoreProblem*> block;
     std::uint64_t block_line = 0;
     constexpr std::size_t most_damaged = 8;  // frames of one block tried together

@@ -28,14 +28,15 @@ std::unique_ptr<RepairWorld> learn_world(std::span<const Frame> image, std::span
     w->setup.spec = o.spec;
     w->setup.nc = looks_like_nc_program(w->text);
     w->setup.dialect = o.dialect != Dialect::automatic ? o.dialect : guess_dialect(w->text).dialect;
-    std::set<std::uint64_t> lines;
+    std::set<std::uint64_t>& lines = w->damaged_lines;
     for (std::size_t d : damaged) lines.insert(w->line_of(d));
     for (std::size_t l = 1; l < w->block_starts.size(); ++l)
         if (!lines.count(l))
             w->chars.learn(image.subspan(w->block_starts[l - 1], w->block_starts[l] - w->block_starts[l - 1]));
     if (!w->setup.nc) return w;
-    LoadedTape t = load(w->text, {}, LoadOptions{w->setup.dialect});
-    w->rules = std::make_unique<TapeRules>(t, lines, o.spec);
+    w->rules = std::make_unique<TapeRules>(lines, o.spec);
+    load_each(w->text, {}, *w->rules, LoadOptions{w->setup.dialect});
+    w->rules->finish(w->text);
     w->setup.rules = w->rules.get();
     return w;
 }

@@ -12,6 +12,7 @@ namespace tape::detail {
 
 struct RepairWorld {
     RepairSetup setup;
+    std::set<std::uint64_t> damaged_lines;
     std::unique_ptr<TapeRules> rules;
     CharModel chars;   ///< how the text goes, for guesses
     std::string text;  ///< the image's text, a bad frame as U+FFFD

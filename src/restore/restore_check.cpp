@@ -10,8 +10,8 @@ namespace {
 
 // What the report says of each output frame of the data, and of the frames it left out.
 struct Doubts {
-    std::vector<bool> frame;     // per output frame: in doubt
-    std::vector<bool> after;     // per output frame count before: a frame left out there is in doubt
+    std::vector<bool> frame;  // per output frame: in doubt
+    std::vector<bool> after;  // per output frame count before: a frame left out there is in doubt
 };
 
 Doubts doubts_of(const RestoreResult& r) {
@@ -51,8 +51,9 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
     out.exact = std::equal(a.begin(), a.end(), b.begin(), b.end());
     out.blank_ends = static_cast<std::uint64_t>(
         std::abs(static_cast<long long>(a.data() - tape.data()) - static_cast<long long>(b.data() - r.frames.data())) +
-        std::abs(static_cast<long long>(tape.size() - a.size() - static_cast<std::size_t>(a.data() - tape.data())) -
-                 static_cast<long long>(r.frames.size() - b.size() - static_cast<std::size_t>(b.data() - r.frames.data()))));
+        std::abs(
+            static_cast<long long>(tape.size() - a.size() - static_cast<std::size_t>(a.data() - tape.data())) -
+            static_cast<long long>(r.frames.size() - b.size() - static_cast<std::size_t>(b.data() - r.frames.data()))));
     if (a.empty() || b.empty()) {
         out.silently_wrong = a.size() + b.size();
         return out;
@@ -82,9 +83,11 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
             Frame left_out = a[static_cast<std::size_t>(t)];
             doubt = d.after[written_before] || run_in_doubt(r, d, written_before, written_before, left_out);
         }
-        if (!doubt) out.silent_at.push_back(static_cast<std::size_t>(a.data() - tape.data()) +
-                                            static_cast<std::size_t>(t != ReadAlignment::none ? t : std::max<std::int32_t>(
-                                                al.frame(c > 0 ? c - 1 : 0, 0), 0)));
+        if (!doubt)
+            out.silent_at.push_back(
+                static_cast<std::size_t>(a.data() - tape.data()) +
+                static_cast<std::size_t>(
+                    t != ReadAlignment::none ? t : std::max<std::int32_t>(al.frame(c > 0 ? c - 1 : 0, 0), 0)));
         ++(doubt ? out.flagged_wrong : out.silently_wrong);
     }
     return out;

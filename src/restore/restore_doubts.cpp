@@ -16,7 +16,7 @@ namespace {
 constexpr std::uint64_t largest_image = 1ULL << 30;
 
 std::string read_small_file(const std::string& path, std::uint64_t most) {
-    struct stat st{};
+    struct stat st {};
     if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode) || static_cast<std::uint64_t>(st.st_size) > most)
         return {};
     std::ifstream in(path, std::ios::binary);

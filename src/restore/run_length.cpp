@@ -125,8 +125,8 @@ void weigh_lengths(const VoteContext& v, const RunPrior& prior, const std::vecto
         double score = prior.log_chance(d.value, static_cast<std::size_t>(n));
         for (std::size_t r = 0; r < copies.size(); ++r)
             if (copies[r] >= 0)
-                score += std::log(copies_likelihood(static_cast<std::size_t>(copies[r]), static_cast<std::size_t>(n),
-                                                    v.rates[r]));
+                score += std::log(
+                    copies_likelihood(static_cast<std::size_t>(copies[r]), static_cast<std::size_t>(n), v.rates[r]));
         if (score > best) {
             second = best, d.alternative = d.length;
             best = score, d.length = static_cast<std::size_t>(n);
@@ -230,7 +230,8 @@ std::vector<RunDecision> decide_runs(const VoteContext& v) {
             c = end;
             continue;
         }
-        d.readers = static_cast<std::size_t>(std::count_if(copies.begin(), copies.end(), [](long x) { return x >= 0; }));
+        d.readers =
+            static_cast<std::size_t>(std::count_if(copies.begin(), copies.end(), [](long x) { return x >= 0; }));
         if (d.readers >= 2) {
             weigh_lengths(v, prior, copies, d);
             d.how = counts_text(copies);

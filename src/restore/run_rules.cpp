@@ -46,13 +46,13 @@ std::string joined(const Breaks& b) {
 
 }  // namespace
 
-void decide_runs_by_rules(const VoteContext& v, VoteResult& vote, const RestoreOptions& o) {
+std::unique_ptr<RepairWorld> decide_runs_by_rules(const VoteContext& v, VoteResult& vote, const RestoreOptions& o) {
     auto open = [&](const RunDecision& d) { return !d.blank_end && d.length != d.alternative && d.length > 0; };
-    if (std::none_of(vote.runs.begin(), vote.runs.end(), open)) return;
+    if (std::none_of(vote.runs.begin(), vote.runs.end(), open)) return nullptr;
     Draft img = draft(vote);
-    if (code_does_not_fit(img.frames, *v.code)) return;
+    if (code_does_not_fit(img.frames, *v.code)) return nullptr;
     auto world = learn_world(img.frames, img.doubtful, *v.code, o);
-    if (!world->setup.nc) return;
+    if (!world->setup.nc) return world;
     std::ptrdiff_t shift = 0;  // frames the runs decided so far added (+) or took out (-)
     for (std::size_t r = 0; r < vote.runs.size(); ++r) {
         RunDecision& d = vote.runs[r];
@@ -82,6 +82,7 @@ void decide_runs_by_rules(const VoteContext& v, VoteResult& vote, const RestoreO
         d.rule = joined(kept.empty() ? other : kept);
         revote_run(v, o, vote, r);
     }
+    return world;
 }
 
 }  // namespace tape::detail

@@ -85,31 +85,39 @@ void advance(MotionState& state, const Block& block) {
     }
 }
 
-TapeRules::TapeRules(const LoadedTape& t, const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec)
-    : spec_(spec) {
-    MotionState state;
-    for (const auto& p : t.programs) {
-        state = MotionState{};
-        for (const auto& b : p.blocks) {
-            bool damaged = b.damaged || damaged_lines.count(b.where.line) > 0;
-            if (damaged) before_.emplace(b.where.line, state);
-            advance(state, b);
-            if (damaged) state.at = {};
-            learn_block(b, damaged);
-            points_ |= std::any_of(b.words.begin(), b.words.end(), [](const Word& w) { return w.has_point(); });
-        }
-    }
+TapeRules::TapeRules(const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec)
+    : damaged_lines_(damaged_lines), lint_(std::make_unique<LintVisitor>(LintOptions{spec})), spec_(spec) {}
+
+TapeRules::~TapeRules() = default;
+
+void TapeRules::program_start(const Program& header) {
+    lint_->program_start(header);
+    state_ = MotionState{};
+}
+
+void TapeRules::block(const Block& b) {
+    lint_->block(b);
+    bool damaged = b.damaged || damaged_lines_.count(b.where.line) > 0;
+    if (damaged) before_.emplace(b.where.line, state_);
+    advance(state_, b);
+    if (damaged) state_.at = {};
+    learn_block(b, damaged);
+    points_ |= std::any_of(b.words.begin(), b.words.end(), [](const Word& w) { return w.has_point(); });
+}
+
+void TapeRules::finish(std::string_view text) {
     std::vector<std::string_view> lines;
-    for (std::size_t from = 0; from <= t.text.size();) {
-        std::size_t to = std::min(t.text.find('\n', from), t.text.size());
-        lines.push_back(std::string_view(t.text).substr(from, to - from));
+    for (std::size_t from = 0; from <= text.size();) {
+        std::size_t to = std::min(text.find('\n', from), text.size());
+        lines.push_back(text.substr(from, to - from));
         from = to + 1;
     }
-    for (const auto& f : lint(t)) {
+    for (const auto& f : lint_->findings()) {
         std::uint64_t line = f.where.line.value_or(0);
-        if (line == 0 || line > lines.size() || damaged_lines.count(line) || f.severity != Severity::error) continue;
+        if (line == 0 || line > lines.size() || damaged_lines_.count(line) || f.severity != Severity::error) continue;
         excused_.insert(finding_key(f, lines[line - 1]));
     }
+    lint_.reset();
     learn_step();
 }
 
@@ -121,7 +129,8 @@ void TapeRules::learn_block(const Block& b, bool damaged) {
             ++shapes_[w.address][*s];
             ++words_[w.address];
         }
-        if (w.address == 'G' || w.address == 'M') codes_.insert(std::string(1, w.address) + code_value(w.text.substr(1)));
+        if (w.address == 'G' || w.address == 'M')
+            codes_.insert(std::string(1, w.address) + code_value(w.text.substr(1)));
         if (w.address == 'F' || w.address == 'S' || w.address == 'T')
             if (auto v = number_of(w)) {
                 auto [it, fresh] = ranges_.try_emplace(w.address, *v, *v);
@@ -223,8 +232,8 @@ bool looks_like_nc_program(std::string_view text) {
         ++letters;
         std::size_t j = i + 1;
         while (j < text.size() && (text[j] == ' ' || text[j] == '+' || text[j] == '-')) ++j;
-        if (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.' || text[j] == '#' ||
-                                text[j] == '['))
+        if (j < text.size() &&
+            (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.' || text[j] == '#' || text[j] == '['))
             ++addresses;
     }
     constexpr std::size_t few = 20;

@@ -8,16 +8,18 @@
 #include <array>
 #include <cstdint>
 #include <map>
-#include <span>
-#include <unordered_map>
+#include <memory>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "tape/format_spec.hpp"
 #include "tape/frame.hpp"
+#include "tape/lint.hpp"
 #include "tape/program.hpp"
 
 namespace tape::detail {
@@ -51,11 +53,23 @@ void advance(MotionState& state, const Block& block);
 /// no arc or where the tool stands is not known.
 std::optional<bool> arc_agrees(const MotionState& before, const Block& block);
 
-class TapeRules {
+/// Learned as the loader streams the program's text through it (load_each), so that no block is held:
+/// then finish() with that text.
+class TapeRules : public ProgramVisitor {
 public:
-    /// Learns from the loaded program, leaving out the blocks on damaged lines (1-based lines of
-    /// t.text); keeps the motion state before each damaged line.
-    TapeRules(const LoadedTape& t, const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec);
+    /// damaged_lines: the lines (from 1) whose blocks are left out of what is learned; the motion state
+    /// before each is kept.
+    TapeRules(const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec);
+    ~TapeRules() override;
+
+    void dialect(const DialectChoice& choice) override { lint_->dialect(choice); }
+    void program_start(const Program& header) override;
+    void block(const Block& b) override;
+    void after_end(std::string_view text, const Location& where) override { lint_->after_end(text, where); }
+    void finding(const Finding& f) override { lint_->finding(f); }
+    void end(const Location& where) override { lint_->end(where); }
+    /// The findings the undamaged program has anyway, once the whole text went through.
+    void finish(std::string_view text);
 
     /// The address is written often on this tape (at least common_words times) and never so.
     bool shape_unseen(char address, const WordShape& shape) const;
@@ -79,6 +93,10 @@ public:
 private:
     void learn_block(const Block& b, bool damaged);
     void learn_step();
+
+    const std::set<std::uint64_t>& damaged_lines_;
+    std::unique_ptr<LintVisitor> lint_;
+    MotionState state_;
 
     std::map<char, std::map<WordShape, std::size_t>> shapes_;
     std::map<char, std::size_t> words_;

@@ -1,10 +1,10 @@
 // The vote per aligned column (vote.hpp): what the heard reads have there, weighed; runs of equal frames
 // whose length the reads disagree on are decided as a whole (run_length.cpp).
+#include "vote.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-
-#include "vote.hpp"
 
 namespace tape::detail {
 namespace {
@@ -24,7 +24,7 @@ struct Heard {
     std::vector<Tally> tally;  // good first, heaviest first
     std::size_t present = 0, covering = 0, lost = 0, unheard = 0;
     std::size_t present_good = 0, good_values = 0;
-    bool repeat = false;  // a read has this frame next to an equal one
+    bool repeat = false;               // a read has this frame next to an equal one
     std::optional<Frame> first_bad{};  // the first reading that fails parity (or a blank among punched frames)
 };
 
@@ -187,15 +187,14 @@ void Voter::run_column(std::size_t c, const RunDecision& d, bool writes, const H
         std::snprintf(odds, sizeof odds, "over a million times");
     else
         std::snprintf(odds, sizeof odds, "%.0f times", d.odds);
-    std::string why = "a run of " + std::to_string(d.length) + " (" + d.how + "): " +
-                      (d.rule.empty() ? std::to_string(d.length) + " punched is " + odds + " likelier than " +
-                                            std::to_string(d.alternative) +
-                                            ", with the lost and doubled frames these reads show"
-                                      : "the program's rules decide: " + std::to_string(d.alternative) +
-                                            " copies break " + d.rule);
+    std::string why =
+        "a run of " + std::to_string(d.length) + " (" + d.how + "): " +
+        (d.rule.empty() ? std::to_string(d.length) + " punched is " + odds + " likelier than " +
+                              std::to_string(d.alternative) + ", with the lost and doubled frames these reads show"
+                        : "the program's rules decide: " + std::to_string(d.alternative) + " copies break " + d.rule);
     if (decided)
-        set(c, writes ? FrameStatus::voted : FrameStatus::extra, d.value, why + (writes ? ": written" : ": not written"),
-            writes, true);
+        set(c, writes ? FrameStatus::voted : FrameStatus::extra, d.value,
+            why + (writes ? ": written" : ": not written"), writes, true);
     else
         set(c, FrameStatus::contested, d.value, why + "; too close to decide: " + (writes ? "written" : "not written"),
             writes, true);
@@ -208,14 +207,14 @@ bool Voter::presence(std::size_t c, const Heard& h) {
     const std::size_t reads = v_.a.reads();
     // Blank tape past the end of most reads: frames one read has there (a frame read twice there has
     // nothing to align by) are left out.
-    bool lone_blank = reads > 1 && h.tally.size() == 1 && front.value == blank_frame && h.covering < reads &&
-                      h.present * 2 <= reads;
+    bool lone_blank =
+        reads > 1 && h.tally.size() == 1 && front.value == blank_frame && h.covering < reads && h.present * 2 <= reads;
     std::size_t lost = lone_blank ? reads - h.present : h.lost;
     std::size_t present = front.good ? h.present_good : h.present;
     auto alone_beside = [&] {  // the read alone here is alone in a neighbouring column too
         auto al = v_.alone[c];
-        return al != ReadAlignment::none && ((c > 0 && v_.alone[c - 1] == al) ||
-                                            (c + 1 < v_.alone.size() && v_.alone[c + 1] == al));
+        return al != ReadAlignment::none &&
+               ((c > 0 && v_.alone[c - 1] == al) || (c + 1 < v_.alone.size() && v_.alone[c + 1] == al));
     };
     if (lone_blank && present >= lost) return false;
     // One read has a frame unlike its neighbours (no double), and read well around it; the others lost
@@ -256,7 +255,7 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         bool dropped = h.repeat && !alone_beside() && front.value != blank_frame && lone_gaps;
         set(c, FrameStatus::contested, front.value,
             std::string("half the reads that cover this place have a frame here, half do not; ") +
-                (dropped  ? "like its neighbour, it may be read twice: not written"
+                (dropped    ? "like its neighbour, it may be read twice: not written"
                  : h.repeat ? "the others lack a stretch here: written"
                             : "unlike its neighbours, it cannot be read twice: written"),
             !dropped);
@@ -292,8 +291,7 @@ void Voter::values(std::size_t c, const Heard& h) {
                                        : of_reads(static_cast<std::size_t>(t[0].count), h.covering, "agree");
         if (v_.tangled[c] && h.lost > 0)
             return set(c, FrameStatus::contested, t[0].value,
-                       reason + ", and more than one read slipped in this stretch: written, but nothing decides",
-                       true);
+                       reason + ", and more than one read slipped in this stretch: written, but nothing decides", true);
         return set(c, FrameStatus::voted, t[0].value, reason, true);
     }
     // Good readings tied: written as read, the reading failing parity where there is one (so that the
@@ -305,12 +303,12 @@ void Voter::values(std::size_t c, const Heard& h) {
     for (const auto& x : t)
         if (x.good && x.weight == t[0].weight && (!lean || x.value != *lean)) tied.push_back(x.value);
     std::optional<Frame> reference = frame_at(v_.a, v_.reads, c, v_.a.reference());
-    Frame written = h.first_bad ? *h.first_bad
-                    : lean      ? *lean
+    Frame written = h.first_bad                        ? *h.first_bad
+                    : lean                             ? *lean
                     : reference && v_.good(*reference) ? *reference
                                                        : t[0].value;
     set(c, all_differ ? FrameStatus::unstable : FrameStatus::contested, written,
-        all_differ ? "every read saw something else"
+        all_differ    ? "every read saw something else"
         : h.first_bad ? "good readings disagree and nothing decides: written as read, failing parity"
         : lean        ? "good readings disagree; a reading failing parity is one hole from this one, which is written"
                       : "good readings disagree and nothing decides; the reference read's is written",
@@ -365,8 +363,8 @@ VoteResult vote(const VoteContext& v, const RestoreOptions& o) {
     std::vector<bool> writes;
     for (std::size_t c = 0; c < v.a.columns(); ++c) {
         while (next_run < out.runs.size() && out.runs[next_run].end <= c) ++next_run;
-        const RunDecision* run = next_run < out.runs.size() && out.runs[next_run].first <= c ? &out.runs[next_run]
-                                                                                            : nullptr;
+        const RunDecision* run =
+            next_run < out.runs.size() && out.runs[next_run].first <= c ? &out.runs[next_run] : nullptr;
         if (run && c == run->first) writes = written_columns(v, *run);
         voter.column(c, run, run && writes[c - run->first]);
     }
