@@ -58,13 +58,14 @@ void run(const DiffArgs& a) {
         bool same = x != tape::ReadAlignment::none && y != tape::ReadAlignment::none &&
                     reads[0].frames[static_cast<std::size_t>(x)] == reads[1].frames[static_cast<std::size_t>(y)];
         if (same) continue;
-        // Where one read simply has not begun or has ended, it is no difference of the tape.
-        if (x == tape::ReadAlignment::none && !al.covers(0, c)) continue;
-        if (y == tape::ReadAlignment::none && !al.covers(1, c)) continue;
+        // Blank leader or trailer one read has longer: no difference of the tape, unless --strict.
         bool blank_end = (c < from || c >= to) && (x == tape::ReadAlignment::none || y == tape::ReadAlignment::none);
         std::size_t has = x == tape::ReadAlignment::none ? 1 : 0;
         if (blank_end) ++n.ends[has];
         if (blank_end && !a.strict) continue;
+        // Where one read simply has not begun or has ended (within the data), it is no difference of the tape.
+        if (!blank_end && x == tape::ReadAlignment::none && !al.covers(0, c)) continue;
+        if (!blank_end && y == tape::ReadAlignment::none && !al.covers(1, c)) continue;
         if (x != tape::ReadAlignment::none && y != tape::ReadAlignment::none)
             ++n.differ;
         else

@@ -143,7 +143,8 @@ std::string tape_html(const RestoreReportInput& in, std::size_t& drawn_to) {
         if (label) o.label_first = label->first + 1, o.label_frames = label->frames;
         std::string svg = tape::render_svg(r.frames, o);
         svg.erase(0, svg.find("<svg"));  // the XML declaration has no place inside HTML
-        s += "<div class=\"tape\" id=\"tape" + std::to_string(k + 1) + "\">\n" + svg + "</div>\n";
+        s += "<div class=\"tape\" id=\"tape" + std::to_string(k + 1) + "\" data-from=\"" + std::to_string(o.from) +
+             "\" data-to=\"" + std::to_string(o.to) + "\">\n" + svg + "</div>\n";
         drawn_to = parts[k].second;
     }
     return s;
@@ -160,7 +161,7 @@ std::string restore_report_html(const RestoreReportInput& in) {
     s += "<title>" + tape::xml_escaped(title) + "</title>\n<style>\n" + std::string(style) +
          "</style>\n</head>\n<body>\n<h1>" + tape::xml_escaped(title) + "</h1>\n" + summary_html(in);
     std::size_t drawn_to = 0;
-    std::string drawing = tape_html(in, drawn_to);
+    s += tape_html(in, drawn_to);
     s += "<h2>Problem frames</h2>\n<table id=\"problems\">\n<tr><th>frame</th><th>line</th><th>from the start</th>"
          "<th>status</th>";
     for (std::size_t i = 0; i < in.names.size(); ++i) s += "<th>read " + std::to_string(i + 1) + "</th>";
@@ -176,7 +177,7 @@ std::string restore_report_html(const RestoreReportInput& in) {
         s += "<p>" + std::to_string(r.problems.size() - most_rows) +
              " more problem frames: see the text or JSON report.</p>\n";
     if (r.problems.empty()) s += "<p>No problem frames.</p>\n";
-    s += drawing + "</body>\n</html>\n";
+    s += "</body>\n</html>\n";
     return s;
 }
 

@@ -194,7 +194,7 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
             !rules.code_used(w->address, code_value(value)))
             out.push_back("unknown-code");
         auto shape = shape_of(*w);
-        if (shape && rules.shape_unseen(w->address, *shape)) out.push_back("word-format");
+        if (shape && rules.format_broken(w->address, *shape)) out.push_back("word-format");
         if (s_.spec)
             for (const auto& [rule, message] : check_word(*w, *s_.spec, rules.points()))
                 out.push_back(std::string(rule));

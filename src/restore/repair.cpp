@@ -217,7 +217,7 @@ void BlockRepair::decide(std::size_t k) {
         std::erase(p.candidates, g);
         p.candidates.insert(p.candidates.begin(), g);
         set_status(out_, p, FrameStatus::guessed, g,
-                   "guessed: the likeliest of " + std::to_string(fit.size()) +
+                   "the likeliest of " + std::to_string(fit.size()) +
                        " single-hole changes that fit its block, by how the tape's text goes");
     } else {
         p.reason = std::to_string(fit.size()) + " single-hole changes fit its block: not guessed";
@@ -278,7 +278,7 @@ void guess_ties(RestoreResult& out, const RepairWorld& w, std::span<RestoreProbl
         std::erase(p->candidates, best);
         p->candidates.insert(p->candidates.begin(), best);
         set_status(out, *p, FrameStatus::guessed, best,
-                   "guessed: the likeliest of " + std::to_string(p->candidates.size()) +
+                   "the likeliest of " + std::to_string(p->candidates.size()) +
                        " good readings that disagree, by how the tape goes" +
                        (leans ? " (a reading failing parity is one hole from it)" : ""));
     }

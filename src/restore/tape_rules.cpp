@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <set>
 
 #include "tape/code_tables.hpp"
 #include "tape/lint.hpp"
@@ -146,15 +147,46 @@ void CharModel::learn(std::span<const Frame> frames) {
         if (c == blank_frame) continue;
         ++trigrams_[key3(a, b, c)];
         ++bigrams_[key3(0, a, b)];
+        ++bigrams_[key3(1, b, c)];  // b then c, for the chance of c after b alone
+        ++unigrams_[c], ++total_;
         a = b, b = c;
     }
 }
 
-bool TapeRules::shape_unseen(char address, const WordShape& shape) const {
-    auto w = words_.find(address);
-    if (w == words_.end() || w->second < common_words) return false;
-    const auto& seen = shapes_.at(address);
-    return seen.find(shape) == seen.end();
+double CharModel::chance(Frame a, Frame b, Frame c) const {
+    auto count = [](const std::unordered_map<std::uint32_t, std::uint32_t>& m, std::uint32_t k) {
+        auto it = m.find(k);
+        return it == m.end() ? 0.0 : static_cast<double>(it->second);
+    };
+    const double ab = count(bigrams_, key3(0, a, b)), b_any = static_cast<double>(unigrams_[b]);
+    const double p3 = ab > 0 ? count(trigrams_, key3(a, b, c)) / ab : 0;
+    const double p2 = b_any > 0 ? count(bigrams_, key3(1, b, c)) / b_any : 0;
+    const double p1 = (static_cast<double>(unigrams_[c]) + 0.5) / (static_cast<double>(total_) + 128);
+    return 0.6 * p3 + 0.3 * p2 + 0.1 * p1;
+}
+
+double CharModel::score(Frame before2, Frame before1, Frame f, Frame after) const {
+    return std::log(chance(before2, before1, f)) + std::log(chance(before1, f, after));
+}
+
+bool TapeRules::format_broken(char address, const WordShape& shape) const {
+    auto n = words_.find(address);
+    if (n == words_.end() || n->second < enough_words) return false;
+    std::size_t pointed = 0, signed_ = 0, plus = 0;
+    std::set<int> decimals, widths;
+    for (const auto& [s, count] : shapes_.at(address)) {
+        pointed += s.after >= 0 ? count : 0;
+        signed_ += s.sign ? count : 0;
+        plus += s.sign == '+' ? count : 0;
+        if (s.after >= 0) decimals.insert(s.after);
+        widths.insert(s.before + std::max(s.after, 0));
+    }
+    bool point = shape.after >= 0;
+    if ((pointed == 0 && point) || (pointed == n->second && !point)) return true;  // point style
+    if (point && pointed >= enough_words && decimals.size() == 1 && *decimals.begin() != shape.after) return true;
+    if (widths.size() == 1 && *widths.begin() != shape.before + std::max(shape.after, 0)) return true;  // fixed width
+    if ((plus == 0 && shape.sign == '+') || (signed_ == n->second && !shape.sign)) return true;       // sign style
+    return false;
 }
 
 bool TapeRules::code_used(char letter, std::string_view value) const {
@@ -194,18 +226,6 @@ bool TapeRules::value_out_of_range(char address, double value) const {
 const MotionState* TapeRules::state_before(std::uint64_t line) const {
     auto it = before_.find(line);
     return it == before_.end() ? nullptr : &it->second;
-}
-
-double CharModel::score(Frame before2, Frame before1, Frame f, Frame after) const {
-    auto count = [](const std::unordered_map<std::uint32_t, std::uint32_t>& m, std::uint32_t k) {
-        auto it = m.find(k);
-        return it == m.end() ? 0.0 : static_cast<double>(it->second);
-    };
-    constexpr double pseudo = 0.1, kinds = 128;
-    return std::log((count(trigrams_, key3(before2, before1, f)) + pseudo) /
-                    (count(bigrams_, key3(0, before2, before1)) + pseudo * kinds)) +
-           std::log((count(trigrams_, key3(before1, f, after)) + pseudo) /
-                    (count(bigrams_, key3(0, before1, f)) + pseudo * kinds));
 }
 
 std::string finding_key(const Finding& f, std::string_view line_text) {

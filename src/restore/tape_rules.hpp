@@ -71,8 +71,10 @@ public:
     /// The findings the undamaged program has anyway, once the whole text went through.
     void finish(std::string_view text);
 
-    /// The address is written often on this tape (at least common_words times) and never so.
-    bool shape_unseen(char address, const WordShape& shape) const;
+    /// A word of this shape breaks how the tape writes the address (at least enough_words times, every
+    /// time so): its point style (always or never a point), its number of decimals, a fixed width
+    /// (zeros punched), its sign style (never '+', or always a sign).
+    bool format_broken(char address, const WordShape& shape) const;
     /// G or M code value (code_value form) used in an undamaged block.
     bool code_used(char letter, std::string_view value) const;
     /// The number a damaged block's N word must have where its neighbours keep a steady step: the
@@ -88,7 +90,7 @@ public:
     const FormatSpec* spec() const { return spec_; }
     /// The program writes explicit points somewhere (for a format spec's checks).
     bool points() const { return points_; }
-    static constexpr std::size_t common_words = 20;
+    static constexpr std::size_t enough_words = 5;
 
 private:
     void learn_block(const Block& b, bool damaged);
@@ -111,8 +113,9 @@ private:
     long long step_ = 0;  // the block numbers' steady step, 0 for none
 };
 
-/// How a tape's frames follow one another, for guesses: counts of three frames in a row (blank tape
-/// skipped, as a reader skips it; DEL counted, as DEC tapes punch it after every tab).
+/// How a tape's frames follow one another, for guesses: counts of one, two and three frames in a row
+/// (blank tape skipped, as a reader skips it; DEL counted, as DEC tapes punch it after every tab), the
+/// three mixed so that a frame seen often but never in this company still counts.
 class CharModel {
 public:
     void learn(std::span<const Frame> frames);
@@ -121,8 +124,12 @@ public:
     double score(Frame before2, Frame before1, Frame f, Frame after) const;
 
 private:
+    double chance(Frame a, Frame b, Frame c) const;  // of c after a b
+
     std::unordered_map<std::uint32_t, std::uint32_t> trigrams_;  // (a, b, c) -> count
     std::unordered_map<std::uint32_t, std::uint32_t> bigrams_;   // (a, b) -> count
+    std::array<std::uint64_t, 256> unigrams_{};
+    std::uint64_t total_ = 0;
 };
 
 /// The key of a finding for TapeRules::excused: its rule, and the code (unknown-code) or the character

@@ -172,7 +172,17 @@ void Voter::only_misreadings(std::size_t c) {
 // decided for the whole run.
 void Voter::run_column(std::size_t c, const RunDecision& d, bool writes, const Heard& h) {
     if (d.blank_end) {
-        if (writes)
+        // Leader and trailer are blank tape: a stain some read has there is not written. (A DEC leader
+        // of one frame, track 8 alone, is voted as any frame.)
+        double blank = 0, most = 0;
+        for (const auto& t : h.tally) {
+            if (t.value == blank_frame) blank = t.weight;
+            most = std::max(most, t.weight);
+        }
+        if (writes && blank > 0 && blank >= most && h.tally.size() > 1)
+            set(c, FrameStatus::voted, blank_frame,
+                "blank leader or trailer: what a read has there besides blank tape is a stain", true);
+        else if (writes)
             values(c, h);
         else
             set(c, FrameStatus::extra, d.value,
