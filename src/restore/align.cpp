@@ -63,7 +63,7 @@ constexpr std::size_t most_repeats = 8;
 
 // The anchors of two reads (pairs of runs that stand for the same place of the tape), sorted, and
 // how many runs could have anchored: those of each read that occur at most most_repeats times.
-Pairs matching_runs(const Runs& rr, const Runs& dr, std::size_t& could) {
+Pairs matching_runs(const Runs& rr, const Runs& dr, std::size_t& could, Pairs& repeated) {
     Pairs anchors;
     std::size_t ref_could = 0, read_could = 0;
     auto group_end = [](const Runs& v, std::size_t i) {
@@ -79,13 +79,35 @@ Pairs matching_runs(const Runs& rr, const Runs& dr, std::size_t& could) {
         if (take_x && xe - x <= most_repeats) ref_could += xe - x;
         if (take_y && ye - y <= most_repeats) read_could += ye - y;
         if (take_x && take_y && xe - x == ye - y && xe - x <= most_repeats)
-            for (std::size_t t = 0; t < xe - x; ++t) anchors.emplace_back(rr[x + t].second, dr[y + t].second);
+            for (std::size_t t = 0; t < xe - x; ++t)
+                (xe - x == 1 ? anchors : repeated).emplace_back(rr[x + t].second, dr[y + t].second);
         if (take_x) x = xe;
         if (take_y) y = ye;
     }
     could = std::min(ref_could, read_could);
     std::sort(anchors.begin(), anchors.end());
+    std::sort(repeated.begin(), repeated.end());
     return anchors;
+}
+
+// Runs that occur more than once anchor only near the diagonal the unique runs around them keep: where
+// one read damaged one copy and the other another, pairing copies in order would pair different
+// places. Where no run is unique (a program punched twice, and nothing else), they anchor alone.
+Pairs with_repeats(const Pairs& unique, const Pairs& repeated) {
+    if (unique.empty()) return repeated;
+    constexpr std::int64_t near = 32;
+    Pairs out = unique;
+    for (auto [i, j] : repeated) {
+        auto next = std::lower_bound(unique.begin(), unique.end(), std::make_pair(i, INT32_MIN));
+        std::int64_t d = static_cast<std::int64_t>(j) - i;
+        bool ok = false;
+        if (next != unique.end()) ok |= std::abs(d - (static_cast<std::int64_t>(next->second) - next->first)) <= near;
+        if (next != unique.begin())
+            ok |= std::abs(d - (static_cast<std::int64_t>(std::prev(next)->second) - std::prev(next)->first)) <= near;
+        if (ok) out.emplace_back(i, j);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 // Anchors on one diagonal whose runs touch or overlap, as one: where both reads run alike.
@@ -144,6 +166,66 @@ Pairs chain(const Pairs& anchors, std::int32_t k) {
     return out;
 }
 
+// A stretch between anchors too long for the whole table (no run anchors it: a long repetitive part,
+// or reads that disagree long): the same alignment within a band around its diagonal, as wide as the
+// reads' lengths there differ and a little more, so that time and memory grow with its length only.
+void align_banded(std::span<const Frame> ref, std::span<const Frame> read, std::size_t ri, std::size_t a,
+                  std::size_t rj, std::size_t b, Pairs& out) {
+    enum : std::uint8_t { M = 0, X = 1, Y = 2 };
+    constexpr int never = INT_MIN / 4;
+    const std::size_t w = (a > b ? a - b : b - a) + 96, width = 2 * w + 1;
+    auto lo = [&](std::size_t i) {
+        std::size_t c = i * b / a;
+        return c > w ? c - w : 0;
+    };
+    auto hi = [&](std::size_t i) { return std::min(b, i * b / a + w); };
+    auto run = [](std::size_t len) { return gap_open + static_cast<int>(len - 1) * gap_extend; };
+    auto best3 = [](int m, int x, int y, std::uint8_t& from) {
+        from = M;
+        int s = m;
+        if (x > s) s = x, from = X;
+        if (y > s) s = y, from = Y;
+        return s;
+    };
+    std::vector<std::uint8_t> trace((a + 1) * width);
+    std::vector<int> pm(b + 1, never), px(b + 1, never), py(b + 1, never), cm(b + 1, never), cx(b + 1, never),
+        cy(b + 1, never);
+    pm[0] = 0;
+    for (std::size_t j = 1; j <= hi(0); ++j) py[j] = run(j);
+    for (std::size_t i = 1; i <= a; ++i) {
+        const std::size_t l = lo(i), h = hi(i);
+        if (l == 0) cm[0] = never, cy[0] = never, cx[0] = run(i);
+        const Frame f = ref[ri + i - 1];
+        for (std::size_t j = std::max<std::size_t>(l, 1); j <= h; ++j) {
+            std::uint8_t fm, fx, fy;
+            cm[j] = best3(pm[j - 1], px[j - 1], py[j - 1], fm) + score(f, read[rj + j - 1]);
+            cx[j] = best3(pm[j] + gap_open, px[j] + gap_extend, py[j] + gap_switch, fx);
+            cy[j] = best3(cm[j - 1] + gap_open, cx[j - 1] + gap_switch, cy[j - 1] + gap_extend, fy);
+            trace[i * width + (j - l)] = static_cast<std::uint8_t>(fm | fx << 2 | fy << 4);
+        }
+        // Beside this row's band, as far as the next row reads: nothing.
+        if (l > 0) cm[l - 1] = cx[l - 1] = cy[l - 1] = never;
+        for (std::size_t j = h + 1; j <= hi(i + 1); ++j) cm[j] = cx[j] = cy[j] = never;
+        std::swap(pm, cm), std::swap(px, cx), std::swap(py, cy);
+    }
+    std::uint8_t state;
+    best3(pm[b], px[b], py[b], state);
+    std::size_t i = a, j = b;
+    const std::size_t first = out.size();
+    while (i > 0 && j > 0) {
+        std::uint8_t t = trace[i * width + (j - lo(i))];
+        if (state == M) {
+            out.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
+            state = t & 3, --i, --j;
+        } else if (state == X) {
+            state = (t >> 2) & 3, --i;
+        } else {
+            state = (t >> 4) & 3, --j;
+        }
+    }
+    std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
+
 // Aligns ref[ri, ri + a) with read[rj, rj + b) by dynamic programming with gaps that cost most where
 // they open (Gotoh), appending the pairs that stand in one column. free_start / free_end: either side
 // may leave its beginning / end unpaired at no cost (leaders of different length, a read that starts
@@ -156,7 +238,13 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     if (free_start && b > a + 64) rj += b - (a + 64), b = a + 64;
     if (free_end && a > b + 64) a = b + 64;
     if (free_end && b > a + 64) b = a + 64;
-    if ((a + 1) * (b + 1) > max_cells) return;
+    if ((a + 1) * (b + 1) > max_cells) {
+        // Banded where the band stays within bounds; beyond, the frames stand in columns of their own.
+        std::size_t band = 2 * ((a > b ? a - b : b - a) + 96) + 1;
+        if (!free_start && !free_end && max_cells > 0 && (a + 1) * band <= 4 * max_cells)
+            align_banded(ref, read, ri, a, rj, b, out);
+        return;
+    }
     // States: a pair (M), a reference frame unpaired (X), a read frame unpaired (Y). A cell's trace
     // holds where each state came from: bits 0-1 for M, 2-3 for X, 4-5 for Y.
     enum : std::uint8_t { M = 0, X = 1, Y = 2 };
@@ -229,7 +317,10 @@ Pairs pair_up(std::span<const Frame> ref, const Runs& ref_runs, std::span<const 
               double& anchored_share) {
     const std::size_t k = anchor_length(o);
     std::size_t could = 0;
-    Pairs runs, chained = chain(matching_runs(ref_runs, hashed_runs(read, k), could), static_cast<std::int32_t>(k));
+    Pairs repeated;
+    Pairs unique = matching_runs(ref_runs, hashed_runs(read, k), could, repeated);
+    Pairs runs, chained = chain(with_repeats(chain(unique, static_cast<std::int32_t>(k)), repeated),
+                                static_cast<std::int32_t>(k));
     // How much of what could anchor did: runs that occur as often in each read, in order.
     anchored_share = could ? std::min(1.0, static_cast<double>(chained.size()) / static_cast<double>(could)) : 0;
     // Each anchor's frames, checked (a hash may collide), become pairs on its diagonal.

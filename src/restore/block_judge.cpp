@@ -105,7 +105,9 @@ BlockJudge::BlockJudge(const RepairSetup& setup, std::span<const Frame> image, s
     auto [b, e] = around(s_.code, image, from, to, 2);
     before_ = block_text(s_.code, image.subspan(b, from - b));
     after_ = block_text(s_.code, image.subspan(to, e - to));
-    if (dialect_rules(s_.dialect).needs_percent && before_.find('%') == std::string::npos) before_ = "%\n" + before_;
+    // The program's start, where it stands before the context: a block after it is a block of a program.
+    if (dialect_rules(s_.dialect).needs_percent && before_.find('%') == std::string::npos && s_.first_percent < from)
+        before_ = "%\n" + before_;
     before_lines_ = static_cast<std::uint64_t>(std::count(before_.begin(), before_.end(), '\n'));
     // The baseline: the block with the damaged words left out.
     std::vector<std::size_t> local;
@@ -117,6 +119,7 @@ BlockJudge::BlockJudge(const RepairSetup& setup, std::span<const Frame> image, s
             auto [x, y] = word_span(chars, i);
             std::fill(gone.begin() + static_cast<std::ptrdiff_t>(x), gone.begin() + static_cast<std::ptrdiff_t>(y),
                       true);
+            spans_.emplace_back(x + 1, y);  // columns, from 1, of the line's first characters
         }
     std::u32string kept;
     for (std::size_t i = 0; i < chars.size(); ++i)
@@ -167,10 +170,14 @@ Breaks BlockJudge::judge(const BlockTry& t) const {
 }
 
 // The word of block b that the character at column stands in: the last word starting at or before it.
+// (The block number is a word here too.)
 const Word* word_at(const Block& b, std::uint64_t line, std::size_t column) {
     const Word* out = nullptr;
-    for (const auto& w : b.words)
+    auto consider = [&](const Word& w) {
         if (w.where.line == line && w.where.column <= column && (!out || w.where.column > out->where.column)) out = &w;
+    };
+    if (b.number) consider(*b.number);
+    for (const auto& w : b.words) consider(w);
     return out;
 }
 
@@ -180,12 +187,20 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
     const TapeRules& rules = *s_.rules;
     const Block* first = nullptr;
     std::vector<const Word*> words;
+    auto add = [&](const Word* w) {
+        if (w && std::find(words.begin(), words.end(), w) == words.end()) words.push_back(w);
+    };
     for (const auto& p : t.programs)
         for (const auto& b : p.blocks) {
             if (b.where.line == before_lines_ + 1) first = &b;
-            for (const auto& [line, column] : places) {
-                const Word* w = column ? word_at(b, before_lines_ + 1 + line, column) : nullptr;
-                if (w && std::find(words.begin(), words.end(), w) == words.end()) words.push_back(w);
+            for (const auto& [line, column] : places)
+                if (column) add(word_at(b, before_lines_ + 1 + line, column));
+            // And every word that now starts where a damaged word stood (a candidate may split it).
+            if (b.where.line != before_lines_ + 1) continue;
+            for (const auto& [x, y] : spans_) {
+                if (b.number && b.number->where.column >= x && b.number->where.column <= y) add(&*b.number);
+                for (const auto& w : b.words)
+                    if (w.where.line == b.where.line && w.where.column >= x && w.where.column <= y) add(&w);
             }
         }
     for (const Word* w : words) {
@@ -194,11 +209,11 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
             !rules.code_used(w->address, code_value(value)))
             out.push_back("unknown-code");
         auto shape = shape_of(*w);
-        if (shape && rules.format_broken(w->address, *shape)) out.push_back("word-format");
+        if (shape && rules.format_broken(w->address == ':' ? 'N' : w->address, *shape)) out.push_back("word-format");
         if (s_.spec)
             for (const auto& [rule, message] : check_word(*w, *s_.spec, rules.points()))
                 out.push_back(std::string(rule));
-        if (w->address == 'N' && w->where.line == before_lines_ + 1)
+        if ((w->address == 'N' || w->address == ':') && w->where.line == before_lines_ + 1)
             if (auto expected = rules.expected_number(line_); expected && w->integer() != expected)
                 out.push_back("block-number");
         if ((w->address == 'F' || w->address == 'S' || w->address == 'T') && shape)
@@ -206,8 +221,8 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
                     w->address, std::strtod(w->digits().c_str(), nullptr) / std::pow(10.0, std::max(shape->after, 0))))
                 out.push_back("value-range");
     }
-    if (const MotionState* state = rules.state_before(line_); state && first)
-        if (arc_agrees(*state, *first) == false) out.push_back("arc");
+    if (const MotionState* state = rules.state_before(line_); state && first && rules.arcs_trusted())
+        if (auto agrees = arc_agrees(*state, *first)) out.push_back(std::string(*agrees ? arc_closes : "arc"));
 }
 
 }  // namespace tape::detail

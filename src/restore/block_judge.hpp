@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@ struct RepairSetup {
     bool nc = true;                    ///< the text is an NC program: its grammar and rules apply
     const TapeRules* rules = nullptr;  ///< the program's own rules (with nc)
     const FormatSpec* spec = nullptr;  ///< the controller's format, when given
+    /// The image's first '%' (its frame index; none: SIZE_MAX): blocks after it are a program's.
+    std::size_t first_percent = SIZE_MAX;
 };
 
 /// A block's frames with candidates in place, and which of them are being decided.
@@ -30,8 +33,10 @@ struct BlockTry {
 
 /// The rules a try breaks near its decided frames, that the block without them does not break:
 /// lint's rule ids ("unknown-word"), and "unknown-code", "word-format", "block-number",
-/// "value-range", "arc", "spec-…". Empty: it fits.
+/// "value-range", "arc", "spec-…". Empty: it fits. One entry is no break: arc_closes, for a try whose
+/// arc closes (the arc rule decides only between tries where some arc closes: see BlockRepair).
 using Breaks = std::vector<std::string>;
+inline constexpr std::string_view arc_closes = "+arc";
 
 class BlockJudge {
 public:
@@ -58,6 +63,7 @@ private:
     std::string before_, after_;  // context: the lines before and after the block, as text
     std::uint64_t before_lines_ = 0;
     std::map<std::string, int> baseline_;
+    std::vector<std::pair<std::size_t, std::size_t>> spans_;  // the damaged words, columns from 1 inclusive
 };
 
 /// The text of frames as the decoder reads them (a bad frame as U+FFFD); places, when given, gets for

@@ -159,8 +159,16 @@ void BlockRepair::try_all(const BlockJudge* judge, std::size_t from, std::size_t
 }
 
 // A rule every try breaks decides nothing: the block breaks it whatever the damaged frames were (the
-// program's own mistake, or a rule that does not hold for this program).
+// program's own mistake, or a rule that does not hold for this program). Nor does the arc rule where no
+// try closes the arc: a try that only escapes it by making the block no arc is no better.
 void BlockRepair::ignore_rules_every_try_breaks() {
+    bool some_arc_closes = std::any_of(tried_.begin(), tried_.end(), [](const Tried& t) {
+        return std::find(t.breaks.begin(), t.breaks.end(), arc_closes) != t.breaks.end();
+    });
+    for (auto& t : tried_) {
+        std::erase(t.breaks, std::string(arc_closes));
+        if (!some_arc_closes) std::erase(t.breaks, std::string("arc"));
+    }
     std::vector<std::string> all;
     for (const auto& t : tried_) all.insert(all.end(), t.breaks.begin(), t.breaks.end());
     std::sort(all.begin(), all.end());
@@ -225,7 +233,14 @@ void BlockRepair::decide(std::size_t k) {
 }
 
 void BlockRepair::run() {
-    for (RestoreProblem* p : block_) options_.push_back(single_hole_changes(w_.setup.code, *p));
+    for (RestoreProblem* p : block_) {
+        options_.push_back(single_hole_changes(w_.setup.code, *p));
+        // A frame a reader skips stands inside a line only where this tape has such frames inside lines.
+        std::erase_if(options_.back(), [&](Frame f) {
+            FrameKind k = w_.setup.code.kind(f);
+            return (k == FrameKind::rubout && !w_.rubouts) || (k == FrameKind::blank && !w_.blank_inside_lines);
+        });
+    }
     auto range = block_around(w_.setup.code, out_.frames, at(0));
     if (range && at(block_.size() - 1) >= range->second) range.reset();
     std::optional<BlockJudge> judge;

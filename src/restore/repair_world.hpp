@@ -14,7 +14,10 @@ struct RepairWorld {
     RepairSetup setup;
     std::set<std::uint64_t> damaged_lines;
     std::unique_ptr<TapeRules> rules;
-    CharModel chars;   ///< how the text goes, for guesses
+    CharModel chars;  ///< how the text goes, for guesses
+    /// The undamaged lines hold blank tape between characters, or DEL: only then is either a repair
+    /// inside a line (a reader skips both, so either would make any block fit).
+    bool blank_inside_lines = false, rubouts = false;
     std::string text;  ///< the image's text, a bad frame as U+FFFD
 
     /// The line (from 1) of each frame's character, counted by the ends of block before it.

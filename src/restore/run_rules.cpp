@@ -66,6 +66,9 @@ std::unique_ptr<RepairWorld> decide_runs_by_rules(const VoteContext& v, VoteResu
         std::size_t local = first - range->first;
         Breaks kept = judge.judge(with_copies(judge.frames(), local, d.length, d.length, d.value));
         Breaks other = judge.judge(with_copies(judge.frames(), local, d.length, d.alternative, d.value));
+        // The arc rule decides only where one of the two closes the arc.
+        bool closes = std::erase(kept, std::string(arc_closes)) + std::erase(other, std::string(arc_closes)) > 0;
+        if (!closes) std::erase(kept, std::string("arc")), std::erase(other, std::string("arc"));
         if (kept.empty() == other.empty()) continue;
         if (!kept.empty()) {
             std::swap(d.length, d.alternative);

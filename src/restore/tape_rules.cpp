@@ -100,6 +100,8 @@ void TapeRules::block(const Block& b) {
     lint_->block(b);
     bool damaged = b.damaged || damaged_lines_.count(b.where.line) > 0;
     if (damaged) before_.emplace(b.where.line, state_);
+    if (!damaged)
+        if (auto closes = arc_agrees(state_, b)) ++arcs_checked_, arcs_open_ += !*closes;
     advance(state_, b);
     if (damaged) state_.at = {};
     learn_block(b, damaged);
@@ -125,6 +127,8 @@ void TapeRules::finish(std::string_view text) {
 void TapeRules::learn_block(const Block& b, bool damaged) {
     numbers_.emplace_back(b.where.line, damaged || !b.number || !b.number->integer() ? -1 : *b.number->integer());
     if (damaged) return;
+    if (b.number)  // block numbers keep a format too (N001, :005): under 'N'
+        if (auto s = shape_of(*b.number)) ++shapes_['N'][*s], ++words_['N'];
     for (const auto& w : b.words) {
         if (auto s = shape_of(w)) {
             ++shapes_[w.address][*s];
@@ -185,7 +189,7 @@ bool TapeRules::format_broken(char address, const WordShape& shape) const {
     if ((pointed == 0 && point) || (pointed == n->second && !point)) return true;  // point style
     if (point && pointed >= enough_words && decimals.size() == 1 && *decimals.begin() != shape.after) return true;
     if (widths.size() == 1 && *widths.begin() != shape.before + std::max(shape.after, 0)) return true;  // fixed width
-    if ((plus == 0 && shape.sign == '+') || (signed_ == n->second && !shape.sign)) return true;       // sign style
+    if ((plus == 0 && shape.sign == '+') || (signed_ == n->second && !shape.sign)) return true;         // sign style
     return false;
 }
 

@@ -87,6 +87,9 @@ public:
     bool excused(const std::string& key) const { return excused_.count(key) > 0; }
     /// The motion state where a damaged line begins, if the blocks before it tell.
     const MotionState* state_before(std::uint64_t line) const;
+    /// The tape's own undamaged arcs close as arc_agrees checks them (at least three, nine in ten): only
+    /// then does arc geometry judge a repair (a controller may read I, J, K otherwise).
+    bool arcs_trusted() const { return arcs_checked_ >= 3 && arcs_open_ * 10 <= arcs_checked_; }
     const FormatSpec* spec() const { return spec_; }
     /// The program writes explicit points somewhere (for a format spec's checks).
     bool points() const { return points_; }
@@ -111,6 +114,7 @@ private:
     const FormatSpec* spec_;
     bool points_ = false;
     long long step_ = 0;  // the block numbers' steady step, 0 for none
+    std::size_t arcs_checked_ = 0, arcs_open_ = 0;
 };
 
 /// How a tape's frames follow one another, for guesses: counts of one, two and three frames in a row
