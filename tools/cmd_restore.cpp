@@ -40,7 +40,8 @@ void say_about_reads(const RestoreReportInput& in, const tape::RestoreResult& r)
         if (!r.related[i]) say(display_name(in.names[i]), "left out: a read of another tape, or too damaged to align");
     if (in.code && r.code_misfit)
         say("", "most frames of the reads fail the code " + in.code_text +
-                    ": it is not the tape's, so nothing was repaired (try --code auto, or another --parity)");
+                    ": it is not the tape's, so the reads were only voted, nothing repaired (try --code auto, or "
+                    "another --parity)");
 }
 
 void run(const RestoreArgs& a) {

@@ -171,7 +171,11 @@ std::string restore_report_text(const RestoreReportInput& in) {
             s += "  frames " + std::to_string(x.from) + "-" + std::to_string(x.to) + ", " + cm(x.from) + "-" +
                  cm(x.to) + " cm from the first feed hole\n";
     }
-    if (r.unchecked)
+    if (r.code_misfit)
+        s += "most frames fail the code " + in.code_text +
+             ": the reads were voted as frames of no code, nothing "
+             "repaired\n";
+    else if (r.unchecked)
         s += "one read of a tape in no code: nothing could be checked, so nothing is known to be right\n";
     else
         s += r.complete() ? "every frame is clean, voted or inferred\n"

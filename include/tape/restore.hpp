@@ -88,11 +88,12 @@ struct RestoreResult {
     std::uint64_t contested_unwritten = 0;
     /// One read of a tape in no code: nothing could be checked, so nothing is known to be right.
     bool unchecked = false;
-    /// Most frames of the data fail the code given: it is not the tape's, and nothing was repaired.
+    /// Most frames of the data fail the code given: it is not the tape's. The reads were voted as frames
+    /// of no code (no parity), nothing was repaired, and the restoration is not complete.
     bool code_misfit = false;
 
     std::uint64_t count(FrameStatus s) const { return counts[static_cast<std::size_t>(s)]; }
-    /// True when every frame is clean, voted or inferred, and something could be checked.
+    /// True when every frame is clean, voted or inferred, something could be checked, and the code fits.
     bool complete() const;
 };
 
@@ -111,7 +112,7 @@ struct RestoreCheck {
     /// Blank frames of the leader and trailer more or fewer than the tape has: their length is nobody's
     /// concern (it follows the majority of the reads), and is not counted as wrong.
     std::uint64_t blank_ends = 0;
-    bool exact = false;  ///< the data (first to last punched frame) is the tape's
+    bool exact = false;                  ///< the data (first to last punched frame) is the tape's
     std::vector<std::size_t> silent_at;  ///< where each silently wrong frame is, as an index of the tape
 };
 RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& result);

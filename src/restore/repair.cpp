@@ -3,6 +3,7 @@
 #include "repair.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,16 @@ std::vector<Frame> single_hole_changes(const FrameCode& code, const RestoreProbl
     if (blank_seen && std::find(out.begin(), out.end(), blank_frame) == out.end()) out.push_back(blank_frame);
     return out;
 }
+
+// A letter, a digit, or what a word is written with (sign, point, space, end of block).
+bool plain(const FrameCode& code, Frame f) {
+    if (code.kind(f) != FrameKind::character) return false;
+    char c = code.character(f);
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' || c == ' ' || c == '\n';
+}
+
+// A character that gives a block structure: comments, macros, tabs, block skips and the like.
+bool structural(const FrameCode& code, Frame f) { return code.kind(f) == FrameKind::character && !plain(code, f); }
 
 void set_status(RestoreResult& out, RestoreProblem& p, FrameStatus s, Frame f, std::string reason) {
     --out.counts[static_cast<std::size_t>(p.status)];
@@ -101,6 +112,7 @@ private:
     void try_all(const BlockJudge* judge, std::size_t from, std::size_t to);
     void ignore_rules_every_try_breaks();
     double score(const Tried& t) const;
+    Frame likeliest(std::size_t k, const std::vector<Frame>& values) const;
     void decide(std::size_t k);
 
     const RepairWorld& w_;
@@ -111,10 +123,11 @@ private:
     std::vector<Tried> tried_;
     std::vector<std::string> ruled_out_;
     const Tried* best_ = nullptr;
+    bool one_at_a_time_ = false;  // too many choices: each frame tried with the others as read
 };
 
 // More choices than this are tried one frame at a time, the others as read.
-constexpr std::size_t most_choices = 512;
+constexpr std::size_t most_choices = 2048;
 
 void BlockRepair::try_all(const BlockJudge* judge, std::size_t from, std::size_t to) {
     std::size_t choices = 1;
@@ -136,6 +149,7 @@ void BlockRepair::try_all(const BlockJudge* judge, std::size_t from, std::size_t
     std::vector<Frame> as_read(block_.size());
     for (std::size_t k = 0; k < block_.size(); ++k) as_read[k] = out_.frames[at(k)];
     if (choices > most_choices) {
+        one_at_a_time_ = true;
         for (std::size_t k = 0; k < block_.size(); ++k)
             for (Frame f : options_[k]) {
                 auto choice = as_read;
@@ -207,6 +221,20 @@ double BlockRepair::score(const Tried& t) const {
     return sum;
 }
 
+// The likeliest of values for damaged frame k alone, the others as the best fitting try has them.
+Frame BlockRepair::likeliest(std::size_t k, const std::vector<Frame>& values) const {
+    Tried t{best_ ? best_->choice : std::vector<Frame>(block_.size()), {}};
+    if (!best_)
+        for (std::size_t j = 0; j < block_.size(); ++j) t.choice[j] = out_.frames[at(j)];
+    Frame best = values.front();
+    double best_score = -1e300;
+    for (Frame f : values) {
+        t.choice[k] = f;
+        if (double sc = score(t); sc > best_score) best_score = sc, best = f;
+    }
+    return best;
+}
+
 void BlockRepair::decide(std::size_t k) {
     RestoreProblem& p = *block_[k];
     std::vector<Frame> fit;
@@ -215,21 +243,32 @@ void BlockRepair::decide(std::size_t k) {
     if (options_[k].empty()) fit.clear();
     p.candidates = fit;
     std::string with_others = block_.size() > 1 ? ", with the other damaged frames of its block" : "";
-    if (fit.size() == 1) {
+    // Tried one at a time, a frame is judged beside the others' damage: it may look like it fits alone.
+    // A sign of structure (a comment, a macro, a tab) that alone fits where letters and digits could
+    // stand makes a block fit by hiding or changing what it is: weighed like any other, it decides nothing.
+    bool structural_alone =
+        fit.size() == 1 && structural(w_.setup.code, fit.front()) &&
+        std::any_of(options_[k].begin(), options_[k].end(), [&](Frame f) { return plain(w_.setup.code, f); });
+    if (fit.size() == 1 && !one_at_a_time_ && !structural_alone) {
         set_status(out_, p, FrameStatus::inferred, fit.front(),
                    "the one single-hole change that fits its block" + with_others + ruled_out(ruled_out_));
-    } else if (fit.empty()) {
-        p.reason = "no single-hole change makes a character that fits its block";
-    } else if (guess_ && best_) {
-        Frame g = best_->choice[k];
+        return;
+    }
+    if (guess_ && !options_[k].empty()) {
+        const std::vector<Frame>& among = fit.empty() ? options_[k] : fit;
+        Frame g = !one_at_a_time_ && best_ && !fit.empty() ? best_->choice[k] : likeliest(k, among);
+        p.candidates = among;
         std::erase(p.candidates, g);
         p.candidates.insert(p.candidates.begin(), g);
         set_status(out_, p, FrameStatus::guessed, g,
-                   "the likeliest of " + std::to_string(fit.size()) +
-                       " single-hole changes that fit its block, by how the tape's text goes");
-    } else {
-        p.reason = std::to_string(fit.size()) + " single-hole changes fit its block: not guessed";
+                   "the likeliest of " + std::to_string(among.size()) + " single-hole changes" +
+                       (fit.empty() ? " (none fits its block)" : " that fit its block") + ", by how the tape goes");
+        return;
     }
+    p.reason = one_at_a_time_     ? "too many damaged frames in its block to try them together: not repaired"
+               : structural_alone ? "only a character that gives the block another structure fits: not repaired"
+               : fit.empty()      ? "no single-hole change makes a character that fits its block"
+                                  : std::to_string(fit.size()) + " single-hole changes fit its block: not guessed";
 }
 
 void BlockRepair::run() {
@@ -249,10 +288,7 @@ void BlockRepair::run() {
         for (std::size_t k = 0; k < block_.size(); ++k) damaged.push_back(at(k));
         judge.emplace(w_.setup, out_.frames, range->first, range->second, w_.line_of(at(0)), damaged);
     }
-    if (w_.setup.nc && !range) {
-        for (RestoreProblem* p : block_) p->reason = "its block is too long to repair: the ends of block are lost";
-        return;
-    }
+    // A block longer than any block (the ends of block lost) is judged by the code alone.
     try_all(judge ? &*judge : nullptr, range ? range->first : 0, range ? range->second : 0);
     ignore_rules_every_try_breaks();
     double best_score = -1e300;

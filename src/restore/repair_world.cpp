@@ -58,6 +58,7 @@ std::unique_ptr<RepairWorld> learn_world(std::span<const Frame> image, std::span
     load_each(w->text, {}, *w->rules, LoadOptions{w->setup.dialect});
     w->rules->finish(w->text);
     w->setup.rules = w->rules.get();
+    w->setup.nc = w->rules->grammar_fits();
     return w;
 }
 

@@ -69,14 +69,26 @@ std::string_view status_name(FrameStatus s) {
 }
 
 bool RestoreResult::complete() const {
-    return !unchecked && count(FrameStatus::guessed) + count(FrameStatus::contested) + count(FrameStatus::unstable) +
-                                 count(FrameStatus::unresolved) + count(FrameStatus::missing) ==
-                             0;
+    return !unchecked && !code_misfit &&
+           count(FrameStatus::guessed) + count(FrameStatus::contested) + count(FrameStatus::unstable) +
+                   count(FrameStatus::unresolved) + count(FrameStatus::missing) ==
+               0;
 }
 
 double frame_distance_cm(std::uint64_t frame) { return frame == 0 ? 0 : static_cast<double>(frame - 1) * 0.254; }
 
-RestoreResult restore(std::span<const std::span<const Frame>> reads, const RestoreOptions& o) {
+RestoreResult restore(std::span<const std::span<const Frame>> reads, const RestoreOptions& options) {
+    // Reads in another code than the one given: every frame would fail it and stand in doubt. They are
+    // voted as frames of no code, nothing is repaired, and the result says the code does not fit.
+    RestoreOptions o = options;
+    bool misfit = false;
+    if (o.code) {
+        const std::span<const Frame>* longest = &reads.front();
+        for (const auto& r : reads)
+            if (r.size() > longest->size()) longest = &r;
+        misfit = detail::code_does_not_fit(*longest, *o.code);
+        if (misfit) o.code.reset();
+    }
     detail::VoteResult vote;
     std::unique_ptr<detail::RepairWorld> world;
     std::optional<RestoreProblem> missing_start, missing_end;
@@ -98,12 +110,12 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
             out.related.push_back(a.related(r));
             related += a.related(r);
         }
-        out.unchecked = related == 1 && !o.code;
+        out.unchecked = related == 1 && !o.code && !misfit;
     }
     make_image(std::move(vote), out);
     for (const auto& run : vote.runs) out.run_length_votes += !run.blank_end && run.decided(o.run_odds);
+    out.code_misfit = misfit;
     if (o.code) {
-        out.code_misfit = detail::code_does_not_fit(out.frames, *o.code);
         detail::repair_unresolved(out, *o.code, o, std::move(world));
         detail::number_lines(out, *o.code);
     }

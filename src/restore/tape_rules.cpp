@@ -98,6 +98,7 @@ void TapeRules::program_start(const Program& header) {
 
 void TapeRules::block(const Block& b) {
     lint_->block(b);
+    ++blocks_;
     bool damaged = b.damaged || damaged_lines_.count(b.where.line) > 0;
     if (damaged) before_.emplace(b.where.line, state_);
     if (!damaged)
@@ -115,11 +116,14 @@ void TapeRules::finish(std::string_view text) {
         lines.push_back(text.substr(from, to - from));
         from = to + 1;
     }
+    std::set<std::uint64_t> with_errors;
     for (const auto& f : lint_->findings()) {
         std::uint64_t line = f.where.line.value_or(0);
         if (line == 0 || line > lines.size() || damaged_lines_.count(line) || f.severity != Severity::error) continue;
         excused_.insert(finding_key(f, lines[line - 1]));
+        with_errors.insert(line);
     }
+    error_lines_ = with_errors.size();
     lint_.reset();
     learn_step();
 }

@@ -91,6 +91,10 @@ public:
     /// then does arc geometry judge a repair (a controller may read I, J, K otherwise).
     bool arcs_trusted() const { return arcs_checked_ >= 3 && arcs_open_ * 10 <= arcs_checked_; }
     const FormatSpec* spec() const { return spec_; }
+    /// The dialect's grammar fits the undamaged program: lint finds errors in at most one block in five.
+    /// Where it does not (no known dialect fits: an Okuma or Siemens program read as another), repairs
+    /// are not judged by it.
+    bool grammar_fits() const { return error_lines_ * 5 <= std::max<std::size_t>(blocks_, 1); }
     /// The program writes explicit points somewhere (for a format spec's checks).
     bool points() const { return points_; }
     static constexpr std::size_t enough_words = 5;
@@ -115,6 +119,7 @@ private:
     bool points_ = false;
     long long step_ = 0;  // the block numbers' steady step, 0 for none
     std::size_t arcs_checked_ = 0, arcs_open_ = 0;
+    std::size_t blocks_ = 0, error_lines_ = 0;
 };
 
 /// How a tape's frames follow one another, for guesses: counts of one, two and three frames in a row

@@ -238,7 +238,8 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         return true;
     }
     if (present < lost && (present <= 1 || h.good_values > 1 || !front.good || lone_blank)) {
-        bool tangled = v_.tangled[c] && !lone_blank;
+        // Where several reads slipped in the stretch, a vote won by one read decides nothing.
+        bool tangled = v_.tangled[c] && !lone_blank && lost - present <= 1;
         set(c, tangled ? FrameStatus::contested : FrameStatus::extra, front.value,
             of_reads(present, h.covering, "have this frame") +
                 (tangled ? ", and more than one read slipped in this stretch: not written, but nothing decides"
@@ -299,7 +300,7 @@ void Voter::values(std::size_t c, const Heard& h) {
         bool only_good = t.size() > 1 && !t[1].good && t[0].weight <= t[1].weight;
         std::string reason = only_good ? "the only good reading (the others fail parity or are blank among holes)"
                                        : of_reads(static_cast<std::size_t>(t[0].count), h.covering, "agree");
-        if (v_.tangled[c] && h.lost > 0)
+        if (v_.tangled[c] && h.lost > 0 && h.present_good <= h.lost + 1)
             return set(c, FrameStatus::contested, t[0].value,
                        reason + ", and more than one read slipped in this stretch: written, but nothing decides", true);
         return set(c, FrameStatus::voted, t[0].value, reason, true);
