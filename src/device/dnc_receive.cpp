@@ -78,6 +78,7 @@ public:
                     r_.end = ReceiveResult::End::program_end;
                     return r_;
                 }
+                if (o_.gather.count() > 0 && !got.end) clock_.sleep_until(clock_.now() + o_.gather);
             }
             if (got.end) {
                 r_.end = ReceiveResult::End::hangup;
@@ -112,6 +113,7 @@ private:
             Frame f = seven_bit_ ? with_track_8(buf_[i], code_) : buf_[i];
             if (o_.drop_flow_codes && is_flow_code(f, code_)) continue;
             kept_.push_back(f);
+            if (o_.ends_after && o_.ends_after(f)) done = true;
             if (o_.until_program_end && code_.kind(f) == FrameKind::character &&
                 watch_.feed(code_.character(f)) == ProgramEndWatch::Event::next_percent)
                 done = true;
