@@ -77,9 +77,9 @@ struct ReceiveOptions {
     const std::atomic<bool>* stop = nullptr;
     std::function<void(std::span<const Frame>)> sink{};  ///< every frame, as it arrives
     std::function<void(const LineProgress&)> progress{};
-    /// Asked of each frame kept: true ends the run after it (End::program_end), for callers that know
-    /// the end of what they receive better (a DNC request ends at its closing '%'). Frames after it in
-    /// the same read are not kept.
+    /// Asked of each frame kept: true ends the run once the frames of this read are kept
+    /// (End::program_end), for callers that know the end of what they receive better (a DNC request
+    /// ends at its closing '%'). Nothing that came is dropped.
     std::function<bool(Frame)> ends_after{};
     /// After each read that brought frames, wait this long before the next, so that one read takes
     /// what a slow line brought meanwhile: fewer wake-ups for many lines at once (the kernel keeps it).

@@ -31,8 +31,8 @@ struct RestartPlan {
 /// Plans the restart of the program in text at block ("N50", "50" or ":50"; a main block ':50' answers
 /// to N50 too). The modal state at the block is rebuilt from the blocks before it: units, plane,
 /// absolute/incremental, feed mode, constant surface speed, work offset, tool length and cutter
-/// compensation (with their H and D), the motion mode with F, S, T (with M06 when a tool change ran
-/// after it), the spindle and coolant M codes; macro assignments before it are carried in order.
+/// compensation (with their H and D), the motion mode with F, S, the tool an M06 put in the spindle
+/// (and a T made ready after it), the spindle and coolant M codes; macro assignments before it are carried in order.
 /// Throws Error(Errc::usage) naming the line, and why, where a restart cannot be rebuilt safely: the
 /// block is missing or occurs twice, it stands inside a macro loop or a subprogram definition, a
 /// subprogram or macro is called before it, a jump (GOTO, IF) or a loop runs before it, a canned cycle

@@ -36,7 +36,9 @@ public:
             }
             // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
             if (flow_ == Flow::xonxoff) take_input(0ms, i);
+            bool waited = false;
             while (blocked() && !stopped()) {
+                waited = true;
                 report(i, frames.size(), start, true);
                 if (flow_ == Flow::xonxoff)
                     take_input(50ms, i);
@@ -47,6 +49,7 @@ public:
                 r.stopped = true;
                 break;
             }
+            if (waited) next = clock_.now();  // resumed: paced from now, no burst to catch up the pause
             std::size_t n = write_burst(frames, i);
             i += n;
             r.sent = i;

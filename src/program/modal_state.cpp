@@ -130,9 +130,9 @@ std::string with_word(const Word& g, const Block& b, char address) {
 
 struct ModalState {
     std::string motion, thread, cycle, plane, distance, feed_mode, units, work_offset, tool_length, cutter, speed_mode;
-    std::string feed, speed, tool, spindle;
-    bool tool_changed = false;          // an M06 ran with or after the T
-    std::optional<bool> mist, flood{};  // M07, M08; M09 turns both off
+    std::string feed, speed, spindle;
+    std::string next_tool, changed_tool;  // the last T word; the T an M06 last put in the spindle
+    std::optional<bool> mist, flood{};    // M07, M08; M09 turns both off
 
     std::vector<std::string> blocks() const;
 };
@@ -151,7 +151,8 @@ std::vector<std::string> ModalState::blocks() const {
         if (!b.empty()) out.push_back(b);
     };
     add({units, plane, distance, feed_mode, work_offset});
-    add({tool, tool_changed && !tool.empty() ? "M06" : ""});
+    if (!changed_tool.empty()) add({changed_tool, "M06"});
+    if (next_tool != changed_tool) add({next_tool});  // a lathe's T, or the next tool made ready
     std::string coolant;
     if (mist.value_or(false)) join(coolant, "M07");
     if (flood.value_or(false)) join(coolant, "M08");
@@ -276,8 +277,7 @@ private:
                 state_.speed = w.text;
                 return;
             case 'T':
-                state_.tool = w.text;
-                state_.tool_changed = false;
+                state_.next_tool = w.text;
                 return;
             case 'G':
                 g_word(w, b);
@@ -352,7 +352,7 @@ private:
         ModalState& s = state_;
         bool gost = dialect_ == Dialect::gost;
         if (*code == 3 || *code == 4 || *code == 5) s.spindle = w.text;
-        if (*code == 6) s.tool_changed = true;
+        if (*code == 6) s.changed_tool = s.next_tool;
         if (*code == 7) s.mist = true;
         if (*code == 8) s.flood = true;
         if (*code == 9) s.mist = s.flood = false;
@@ -458,8 +458,9 @@ RestartPlan plan_restart(std::string_view text, std::string_view block, Dialect 
     plan.dialect = lo.dialect;
     plan.block = target.number_text();
     plan.line = target.where.line;
-    plan.skipped_blocks = found.index;
     plan.start = program_start(tape, p, found.index);
+    bool number_sent = p.numbered_by_block && found.index > 0 && p.number && p.blocks[0].source.starts_with(*p.number);
+    plan.skipped_blocks = found.index - (number_sent ? 1 : 0);
     plan.marker = "(RESTART AT " + plan.block + ")";
     plan.modal = walk.assignments();
     auto state = walk.state().blocks();
