@@ -82,7 +82,7 @@ void run_service(const std::string& path) {
     log_line(dnc::Priority::notice, "tape dnc: serving " + std::to_string(config.machines.size()) +
                                         " machine(s) from " + path + "; status: tape dnc status --config " + path);
     while (!stop_requested) {
-        std::this_thread::sleep_for(50ms);
+        std::this_thread::sleep_for(100ms);
         if (reload_requested.exchange(false)) reload(service, path);
     }
     socket.reset();

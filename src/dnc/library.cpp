@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <mutex>
 
 #include "tape/dnc_request.hpp"
 #include "tape/program.hpp"
@@ -71,6 +73,31 @@ std::optional<std::string> program_number(std::string_view text) {
     return std::nullopt;
 }
 
+// The program number of the file at path, read once while its size and time stay the same: a lookup by
+// number reads every file of the library, and a shop asks all day.
+std::optional<std::string> cached_number(const std::string& path) {
+    struct Entry {
+        off_t size;
+        timespec mtime;
+        std::optional<std::string> number;
+    };
+    static std::mutex mutex;
+    static std::map<std::string, Entry> cache;
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return std::nullopt;
+    {
+        std::lock_guard lock(mutex);
+        auto at = cache.find(path);
+        if (at != cache.end() && at->second.size == st.st_size && at->second.mtime.tv_sec == st.st_mtim.tv_sec &&
+            at->second.mtime.tv_nsec == st.st_mtim.tv_nsec)
+            return at->second.number;
+    }
+    auto number = program_number(head_of(path));
+    std::lock_guard lock(mutex);
+    cache[path] = Entry{st.st_size, st.st_mtim, number};
+    return number;
+}
+
 Found one_of(const std::string& folder, const std::vector<std::string>& matches, std::string_view how) {
     if (matches.size() == 1) return {folder + "/" + matches[0], ""};
     return {"", "ambiguous: " + matches[0] + " and " + matches[1] + " both " + std::string(how)};
@@ -91,7 +118,7 @@ Found find_program(const std::string& folder, std::string_view name) {
     auto wanted = number_digits(name);
     if (!wanted) return {"", "not in the library"};
     for (const auto& f : files) {
-        auto number = program_number(head_of(folder + "/" + f));
+        auto number = cached_number(folder + "/" + f);
         if (number && number_digits(*number) == wanted) by_number.push_back(f);
     }
     if (by_number.empty()) return {"", "not in the library"};

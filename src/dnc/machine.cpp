@@ -13,10 +13,12 @@ namespace {
 
 using namespace std::chrono_literals;
 
-// Between reads while a punch-out comes: one read then takes what 20 ms brought (19 characters at
+// Between reads while a punch-out comes: one read then takes what 40 ms brought (38 characters at
 // 9600 baud), instead of waking for every character.
-constexpr auto gather = 20ms;
+constexpr auto gather = 40ms;
 constexpr auto reopen_after = 2s;
+// How long the LF after a closing '%' may take: a character at 300 baud, and a read's gathering.
+constexpr auto line_end_wait = 60ms;
 
 std::string seconds_text(double s) {
     char text[32];
@@ -155,6 +157,14 @@ bool Machine::listen(Transport& line) {
     };
     o.ends_after = [&](Frame f) { return watch.feed(f) || (flood = file.bytes() > s_.max_punch_out); };
     ReceiveResult r = receive_frames(line, o, *shared_->clock);
+    if (r.end == ReceiveResult::End::program_end && !flood && watch.line_open()) {
+        // The closing '%' came without its line's end: it follows at once when it comes at all.
+        o.idle_timeout = line_end_wait;
+        o.ends_after = [&](Frame f) { return code.kind(f) == FrameKind::character && code.character(f) == '\n'; };
+        ReceiveResult more = receive_frames(line, o, *shared_->clock);
+        r.frames += more.frames;
+        if (more.end == ReceiveResult::End::hangup || more.end == ReceiveResult::End::stopped) r.end = more.end;
+    }
     if (file.started()) finish_punch_out(line, file, watch, r, flood, since(start));
     return r.end != ReceiveResult::End::hangup;
 }

@@ -60,6 +60,7 @@ std::vector<std::string> program_lines(const std::string& text) {
 bool PunchOutWatch::feed(Frame f) {
     if (code_.kind(f) != FrameKind::character) return false;
     char c = code_.character(f);
+    last_ = c;
     if (end_.feed(c) == ProgramEndWatch::Event::program_end) program_end_ = true;
     if (c == '%' && content_) return closed_ = true;
     if (is_content(c)) content_ = true;

@@ -21,12 +21,15 @@ public:
     /// Takes one frame; true when the punch-out ends with it.
     bool feed(Frame f);
     bool content() const { return content_; }
+    /// True when the last character was no LF: the closing '%' line's end may still come.
+    bool line_open() const { return last_ != '\n'; }
     bool complete() const { return closed_ || program_end_; }
 
 private:
     const FrameCode& code_;
     ProgramEndWatch end_;
     bool content_ = false, closed_ = false, program_end_ = false;
+    char last_ = '\n';
 };
 
 /// The text of one punch-out, decoded as it arrives and written straight to received/ under the name
