@@ -70,16 +70,20 @@ void reload(dnc::Service& service, const std::string& path) {
 void run_service(const std::string& path) {
     dnc::ServiceConfig config = config_or_fail(path);  // a bad config ends here, before any line is opened
     install_service_signals();
-    std::string socket_path = dnc::control_socket_path(config);
-    dnc::Service service(config, log_line);
+    // The socket first: one it cannot have (another service answers there, a path too long) is said
+    // before any line is opened too. It answers an empty list until the machines start.
+    std::atomic<dnc::Service*> serving{nullptr};
     std::unique_ptr<dnc::ControlSocket> socket;
     try {
-        socket =
-            std::make_unique<dnc::ControlSocket>(socket_path, [&service] { return status_lines(service.status()); });
+        socket = std::make_unique<dnc::ControlSocket>(dnc::control_socket_path(config), [&serving] {
+            dnc::Service* s = serving.load();
+            return status_lines(s ? s->status() : std::vector<dnc::MachineStatus>{});
+        });
     } catch (const tape::Error& e) {
-        service.stop(1500ms);
         fail("", e);
     }
+    dnc::Service service(config, log_line);
+    serving = &service;
     log_line(dnc::Priority::notice, "tape dnc: serving " + std::to_string(config.machines.size()) +
                                         " machine(s) from " + path + "; status: tape dnc status --config " + path);
     while (!stop_requested) {
