@@ -2,6 +2,7 @@
 #include <limits>
 
 #include "cli_common.hpp"
+#include "cli_completion.hpp"
 #include "cli_numbers.hpp"
 #include "commands.hpp"
 
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
     cli::add_adapter(app);
     cli::add_label(app);
     cli::add_render(app);
+    cli::add_bash_completion_flag(app, "tape");
     cli::install_output_cleanup();
     return cli::parse_and_run(app, argc, argv, "'tape --help' or 'tape SUBCOMMAND --help'");
 }
