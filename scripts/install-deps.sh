@@ -21,6 +21,7 @@ run=(
   g++
   pkg-config
   libcli11-dev
+  nlohmann-json3-dev
   libusb-1.0-0-dev
   libhidapi-dev
 )
