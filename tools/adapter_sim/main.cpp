@@ -270,20 +270,10 @@ int run(const SimArgs& a) {
     return cli::ok;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "tape-adapter-sim: a USB tape adapter with a ФС-1501-class reader and a ПЛ-150-class punch, simulated on a "
-        "pseudo-terminal.\nPrints the device string (adapter:/dev/pts/N) on stdout, then runs until Ctrl-C.",
-        "tape-adapter-sim"};
-    app.set_version_flag("--version", std::string("tape-adapter-sim ") + TAPE_VERSION);
-    app.footer("See tape-usb(7) and docs/adapter-protocol.md.");
-    cli::globals().program = "tape-adapter-sim";
-    SimArgs a;
+// The adapter as built: what it holds, its line and its clock.
+void add_unit_options(CLI::App& app, SimArgs& a) {
     using cli::real_number;
     using cli::whole_number;
-    constexpr std::uint64_t most = 1'000'000'000;
     app.add_option("--reader", a.reader, "Tape image in the reader (any format); without it the reader has no tape");
     app.add_option("--punch", a.punch, "Raw image file the punch punches into (rows appended as punched)");
     app.add_option("--serial", a.serial, "The adapter's serial string")->capture_default_str();
@@ -310,6 +300,12 @@ int main(int argc, char** argv) {
     app.add_flag("--at-end", a.at_end,
                  "The tape is loaded with its end at the head, as after reading it through: read it back with "
                  "direction=reverse");
+}
+
+// Faults of the tape, the units and the line, each at a frame or packet named.
+void add_fault_options(CLI::App& app, SimArgs& a) {
+    using cli::whole_number;
+    constexpr std::uint64_t most = 1'000'000'000;
     app.add_option("--no-sprocket-at", a.no_sprocket_at,
                    "Frame N (from 1) is read without its sprocket hole, sampled by time, and flagged so "
                    "(repeatable)")
@@ -357,6 +353,21 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--protocol", a.faults.protocol, "Claim this protocol version in INFO (to try a mismatch)")
         ->check(whole_number(0, 255));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "tape-adapter-sim: a USB tape adapter with a ФС-1501-class reader and a ПЛ-150-class punch, simulated on a "
+        "pseudo-terminal.\nPrints the device string (adapter:/dev/pts/N) on stdout, then runs until Ctrl-C.",
+        "tape-adapter-sim"};
+    app.set_version_flag("--version", std::string("tape-adapter-sim ") + TAPE_VERSION);
+    app.footer("See tape-usb(7) and docs/adapter-protocol.md.");
+    cli::globals().program = "tape-adapter-sim";
+    SimArgs a;
+    add_unit_options(app, a);
+    add_fault_options(app, a);
     app.callback([&a] { throw cli::Exit{run(a)}; });
     cli::install_interrupt_handler();
     return cli::parse_and_run(app, argc, argv);
