@@ -53,8 +53,11 @@ fi
 
 say "the suite as $user, TMPDIR=$run/tmp, HOME=$run/home"
 status=0
-"${as_user[@]}" env -i PATH="$PATH" LANG=C.UTF-8 HOME="$run/home" TMPDIR="$run/tmp" ${CI:+CI=$CI} \
-  ctest --test-dir "$build" --output-on-failure -j2 || status=$?
+if ! "${as_user[@]}" env -i PATH="$PATH" LANG=C.UTF-8 HOME="$run/home" TMPDIR="$run/tmp" ${CI:+CI=$CI} \
+  ctest --test-dir "$build" --output-on-failure -j2; then
+  say "the suite failed as $user (above)"
+  status=1
+fi
 
 # What the user made or changed outside the build tree and the run's folder; /proc and /sys are no files.
 left=$(find / \( -path /proc -o -path /sys -o -path "$build" -o -path "$run" \) -prune -o -user "$user" \
@@ -70,5 +73,6 @@ if [ -n "$tmp_left" ]; then
   echo "$tmp_left" >&2
   status=1
 fi
-[ "$status" -eq 0 ] && say "passed as $user; nothing left outside the build tree, TMPDIR and home empty"
+[ -z "$left$tmp_left" ] && say "nothing left outside the build tree; TMPDIR and home empty"
+[ "$status" -eq 0 ] && say "passed as $user"
 exit "$status"
