@@ -99,8 +99,8 @@ private:
     std::unique_ptr<Decoder> decoder_;
     std::vector<Diagnostic> notes_;
     bool ended_ = false;
-    std::uint64_t decoded_frames_ = 0;  // frames given to the decoder: where the next chunk starts
-    std::vector<Frame> unlabelled_;     // a chunk with the label's frames blanked
+    std::uint64_t decoded_frames_ = 0;   // frames given to the decoder: where the next chunk starts
+    std::vector<Frame> unlabelled_;      // a chunk with the label's frames blanked
     std::vector<DoubtfulFrame> doubts_;  // from the doubts file beside the image, by frame
     std::size_t next_doubt_ = 0;
     std::uint64_t doubtful_met_ = 0;
