@@ -1,16 +1,34 @@
 // The loader behind ProgramLoader: characters -> label, programs, blocks, words, statements, in one
-// pass, a line at a time, in the dialect's reading (tape/dialect.hpp).
+// pass, a line at a time, in the dialect's reading (tape/dialect.hpp). Its stages are the files of
+// this folder: feed.cpp (pieces of text -> lines and positions), programs.cpp (lines -> label,
+// programs, the end of the record), block.cpp (a line -> blocks and their items), word.cpp (a word,
+// the hot loop) and statements.cpp (macro statements, o-words).
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "program/chars.hpp"
 #include "tape/program.hpp"
 
 namespace tape {
+
+namespace loading {
+using chars::is_blank, chars::is_digit, chars::is_letter, chars::is_lower, chars::is_upper, chars::upper;
+
+inline bool listed(std::string_view name, std::span<const std::string_view> list) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+inline std::string_view trim_right(std::string_view s) {
+    while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+    return s;
+}
+}  // namespace loading
 
 class Loader {
 public:
@@ -32,6 +50,8 @@ private:
     std::size_t skip_blanks(std::size_t i, std::size_t e) const;
 
     void line(std::size_t b, std::size_t e, bool has_lf);
+    void label_line(std::size_t b, std::size_t first, std::size_t e, std::string_view whole);
+    void after_end_line(std::size_t b, bool blank, std::string_view whole);
     void percent_line(std::size_t b, std::size_t pct, std::size_t e);
     void open_pending(std::size_t pct, std::size_t e, bool from_label);
     void close_pending_empty();
@@ -43,14 +63,25 @@ private:
     void blocks_in_line(std::size_t i, std::size_t e);
 
     std::size_t block(std::size_t i, std::size_t e);
+    std::size_t block_head(std::size_t i, std::size_t end);
+    std::size_t block_item(std::size_t i, std::size_t end);
+    std::size_t letters(std::size_t i, std::size_t end);
     std::size_t block_end(std::size_t i, std::size_t e) const;
     std::size_t statement_end(std::size_t i, std::size_t e) const;
     void word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t block_no, Word& w);
+    bool macro_word(std::size_t i, std::size_t e, std::size_t* next, Word& w);
     std::size_t flagged(std::size_t i, std::size_t e, std::size_t end, std::string message,
                         std::string_view rule = "unknown-word");
     std::size_t stray_close(std::size_t i, std::size_t e) const;
     Word& flagged_word(std::size_t i, std::string_view text);
     std::size_t macro_statement(std::size_t i, std::size_t e, const std::string& keyword);
+    struct MacroScan {  // a macro statement being read: its start, where reading is, its end
+        std::size_t start, at, end;
+    };
+    bool if_statement(MacroScan& m);
+    bool macro_condition(MacroScan& m, const char* what);
+    void loop_number(MacroScan& m, Statement& s, const char* what);
+    void goto_target(MacroScan& m, Statement& s);
     std::size_t assignment(std::size_t i, std::size_t e);
     std::size_t o_word(std::size_t i, std::size_t e);
     Statement& add_statement(Statement::Kind kind, std::size_t from, std::size_t to);
