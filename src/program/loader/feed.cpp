@@ -135,21 +135,31 @@ Location Loader::end_location() const {
 
 void Loader::begin_line(std::size_t b, std::size_t e) {
     ++line_no_;
-    line_start_ = b;
+    line_start_ = column_offset_ = b;
+    column_ = 1;
     line_ascii_ = !swar::any_high_byte(text_.data() + b, e - b);
 }
 
+// Columns count characters, not bytes: on a line that is not ASCII the count goes on from the last
+// place asked for (forwards or back), so that a line's findings cost its length once, not once each.
 Location Loader::at(std::size_t offset) const {
     Location l;
     l.offset = base_ + offset;
     if (!frame_of_.empty()) l.frame = frame_of_[std::min(offset, frame_of_.size() - 1)] + 1;
     l.line = line_no_;
     l.column = offset - line_start_ + 1;
-    if (!line_ascii_)
-        l.column =
-            1 + static_cast<std::uint64_t>(std::count_if(text_.begin() + static_cast<std::ptrdiff_t>(line_start_),
-                                                         text_.begin() + static_cast<std::ptrdiff_t>(offset),
-                                                         [](char c) { return !utf8::is_continuation(c); }));
+    if (line_ascii_) return l;
+    auto characters = [&](std::size_t from, std::size_t to) {
+        return static_cast<std::uint64_t>(std::count_if(text_.begin() + static_cast<std::ptrdiff_t>(from),
+                                                        text_.begin() + static_cast<std::ptrdiff_t>(to),
+                                                        [](char c) { return !utf8::is_continuation(c); }));
+    };
+    if (offset >= column_offset_)
+        column_ += characters(column_offset_, offset);
+    else
+        column_ -= characters(offset, column_offset_);
+    column_offset_ = offset;
+    l.column = column_;
     return l;
 }
 

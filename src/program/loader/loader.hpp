@@ -110,6 +110,8 @@ private:
     std::uint64_t line_no_ = 0, ordinal_ = 0;
     std::size_t line_start_ = 0;
     bool line_ascii_ = true;
+    mutable std::size_t column_offset_ = 0;  // the last place of a non-ASCII line a column was counted for
+    mutable std::uint64_t column_ = 1;       // and that column
     bool any_program_ = false;
     bool after_end_started_ = false;
     bool last_line_was_block_ = false;
