@@ -86,11 +86,22 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
     blk.comments.resize(comments_used_);
     blk.source.assign(trim_right(text_.substr(start_at, end - start_at)));
     blk.ends = holds_end_code(blk, rules_->program_ends);
+    last_block_stops_ = stops_program(blk);
+    local_subprograms_ |= rules_->dialect == Dialect::fanuc && holds_end_code(blk, "97");  // Haas's M97 P calls
     last_block_where_ = blk.where;
     last_block_ordinal_ = blk.ordinal;
     v_.block(blk);
     if (blk.ends) state_ = State::after_end;
     return end < e ? end + 1 : e;
+}
+
+// A block no program goes on after, though it holds no end code: Fanuc's #3000 alarm, LinuxCNC's
+// endsub closing a subroutine file.
+bool Loader::stops_program(const Block& b) const {
+    return std::any_of(b.statements.begin(), b.statements.end(), [&](const Statement& s) {
+        return (rules_->macro_b && s.kind == Statement::Kind::assignment && s.text.starts_with("#3000")) ||
+               (rules_->o_words && s.kind == Statement::Kind::o_word && s.keyword == "endsub");
+    });
 }
 
 // The block's start: the reused Block emptied, then '/' (with its level) and the number. Returns
@@ -128,6 +139,15 @@ std::size_t Loader::block_head(std::size_t i, std::size_t end) {
 std::size_t Loader::block_item(std::size_t i, std::size_t end) {
     char c = text_[i];
     if (c == '(') return comment(i, end);
+    if (linuxcnc_ && (c == '@' || c == '^')) {  // polar words: @ the distance, ^ the angle
+        word(i, end, &i, blk_.ordinal, next_word());
+        return i;
+    }
+    if (linuxcnc_ && words_used_ == 0 && comments_used_ == 0 && !blk_.number && (c == '$' || c == '?' || c == '~'))
+        return flagged(i, end, statement_end(i, end),
+                       "is a GRBL console command, not G-code: GRBL runs it when the file is streamed, LinuxCNC "
+                       "stops on it",
+                       "console-command");
     if (c == ';' && rules_->semicolon_comment) {
         if (comments_used_ == blk_.comments.size()) blk_.comments.emplace_back();
         Comment& k = blk_.comments[comments_used_++];
@@ -261,6 +281,16 @@ std::size_t Loader::unexpected(std::size_t i, std::size_t e, std::uint64_t block
     Word& w = flagged_word(i, text_.substr(i, j - i));
     // A bad frame read past (decode --keep-going) stands as U+FFFD; on a tape the codec reported it.
     if (!frame_of_.empty() && w.text.starts_with(bad_frame_marker)) return j;
+    if (rules_->dialect == Dialect::none) {  // only what no control reads: a control character, or not 7-bit
+        if (std::none_of(w.text.begin(), w.text.end(), [](char k) {
+                auto u = static_cast<unsigned char>(k);
+                return u < 0x20 || u >= 0x7F;
+            }))
+            return j;
+        message = "'" + w.text +
+                  "' is a control character or none of 7-bit code: no control reads it outside comments" +
+                  look_alike_hint(w.text);
+    }
     if (message.empty())
         message = "'" + w.text + "' is no part of an NC program outside comments" +
                   (rules_->dialect == Dialect::gost ? " (ГОСТ 20999-83 tables 1-3)" : "") + look_alike_hint(w.text);

@@ -14,16 +14,35 @@ using namespace loading;
 
 namespace {
 constexpr std::size_t sniff_limit = 64 << 10;  // text looked at to choose a dialect
+
+// The first 64 KiB in whole lines: the same sample however the text came in pieces.
+std::string_view sample(std::string_view text) {
+    if (text.size() <= sniff_limit) return text;
+    auto nl = text.rfind('\n', sniff_limit - 1);
+    return text.substr(0, nl == std::string_view::npos ? sniff_limit : nl + 1);
+}
 }  // namespace
 
 Loader::Loader(ProgramVisitor& visitor, const LoadOptions& options) : v_(visitor), options_(options) {
-    if (options_.dialect != Dialect::automatic) choose(options_.dialect, "");
+    if (options_.dialect != Dialect::automatic) choose(DialectChoice{options_.dialect, ""});
 }
 
-void Loader::choose(Dialect d, std::string reason) {
-    rules_ = &dialect_rules(d);
-    linuxcnc_ = d == Dialect::linuxcnc;
-    v_.dialect(DialectChoice{d, std::move(reason)});
+void Loader::choose(DialectChoice choice) {
+    rules_ = &dialect_rules(choice.dialect);
+    linuxcnc_ = choice.dialect == Dialect::linuxcnc;
+    if (choice.close) {
+        second_found_ = std::make_unique<SecondFindings>();
+        second_ = std::make_unique<Loader>(*second_found_, LoadOptions{*choice.close});
+    }
+    v_.dialect(choice);
+}
+
+// Every finding of the loader: made only for the rules of the dialect, and, when two were close,
+// only where the other reading makes it too.
+void Loader::report(Finding f) {
+    if (const Rule* r = find_rule(f.id()); r && !rule_applies(*r, rules_->dialect)) return;
+    if (second_ && !second_found_->found.count({std::string(f.id()), f.where.byte.value_or(0)})) return;
+    v_.finding(std::move(f));
 }
 
 // Automatic: the text is held until enough of it has come to choose the dialect from.
@@ -36,16 +55,17 @@ void Loader::feed(std::string_view text, std::span<const std::uint64_t> frame_of
     sniff_ += text;
     sniff_frames_.insert(sniff_frames_.end(), frame_of.begin(), frame_of.end());
     if (sniff_.size() < sniff_limit) return;
-    auto choice = guess_dialect(sniff_);
-    choose(choice.dialect, std::move(choice.reason));
+    choose(guess_dialect(sample(sniff_)));
     feed_lines(sniff_, sniff_frames_.size() == sniff_.size() ? std::span<const std::uint64_t>(sniff_frames_)
                                                              : std::span<const std::uint64_t>());
     sniff_ = {};
     sniff_frames_ = {};
 }
 
-// Whole lines are loaded as they come; the unfinished last one waits for the next piece.
+// Whole lines are loaded as they come; the unfinished last one waits for the next piece. A second
+// reading takes them first, so that what it finds is known when this one looks.
 void Loader::feed_lines(std::string_view text, std::span<const std::uint64_t> frame_of) {
+    if (second_) second_->feed(text, frame_of);
     auto last_nl = text.rfind('\n');
     if (last_nl == std::string_view::npos) {
         keep(text, frame_of);
@@ -62,17 +82,18 @@ void Loader::feed_lines(std::string_view text, std::span<const std::uint64_t> fr
     run(text.substr(from, last_nl + 1 - from),
         frame_of.empty() ? frame_of : frame_of.subspan(from, last_nl + 1 - from));
     keep(text.substr(last_nl + 1), frame_of.empty() ? frame_of : frame_of.subspan(last_nl + 1));
+    if (second_) std::erase_if(second_found_->found, [&](const auto& f) { return f.second < base_; });
 }
 
 void Loader::finish() {
     if (!rules_) {
-        auto choice = guess_dialect(sniff_);
-        choose(choice.dialect, std::move(choice.reason));
+        choose(guess_dialect(sample(sniff_)));
         std::string held = std::move(sniff_);
         std::vector<std::uint64_t> frames = std::move(sniff_frames_);
         feed_lines(held, frames.size() == held.size() ? std::span<const std::uint64_t>(frames)
                                                       : std::span<const std::uint64_t>());
     }
+    if (second_) second_->finish();
     bool cut_in_block = false;
     if (!pending_.empty()) {
         run(pending_, pending_frames_);
@@ -83,10 +104,10 @@ void Loader::finish() {
     if (state_ == State::pending) close_pending_empty();
     if (cut_in_block) {  // one cause: the tape was cut or read short, so the program has no end either
         bool open = state_ == State::program;
-        v_.finding(program_finding("incomplete-block", last_block_where_, last_block_ordinal_,
-                                   std::string("the tape ends in the middle of a block: its end of block (LF) never "
-                                               "came") +
-                                       (open ? ", nor the end of program" : "")));
+        report(program_finding("incomplete-block", last_block_where_, last_block_ordinal_,
+                               std::string("the tape ends in the middle of a block: its end of block (LF) never "
+                                           "came") +
+                                   (open ? ", nor the end of program" : "")));
         state_ = State::after_end;
     }
     if (state_ == State::program) unterminated();
@@ -168,7 +189,7 @@ void Loader::find(std::string_view rule, std::size_t offset, std::uint64_t block
     const Rule* r = find_rule(rule);
     if (r && !rule_applies(*r, rules_->dialect)) return;
     if (block && block == blk_.ordinal && blk_.damaged) return;  // the bad frame read past is the one cause
-    v_.finding(program_finding(rule, at(offset), block, std::move(message)));
+    report(program_finding(rule, at(offset), block, std::move(message)));
 }
 
 std::size_t Loader::skip_blanks(std::size_t i, std::size_t e) const {

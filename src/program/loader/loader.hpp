@@ -6,10 +6,13 @@
 #pragma once
 
 #include <algorithm>
+#include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "program/chars.hpp"
@@ -39,7 +42,8 @@ public:
 private:
     enum class State { label, pending, program, after_end, record_ended };
 
-    void choose(Dialect d, std::string reason);
+    void choose(DialectChoice choice);
+    void report(Finding f);
     void feed_lines(std::string_view text, std::span<const std::uint64_t> frame_of);
     void keep(std::string_view text, std::span<const std::uint64_t> frame_of);
     void run(std::string_view text, std::span<const std::uint64_t> frame_of);
@@ -64,6 +68,7 @@ private:
 
     std::size_t block(std::size_t i, std::size_t e);
     std::size_t block_head(std::size_t i, std::size_t end);
+    bool stops_program(const Block& b) const;
     std::size_t block_item(std::size_t i, std::size_t end);
     std::size_t letters(std::size_t i, std::size_t end);
     std::size_t block_end(std::size_t i, std::size_t e) const;
@@ -93,6 +98,14 @@ private:
 
     ProgramVisitor& v_;
     LoadOptions options_;
+    // Two dialects close: the runner-up reads the same text, and what it finds (rule, byte) is kept
+    // here until this reading has passed it; a finding of this reading stands only if it is there too.
+    struct SecondFindings : ProgramVisitor {
+        std::set<std::pair<std::string, std::uint64_t>> found;
+        void finding(const Finding& f) override { found.emplace(f.id(), f.where.byte.value_or(0)); }
+    };
+    std::unique_ptr<SecondFindings> second_found_;
+    std::unique_ptr<Loader> second_;
     const DialectRules* rules_ = nullptr;
     bool linuxcnc_ = false;
     std::string sniff_;  // automatic: the text held until the dialect is chosen, and its frames
@@ -115,7 +128,9 @@ private:
     bool any_program_ = false;
     bool after_end_started_ = false;
     bool last_line_was_block_ = false;
-    Program pending_header_;  // a '%' whose program starts with its first block
+    bool last_block_stops_ = false;   // the last block stops the program without an end code
+    bool local_subprograms_ = false;  // Haas: the program calls blocks after its M30 (M97 P)
+    Program pending_header_;          // a '%' whose program starts with its first block
     bool pending_from_label_ = false;
     Location program_start_, last_block_where_;
     std::uint64_t last_block_ordinal_ = 0;

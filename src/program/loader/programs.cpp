@@ -39,6 +39,12 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
                 blocks_in_line(first, e);
                 return;
             }
+            if (!blank && local_subprograms_ && !after_end_started_ && text_[first] == 'N' && first + 1 < e &&
+                is_digit(text_[first + 1])) {  // Haas: M97 Pn calls the block Nn after M30, up to its M99
+                state_ = State::program;
+                blocks_in_line(first, e);
+                return;
+            }
             after_end_line(b, blank, whole);
             return;
         case State::record_ended:  // after the end of record nothing is read
@@ -135,6 +141,13 @@ void Loader::open_pending(std::size_t pct, std::size_t e, bool from_label) {
                  "'%%' marks the physical start of the tape only before the first program (§1.8)");
         i = skip_blanks(i + 1, e);
     }
+    if (program_number_at(i, e)) {  // Fanuc's "%O1200(TOKARKA)": the program's first block on the '%' line
+        p.number = program_number(i, e);
+        p.numbered_by_block = true;
+        start(std::move(p));
+        blocks_in_line(i, e);
+        return;
+    }
     std::string number;
     bool odd = false;
     for (; i < e; ++i) {
@@ -166,7 +179,7 @@ void Loader::close_pending_empty() {
 
 void Loader::start(Program p) {
     any_program_ = true;
-    after_end_started_ = false;
+    after_end_started_ = last_block_stops_ = local_subprograms_ = false;
     program_start_ = p.start;
     last_block_ordinal_ = 0;
     state_ = State::program;
@@ -196,13 +209,19 @@ bool Loader::program_number_at(std::size_t i, std::size_t e) const {
     return (text_[i] == 'O' || text_[i] == ':') && is_digit(text_[i + 1]);
 }
 
+// A program that ends without its end code. Fanuc's that stops on a #3000 alarm in its last block and
+// LinuxCNC's subroutine file (o<name> sub ... endsub, called by name) have ended all the same.
 void Loader::unterminated() {
+    if (last_block_stops_) {
+        state_ = State::after_end;
+        return;
+    }
     bool blocks = last_block_ordinal_ != 0;
     std::string ends = rules_->dialect == Dialect::fanuc      ? "M02, M30 or M99"
                        : rules_->dialect == Dialect::linuxcnc ? "M2, M30 or a closing '%'"
                                                               : "M02 or M30 (§1.9)";
-    v_.finding(program_finding("program-end", blocks ? last_block_where_ : program_start_, last_block_ordinal_,
-                               "the program does not end with " + ends));
+    report(program_finding("program-end", blocks ? last_block_where_ : program_start_, last_block_ordinal_,
+                           "the program does not end with " + ends));
     state_ = State::after_end;
 }
 
