@@ -82,7 +82,7 @@ private:
     void finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from);
     bool feed_five_track(std::span<const Frame> frames, DecodeResult& out);  // decode_five_track.cpp
     void put_held_cr(DecodeResult& out);
-    void note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out);
+    std::size_t note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out);
     void after_blanks(Frame f, FrameKind kind, DecodeResult& out);
     void block_start_blanks(DecodeResult& out);
     void blank_run(std::uint64_t from, std::uint64_t n, const std::string& where, DecodeResult& out);

@@ -198,21 +198,23 @@ void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t posit
 }
 
 // Blank runs are found with memchr, so a clean tape pays one pass of it; the frame before a run and the
-// one after it decide whether the run stands inside a block.
-void Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out) {
-    std::size_t i = 0, n = frames.size();
+// one after it decide whether the run stands inside a block. Returns where the chunk's diagnostics
+// begin in out.diagnostics.
+std::size_t Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out) {
+    std::size_t from = out.diagnostics.size(), i = 0, n = frames.size();
     while (i < n) {
         const void* z = std::memchr(frames.data() + i, 0, n - i);
         std::size_t at = z ? static_cast<std::size_t>(static_cast<const Frame*>(z) - frames.data()) : n;
         for (std::size_t k = i; k < at; ++k)
             if (FrameKind kind = code_.kind(frames[k]); kind != FrameKind::rubout) after_blanks(frames[k], kind, out);
-        if (at == n) return;
+        if (at == n) break;
         std::size_t end = at;
         while (end < n && frames[end] == 0) ++end;
         if (before_blanks_ != Before::nothing && !blank_frames_) blank_from_ = base + at;
         if (before_blanks_ != Before::nothing) blank_frames_ += end - at;
         i = end;
     }
+    return from;
 }
 
 // The frame after blank tape (or after none): inside a block any blank run is said; after an end of
@@ -268,9 +270,7 @@ void Decoder::blank_run(std::uint64_t from, std::uint64_t n, const std::string& 
 bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     if (stopped_) return false;
     if (code_.five_track_table()) return feed_five_track(frames, out);  // once a chunk: ISO and EIA pay nothing
-    std::size_t diagnostics_from = out.diagnostics.size();
-    note_blanks(frames, next_index_, out);
-    bool blanks_noted = out.diagnostics.size() > diagnostics_from;
+    std::size_t diagnostics_from = note_blanks(frames, next_index_, out);
     std::size_t from = out.text.size(), positions_from = out.frame_of.size();
     std::size_t w = from;
     bool marked = false;  // a bad_sentinel stored: known here, so no search of the text for one
@@ -323,7 +323,7 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     out.text.resize(w);
     next_index_ += frames.size();
     if (stopped_) out.complete = false;
-    if (blanks_noted) in_tape_order(out.diagnostics, diagnostics_from, stopped_);
+    if (out.diagnostics.size() > diagnostics_from) in_tape_order(out.diagnostics, diagnostics_from, stopped_);
     if (marked || options_.charset == Charset::koi7) finish_text(out, from, positions_from);
     return !stopped_;
 }
