@@ -151,7 +151,7 @@ std::size_t Loader::block_item(std::size_t i, std::size_t end) {
     if (c == ';' && rules_->semicolon_comment) {
         if (comments_used_ == blk_.comments.size()) blk_.comments.emplace_back();
         Comment& k = blk_.comments[comments_used_++];
-        k.text.assign(text_.substr(i + 1, end - i - 1));
+        k.text.assign(trim_right(text_.substr(i + 1, end - i - 1)));  // without the CR of a CR LF line
         k.where = at(i);
         k.semicolon = true;
         return end;
