@@ -1,5 +1,6 @@
 // tape blocks: the programs on a tape, one line per block (кадр), or JSON for other programs.
 
+#include "cli/globals.hpp"
 #include "cli/json.hpp"
 #include "cli/messages.hpp"
 #include "cli/outputs.hpp"
