@@ -39,4 +39,24 @@ struct CodeMeaning {
 /// the table names it not (a code the standard leaves undefined, a machine builder's M code).
 std::vector<CodeMeaning> code_meanings(Dialect d, char letter, std::string_view value);
 
+struct Block;
+
+/// What a program's blocks say about its machine, fed block by block: a lathe when it moves X and Z
+/// and never Y and writes what only lathes take (U W, G50 S, four-digit T0101, G18, G7), a mill when
+/// Y moves or it selects G17 or a length offset with H. Undecided (Machine::any) until one side has
+/// spoken and the other has not.
+class MachineEvidence {
+public:
+    void block(const Block& b);
+    Machine machine() const;
+
+private:
+    unsigned lathe_ = 0, mill_ = 0;
+};
+
+/// The meaning of each G and M word of block b in dialect d, on the machine given: "G90 outer or inner
+/// diameter cutting cycle (G code system A)", both meanings named when the machine is undecided and
+/// they differ. Russian names with russian. Codes the table does not name are left out.
+std::string explain_codes(const Block& b, Dialect d, Machine machine, bool russian);
+
 }  // namespace tape

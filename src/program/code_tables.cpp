@@ -10,10 +10,12 @@
 
 #include <algorithm>
 #include <charconv>
+#include <initializer_list>
 #include <optional>
 #include <span>
 
 #include "tape/functions.hpp"
+#include "tape/program.hpp"
 
 namespace tape {
 namespace {
@@ -457,6 +459,52 @@ std::vector<CodeMeaning> code_meanings(Dialect d, char letter, std::string_view 
         if (c.letter == letter && c.value == v) out.push_back({c.machine, std::string(c.en), std::string(c.ru)});
     if (const CodeRange* r = range_of(t, letter, v); out.empty() && r && !r->en.empty())
         out.push_back({Machine::any, std::string(r->en), std::string(r->ru)});
+    return out;
+}
+
+// The arguments of a macro call (G65, G66) are letters of its own: they say nothing of the machine.
+void MachineEvidence::block(const Block& b) {
+    auto has_g = [&](std::initializer_list<long long> codes) {
+        return std::any_of(b.words.begin(), b.words.end(), [&](const Word& w) {
+            return w.address == 'G' && w.integer() &&
+                   std::find(codes.begin(), codes.end(), *w.integer()) != codes.end();
+        });
+    };
+    if (has_g({65, 66})) return;
+    bool spindle_limit =
+        has_g({50}) && std::any_of(b.words.begin(), b.words.end(), [](const Word& w) { return w.address == 'S'; });
+    lathe_ += spindle_limit || has_g({18, 7});
+    mill_ += has_g({17});
+    for (const auto& w : b.words) {
+        if (!w.known) continue;
+        mill_ += w.address == 'Y' || w.address == 'H';
+        lathe_ += w.address == 'U' || w.address == 'W' ||
+                  (w.address == 'T' && !w.has_point() && !w.macro && w.digits().size() == 4);
+    }
+}
+
+Machine MachineEvidence::machine() const {
+    if (lathe_ && !mill_) return Machine::lathe;
+    if (mill_ && !lathe_) return Machine::mill;
+    return Machine::any;
+}
+
+std::string explain_codes(const Block& b, Dialect d, Machine machine, bool russian) {
+    std::string out;
+    for (const auto& w : b.words) {
+        if ((w.address != 'G' && w.address != 'M') || !w.known || w.macro || w.sign) continue;
+        std::vector<CodeMeaning> all = code_meanings(d, w.address, code_value(std::string_view(w.text).substr(1)));
+        std::string named;
+        for (const auto& m : all) {
+            if (machine != Machine::any && m.machine != Machine::any && m.machine != machine) continue;
+            std::string where;
+            if (machine == Machine::any && m.machine != Machine::any && all.size() > 1)
+                where = m.machine == Machine::lathe ? (russian ? " (токарные)" : " (lathe)")
+                                                    : (russian ? " (фрезерные)" : " (mill)");
+            named += (named.empty() ? "" : " / ") + (russian ? m.ru : m.en) + where;
+        }
+        if (!named.empty()) out += (out.empty() ? "" : ", ") + w.text + " " + named;
+    }
     return out;
 }
 
