@@ -114,19 +114,53 @@ std::string counts_text(const std::vector<long>& copies) {
     return s;
 }
 
+// Per read: how many frames beside the run (0, 1 or 2) it reads as the run's frame where most reads have
+// another. The alignment paired each with the frame most reads have there, but it may as well be a copy
+// of the run (and the other frame lost): "00 0000" against "00 4 000" is a drop of the 4, not a 4 read
+// as 0 and a 0 lost. Such a read's count may be that much higher.
+std::vector<long> copies_beside(const VoteContext& v, std::size_t first, std::size_t end, Frame value) {
+    std::vector<long> out(v.a.reads(), 0);
+    for (std::size_t c : {first - 1, end}) {
+        if (c < v.data_from || c >= v.data_to || column_value(v, c) == value) continue;
+        for (std::size_t r = 0; r < v.a.reads(); ++r) {
+            auto f = frame_at(v.a, v.reads, c, r);
+            out[r] += f && v.heard(c, r) && *f == value;
+        }
+    }
+    return out;
+}
+
+// How likely a read that has `seen` copies, and up to `beside` more frames that may be copies, makes a
+// run of `punched`: the likeliest of its possible counts (a read that may be either is not a witness
+// for one length over the other).
+double read_likelihood(long seen, long beside, std::size_t punched, const SlipRates& rates) {
+    double best = 0;
+    for (long k = 0; k <= beside; ++k)
+        best = std::max(best, copies_likelihood(static_cast<std::size_t>(seen + k), punched, rates));
+    return best;
+}
+
+// ", and 1 read has the frame beside it where the others have another: perhaps one more copy".
+std::string beside_text(const std::vector<long>& beside) {
+    auto n = std::count_if(beside.begin(), beside.end(), [](long x) { return x > 0; });
+    if (n == 0) return "";
+    return ", and " + std::to_string(n) + (n == 1 ? " read has" : " reads have") +
+           " this frame beside it where the others have another: perhaps one more copy";
+}
+
 // The length of a data run by likelihood: every length from the fewest copies a read has to the most.
-void weigh_lengths(const VoteContext& v, const RunPrior& prior, const std::vector<long>& copies, RunDecision& d) {
+void weigh_lengths(const VoteContext& v, const RunPrior& prior, const std::vector<long>& copies,
+                   const std::vector<long>& beside, RunDecision& d) {
     long lo = LONG_MAX, hi = 0;
-    for (long n : copies)
-        if (n >= 0) lo = std::min(lo, n), hi = std::max(hi, n);
+    for (std::size_t r = 0; r < copies.size(); ++r)
+        if (copies[r] >= 0) lo = std::min(lo, copies[r]), hi = std::max(hi, copies[r] + beside[r]);
     lo = std::max(lo, 1L);
     double best = -INFINITY, second = -INFINITY;
     for (long n = lo; n <= std::max(hi, lo); ++n) {
         double score = prior.log_chance(d.value, static_cast<std::size_t>(n));
         for (std::size_t r = 0; r < copies.size(); ++r)
             if (copies[r] >= 0)
-                score += std::log(
-                    copies_likelihood(static_cast<std::size_t>(copies[r]), static_cast<std::size_t>(n), v.rates[r]));
+                score += std::log(read_likelihood(copies[r], beside[r], static_cast<std::size_t>(n), v.rates[r]));
         if (score > best) {
             second = best, d.alternative = d.length;
             best = score, d.length = static_cast<std::size_t>(n);
@@ -233,8 +267,9 @@ std::vector<RunDecision> decide_runs(const VoteContext& v) {
         d.readers =
             static_cast<std::size_t>(std::count_if(copies.begin(), copies.end(), [](long x) { return x >= 0; }));
         if (d.readers >= 2) {
-            weigh_lengths(v, prior, copies, d);
-            d.how = counts_text(copies);
+            auto beside = copies_beside(v, c, end, *value);
+            weigh_lengths(v, prior, copies, beside, d);
+            d.how = counts_text(copies) + beside_text(beside);
             out.push_back(std::move(d));
         }
         c = end;
