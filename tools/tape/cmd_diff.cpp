@@ -51,7 +51,7 @@ struct Counts {
 void run(const DiffArgs& a) {
     std::vector<TapeInput> reads = read_all_bounded({a.first, a.second});
     std::string code_name;
-    std::optional<tape::FrameCode> code = code_for_reads(a.code, "even", reads, code_name);
+    std::optional<tape::FrameCode> code = code_for_reads(a.code, "", reads, code_name);
     tape::ReadAlignment al = aligned(reads);
     auto [from, to] = data_columns(al, reads);
     std::string out;

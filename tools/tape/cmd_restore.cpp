@@ -17,7 +17,7 @@ namespace {
 
 struct RestoreArgs {
     std::vector<std::string> reads;
-    std::string output, report, html, format, code = "auto", parity = "even", dialect = "auto", spec;
+    std::string output, report, html, format, code = "auto", parity, dialect = "auto", spec;
     bool json = false, force = false, guess = false, drop_unrelated = false, no_doubts_file = false;
 };
 
@@ -104,9 +104,9 @@ void add_restore(CLI::App& app) {
                     "Tape code: auto (from the longest read), iso, eia, or none (a binary tape: vote only)")
         ->check(CLI::IsMember({"auto", "iso", "eia", "none"}))
         ->capture_default_str();
-    sub->add_option("--parity,-p", a->parity, "Track 8 rule with --code iso: even, odd, mark, space, none")
-        ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}))
-        ->capture_default_str();
+    sub->add_option("--parity,-p", a->parity,
+                    "Track 8 rule of ISO: even (default), odd, mark, space, none; given alone, the code is ISO")
+        ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}));
     add_dialect_option(sub, a->dialect);
     sub->add_option("--spec,-s", a->spec, "Controller format repairs must also fit (ГОСТ 20999-83 §9 notation)");
     sub->add_flag("--guess", a->guess,

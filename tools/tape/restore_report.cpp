@@ -97,10 +97,11 @@ std::optional<tape::FrameCode> code_for_reads(const std::string& code, const std
                                               const std::vector<TapeInput>& reads, std::string& name) {
     name = code;
     if (code == "none") return std::nullopt;
-    if (code != "auto") {
-        auto c = *tape::parse_code(code);
-        auto made = tape::FrameCode::make(c, c == tape::Code::eia ? tape::Parity::odd : *tape::parse_parity(parity),
-                                          globals().table());
+    // A parity given alone names the code too: ISO with that parity, as decode takes it.
+    if (code != "auto" || !parity.empty()) {
+        auto c = code == "auto" ? tape::Code::iso : *tape::parse_code(code);
+        auto p = c == tape::Code::eia ? tape::Parity::odd : *tape::parse_parity(parity.empty() ? "even" : parity);
+        auto made = tape::FrameCode::make(c, p, globals().table());
         name = c == tape::Code::eia ? "EIA" : "ISO with " + std::string(tape::parity_name(made.parity())) + " parity";
         return made;
     }

@@ -32,8 +32,9 @@ std::vector<RereadRange> reread_list(const tape::RestoreResult& r);
 std::string restore_report_text(const RestoreReportInput& in);
 std::string restore_report_json(const RestoreReportInput& in);
 
-/// The code reads are in: iso, eia (with parity for iso), none; or auto: the code of the longest read
-/// (said with -v), none for a tape in no character code (a binary tape). name: how the report says it.
+/// The code reads are in: iso, eia (with parity for iso: empty is even), none; or auto: ISO when a parity
+/// is given, else the code of the longest read (said with -v), none for a tape in no character code (a
+/// binary tape). name: how the report says it.
 std::optional<tape::FrameCode> code_for_reads(const std::string& code, const std::string& parity,
                                               const std::vector<TapeInput>& reads, std::string& name);
 
