@@ -9,7 +9,10 @@
 //   BM_FiveReadsSpeed:         5 reads of 10^6 frames aligned, voted and repaired
 // Corpora: generated programs (some with mistakes of their own), the sample tapes, and real programs
 // and DEC source tapes from ../shared/data/outside* (a note says what is left out where it is absent).
-// RESTORE_BENCH_SCALE (default 1) multiplies the number of tapes and seeds.
+// RESTORE_BENCH_SCALE (default 1) multiplies the number of tapes and seeds; RESTORE_BENCH_SHOW=1 prints each
+// silent error of the many-read runs with the tape, the output, the damage and the problems around it
+// (RESTORE_BENCH_SHOW_START=1: and the output's first data frames); RESTORE_BENCH_DUMP=PREFIX writes the
+// first set with more than 1000 silent errors as PREFIXtape.ptp, PREFIXout.ptp and PREFIXreadN.ptp.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -142,7 +145,64 @@ struct ManyReadsTally {
         ++sets, exact += check.exact, frames += tape::punched_part(t.frames).size();
         silent += check.silently_wrong, flagged += check.flagged_wrong, run_votes += r.run_length_votes;
         for (const auto& p : r.problems) in_doubt += tape::in_doubt(p.status);
-        for (std::size_t x : check.silent_at) classify(t.frames, logs, x);
+        static bool dumped = false;
+        if (const char* dump = std::getenv("RESTORE_BENCH_DUMP"); dump && !dumped && check.silently_wrong > 1000) {
+            dumped = true;
+            auto put = [&](const std::string& name, const std::vector<tape::Frame>& f) {
+                if (FILE* out = std::fopen((std::string(dump) + name).c_str(), "wb")) {
+                    std::fwrite(f.data(), 1, f.size(), out);
+                    std::fclose(out);
+                }
+            };
+            put("tape.ptp", t.frames), put("out.ptp", r.frames);
+            for (std::size_t k = 0; k < rs.size(); ++k) put("read" + std::to_string(k + 1) + ".ptp", rs[k]);
+        }
+        for (std::size_t x : check.silent_at) {
+            classify(t.frames, logs, x);
+            if (std::getenv("RESTORE_BENCH_SHOW")) show(t.frames, logs, r, x);
+        }
+    }
+    // RESTORE_BENCH_SHOW: each silent error with the tape, the output and the damage around it.
+    static void show(const std::vector<tape::Frame>& t, const std::vector<tape::DamageLog>& logs,
+                     const tape::RestoreResult& r, std::size_t x) {
+        auto text = [](std::span<const tape::Frame> f, std::size_t at) {
+            std::string s;
+            for (std::size_t i = at > 12 ? at - 12 : 0; i < std::min(f.size(), at + 12); ++i) {
+                char c = static_cast<char>(f[i] & 0x7f);
+                s += i == at ? "[" : "";
+                s += c == '\n' ? '|' : (c >= 32 && c < 127 ? c : '?');
+                s += i == at ? "]" : "";
+            }
+            return s;
+        };
+        long lead = (tape::punched_part(r.frames).data() - r.frames.data()) - (tape::punched_part(t).data() - t.data());
+        std::fprintf(stderr, "silent at %zu: tape \"%s\" output \"%s\"\n", x, text(t, x).c_str(),
+                     text(r.frames, static_cast<std::size_t>(static_cast<long>(x) + lead)).c_str());
+        if (std::getenv("RESTORE_BENCH_SHOW_START")) {
+            auto b = tape::punched_part(r.frames);
+            std::size_t o = static_cast<std::size_t>(b.data() - r.frames.data());
+            std::fprintf(stderr, "  output from %zu:", o);
+            for (std::size_t i = o; i < o + 6; ++i) std::fprintf(stderr, " %02x", r.frames[i]);
+            std::fprintf(stderr, "\n");
+            for (const auto& p : r.problems)
+                if (p.frame && *p.frame <= o + 6)
+                    std::fprintf(stderr, "  problem at %llu: %s: %s\n", static_cast<unsigned long long>(*p.frame),
+                                 std::string(tape::status_name(p.status)).c_str(), p.reason.c_str());
+            for (std::size_t k = 0; k < logs.size(); ++k)
+                for (const auto& e : logs[k].events)
+                    if (e.original < 60)
+                        std::fprintf(stderr, "  read %zu: %s at %zu (%zu frames)\n", k + 1,
+                                     std::string(tape::damage_kind_name(e.kind)).c_str(), e.original, e.frames);
+        }
+        for (std::size_t k = 0; k < logs.size(); ++k)
+            for (const auto& e : logs[k].events)
+                if (e.original + 12 >= x && e.original <= x + 12)
+                    std::fprintf(stderr, "  read %zu: %s at %zu (%zu frames)\n", k + 1,
+                                 std::string(tape::damage_kind_name(e.kind)).c_str(), e.original, e.frames);
+        for (const auto& p : r.problems)
+            if (p.frame && *p.frame + 12 >= x + static_cast<std::size_t>(lead) + 1 && *p.frame <= x + lead + 13)
+                std::fprintf(stderr, "  problem at %llu: %s: %s\n", static_cast<unsigned long long>(*p.frame),
+                             std::string(tape::status_name(p.status)).c_str(), p.reason.c_str());
     }
     // How many reads read the run of equal frames around tape frame x (and its neighbours) undamaged.
     void classify(const std::vector<tape::Frame>& t, const std::vector<tape::DamageLog>& logs, std::size_t x) {
