@@ -113,7 +113,8 @@ struct RestoreCheck {
     /// concern (it follows the majority of the reads), and is not counted as wrong.
     std::uint64_t blank_ends = 0;
     bool exact = false;                  ///< the data (first to last punched frame) is the tape's
-    std::vector<std::size_t> silent_at;  ///< where each silently wrong frame is, as an index of the tape
+    std::vector<std::size_t> silent_at;  ///< where each silently wrong frame is, as an index of the tape (an added
+                                         ///< frame: the tape frame before it)
 };
 RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& result);
 

@@ -68,8 +68,10 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
                a[static_cast<std::size_t>(t)] == b[static_cast<std::size_t>(o)];
     };
     std::size_t written_before = offset;  // output frames before this column
+    std::size_t tape_at = 0;              // the tape frame of this column, or of the last one before it
     for (std::size_t c = 0; c < al.columns(); ++c) {
         std::int32_t t = al.frame(c, 0), o = al.frame(c, 1);
+        if (t != ReadAlignment::none) tape_at = static_cast<std::size_t>(t);
         if (matched(c)) {
             ++out.right, ++written_before;
             continue;
@@ -83,11 +85,7 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
             Frame left_out = a[static_cast<std::size_t>(t)];
             doubt = d.after[written_before] || run_in_doubt(r, d, written_before, written_before, left_out);
         }
-        if (!doubt)
-            out.silent_at.push_back(
-                static_cast<std::size_t>(a.data() - tape.data()) +
-                static_cast<std::size_t>(
-                    t != ReadAlignment::none ? t : std::max<std::int32_t>(al.frame(c > 0 ? c - 1 : 0, 0), 0)));
+        if (!doubt) out.silent_at.push_back(static_cast<std::size_t>(a.data() - tape.data()) + tape_at);
         ++(doubt ? out.flagged_wrong : out.silently_wrong);
     }
     return out;
