@@ -16,52 +16,81 @@ public:
     Sender(Transport& line, const SendOptions& o, Clock& clock)
         : line_(line), o_(o), clock_(clock), flow_(o.flow.value_or(line.flow())), xonxoff_(o.xon, o.xoff) {}
 
-    SendResult run(std::span<const Frame> frames) {
-        SendResult r;
+    SendResult run(FrameSource& frames) {
         double rate = o_.rate > 0 ? o_.rate : line_.line_rate();
-        auto period = rate > 0 ? frame_period(rate) : Clock::time_point::duration::zero();
+        period_ = rate > 0 ? frame_period(rate) : Clock::time_point::duration::zero();
+        total_ = frames.total();
+        auto chunk = frames.next();
+        check_seven_bit(chunk);  // the first chunk before anything is sent or waited for
         if (o_.wait_xon) wait_for_xon();
-        auto start = clock_.now(), next = start, last_report = start;
-        for (std::size_t i = 0; i < frames.size(); ++i) {
-            if (stopped()) {
-                r.stopped = true;
-                break;
-            }
-            if (period.count() > 0) {
-                if (clock_.now() > next + 100 * period) next = clock_.now();  // after a pause: no burst to catch up
-                clock_.sleep_until(next);
-                next += period;
-            }
-            // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
-            if (flow_ == Flow::xonxoff) take_input(0ms, i);
-            while (blocked() && !stopped()) {
-                report(i, frames.size(), start, true);
-                if (flow_ == Flow::xonxoff)
-                    take_input(50ms, i);
-                else
-                    clock_.sleep_until(clock_.now() + 5ms);
-            }
-            if (stopped()) {
-                r.stopped = true;
-                break;
-            }
-            std::uint8_t byte = line_.seven_bit() ? frames[i] & 0x7F : frames[i];
-            try {
-                line_.write({&byte, 1});
-            } catch (const Error& e) {
-                throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(i + 1) + " of " +
-                                          std::to_string(frames.size()) + ")");
-            }
-            r.sent = i + 1;
-            if (o_.progress && clock_.now() - last_report > 250ms) {
-                last_report = clock_.now();
-                report(i + 1, frames.size(), start, false);
-            }
+        start_ = next_ = last_report_ = clock_.now();
+        while (!chunk.empty() && !stopped()) {
+            for (std::size_t i = 0; i < chunk.size() && !r_.stopped; ++i) send(chunk[i]);
+            if (r_.stopped) break;
+            chunk = frames.next();
+            check_seven_bit(chunk);
         }
-        line_.drain();
-        r.pauses = xonxoff_.pauses();
-        report(r.sent, frames.size(), start, false);
-        return r;
+        // Stopped: what the device still holds is not waited for, and what it says now is no failure
+        // of the run (the stop may well have caused it).
+        try {
+            if (!r_.stopped) line_.drain();
+        } catch (const Error&) {
+            if (!stopped()) throw;
+        }
+        r_.pauses = xonxoff_.pauses();
+        report(r_.sent, false);
+        return r_;
+    }
+
+private:
+    // A 7-bit line's UART makes even parity itself: it can carry only ISO frames whose track 8 is just that.
+    void check_seven_bit(std::span<const Frame> chunk) const {
+        if (!line_.seven_bit()) return;
+        for (std::size_t i = 0; i < chunk.size(); ++i)
+            if (hole_count(chunk[i]) % 2 != 0) {
+                std::uint64_t frame = r_.sent + i + 1;
+                throw Error(Errc::usage, Position{.frame = frame},
+                            line_.name() + ": a 7-bit line carries ISO frames with even parity only, and frame " +
+                                std::to_string(frame) + " is not one (an EIA or damaged tape): use bits=8" +
+                                (r_.sent ? " (" + std::to_string(r_.sent) + " frames were sent)" : ""));
+            }
+    }
+
+    void send(Frame frame) {
+        if (stopped()) return;
+        if (period_.count() > 0) {
+            if (clock_.now() > next_ + 100 * period_) next_ = clock_.now();  // after a pause: no burst to catch up
+            clock_.sleep_until(next_);
+            next_ += period_;
+        }
+        // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
+        if (flow_ == Flow::xonxoff) take_input(0ms);
+        while (blocked() && !stopped()) {
+            report(r_.sent, true);
+            if (flow_ == Flow::xonxoff)
+                take_input(50ms);
+            else
+                clock_.sleep_until(clock_.now() + 5ms);
+        }
+        if (stopped()) return;
+        std::uint8_t byte = line_.seven_bit() ? frame & 0x7F : frame;
+        try {
+            line_.write({&byte, 1});
+        } catch (const Error& e) {
+            if (stopped()) return;  // the stop came first: the run ends as stopped
+            throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(r_.sent + 1) +
+                                      (total_ ? " of " + std::to_string(total_) : std::string()) + ")");
+        }
+        ++r_.sent;
+        if (o_.progress && clock_.now() - last_report_ > 250ms) {
+            last_report_ = clock_.now();
+            report(r_.sent, false);
+        }
+    }
+
+    bool stopped() {
+        if (o_.stop && o_.stop->load()) r_.stopped = true;
+        return r_.stopped;
     }
 
 private:
@@ -70,27 +99,29 @@ private:
     Clock& clock_;
     Flow flow_;
     XonXoff xonxoff_;
-
-    bool stopped() const { return o_.stop && o_.stop->load(); }
+    SendResult r_;
+    Clock::time_point::duration period_{};
+    Clock::time_point start_{}, next_{}, last_report_{};
+    std::uint64_t total_ = 0;
     bool blocked() {
         if (flow_ == Flow::xonxoff) return xonxoff_.paused();
         if (flow_ == Flow::rtscts && line_.modem()) return !line_.modem()->cts();
         return false;
     }
 
-    void take_input(std::chrono::milliseconds wait, std::size_t frame) {
+    void take_input(std::chrono::milliseconds wait) {
         std::uint8_t buf[64];
         ReadResult got = line_.read(buf, wait);
         for (std::size_t k = 0; k < got.count; ++k) xonxoff_.receive(buf[k]);
         if (got.end)
             throw Error(Errc::io,
-                        line_.name() + ": the other side hung up after " + std::to_string(frame) + " frame(s)");
+                        line_.name() + ": the other side hung up after " + std::to_string(r_.sent) + " frame(s)");
     }
 
     void wait_for_xon() {
         auto start = clock_.now();
         while (!xonxoff_.seen_xon() && !stopped()) {
-            take_input(100ms, 0);
+            take_input(100ms);
             // Compared in milliseconds: any xon_timeout fits, where a deadline in nanoseconds could overflow.
             auto waited = std::chrono::duration_cast<std::chrono::milliseconds>(clock_.now() - start);
             if (o_.xon_timeout.count() > 0 && waited >= o_.xon_timeout && !xonxoff_.seen_xon())
@@ -100,10 +131,10 @@ private:
         if (xonxoff_.paused()) xonxoff_ = XonXoff(o_.xon, o_.xoff);
     }
 
-    void report(std::uint64_t done, std::uint64_t total, Clock::time_point start, bool paused) {
+    void report(std::uint64_t done, bool paused) {
         if (!o_.progress) return;
-        double seconds = std::chrono::duration<double>(clock_.now() - start).count();
-        o_.progress(LineProgress{done, total, xonxoff_.pauses(), paused,
+        double seconds = std::chrono::duration<double>(clock_.now() - start_).count();
+        o_.progress(LineProgress{done, total_, xonxoff_.pauses(), paused,
                                  seconds > 0 ? static_cast<double>(done) / seconds : 0});
     }
 };
@@ -120,21 +151,19 @@ std::chrono::steady_clock::duration frame_period(double rate) {
     return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(1.0 / rate));
 }
 
-SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock) {
+SendResult send_frames(Transport& line, FrameSource& frames, const SendOptions& options, Clock& clock) {
     if (options.rate != 0) frame_period(options.rate);  // refused here, before anything is sent
     Flow flow = options.flow.value_or(line.flow());
     if (flow == Flow::rtscts && !line.modem())
         throw Error(Errc::usage, line.name() + ": flow=rtscts, but this device has no modem lines");
     if ((flow == Flow::xonxoff || options.wait_xon) && (options.xon & 0x7F) == (options.xoff & 0x7F))
         throw Error(Errc::usage, "XON and XOFF are the same character");
-    // A 7-bit line's UART makes even parity itself: it can carry only ISO frames whose track 8 is just that.
-    if (line.seven_bit())
-        for (std::size_t i = 0; i < frames.size(); ++i)
-            if (hole_count(frames[i]) % 2 != 0)
-                throw Error(Errc::usage, Position{.frame = i + 1},
-                            line.name() + ": a 7-bit line carries ISO frames with even parity only, and frame " +
-                                std::to_string(i + 1) + " is not one (an EIA or damaged tape): use bits=8");
     return Sender(line, options, clock).run(frames);
+}
+
+SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock) {
+    SpanSource source(frames);
+    return send_frames(line, source, options, clock);
 }
 
 }  // namespace tape

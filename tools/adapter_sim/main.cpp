@@ -17,8 +17,10 @@
 
 #include "adapter_sim/fault_filter.hpp"
 #include "adapter_sim/sim_hardware.hpp"
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
+#include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "cli/run.hpp"
 #include "cli/signals.hpp"
@@ -43,35 +45,34 @@ struct SimArgs {
     throw cli::Exit{cli::io_failure};
 }
 
-int run(const SimArgs& a) {
-    std::vector<std::uint8_t> tape;
-    if (!a.reader.empty()) {
-        auto in = cli::read_tape(a.reader, "");
-        tape.assign(in.frames.begin(), in.frames.end());
-    }
-    std::FILE* punched_out = nullptr;
-    if (!a.punch.empty()) {
-        punched_out = std::fopen(a.punch.c_str(), "wb");
-        if (!punched_out) die(a.punch + ": cannot create: " + std::strerror(errno));
-    }
+// The pseudo-terminal standing for the adapter's CDC port: its master is the adapter's side.
+struct Port {
+    int master = -1, slave = -1;
+    std::string path;
+};
 
-    int master = ::posix_openpt(O_RDWR | O_NOCTTY);
-    if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0)
+Port open_port(const std::string& link) {
+    Port port;
+    port.master = ::posix_openpt(O_RDWR | O_NOCTTY);
+    if (port.master < 0 || ::grantpt(port.master) != 0 || ::unlockpt(port.master) != 0)
         die(std::string("no pseudo-terminal: ") + std::strerror(errno));
-    std::string slave_path = ::ptsname(master);
+    port.path = ::ptsname(port.master);
     // Held open, so that a host closing the port (between runs) does not hang the line up.
-    int slave = ::open(slave_path.c_str(), O_RDWR | O_NOCTTY);
-    if (slave < 0) die(slave_path + ": " + std::strerror(errno));
+    port.slave = ::open(port.path.c_str(), O_RDWR | O_NOCTTY);
+    if (port.slave < 0) die(port.path + ": " + std::strerror(errno));
     termios t{};
-    ::tcgetattr(slave, &t);
+    ::tcgetattr(port.slave, &t);
     ::cfmakeraw(&t);
-    ::tcsetattr(slave, TCSANOW, &t);
-    ::fcntl(master, F_SETFL, O_NONBLOCK);
-    if (!a.link.empty()) {
-        ::unlink(a.link.c_str());
-        if (::symlink(slave_path.c_str(), a.link.c_str()) != 0) die(a.link + ": " + std::strerror(errno));
+    ::tcsetattr(port.slave, TCSANOW, &t);
+    ::fcntl(port.master, F_SETFL, O_NONBLOCK);
+    if (!link.empty()) {
+        ::unlink(link.c_str());
+        if (::symlink(port.path.c_str(), link.c_str()) != 0) die(link + ": " + std::strerror(errno));
     }
+    return port;
+}
 
+tapesim::SimOptions sim_options(const SimArgs& a) {
     tapesim::SimOptions so;
     so.read_rate = a.read_rate;
     so.punch_rate = a.punch_rate;
@@ -85,7 +86,10 @@ int run(const SimArgs& a) {
          {std::pair{&a.no_sprocket_at, tapefw::row_flag::no_sprocket},
           std::pair{&a.mistimed_at, tapefw::row_flag::timing}, std::pair{&a.marginal_at, tapefw::row_flag::marginal}})
         for (auto n : *frames) so.row_flags.emplace_back(n - 1, flag);
-    tapesim::SimHardware hw(tape, so);
+    return so;
+}
+
+tapefw::Identity identity(const SimArgs& a) {
     tapefw::Identity id;
     id.serial = a.serial.c_str();
     // The simulated board tells a row without a sprocket, a mistimed one and a marginal level apart.
@@ -95,101 +99,160 @@ int run(const SimArgs& a) {
         (a.no_punch ? 0 : tapefw::caps::punch));
     id.max_read_rate = static_cast<std::uint16_t>(std::lround(a.read_rate));
     id.max_punch_rate = static_cast<std::uint16_t>(std::lround(a.punch_rate));
-    tapesim::FaultFilter filter(a.faults);
-    std::string out;
-    hw.on_send = [&](const std::uint8_t* b, std::size_t n) {
-        if (out.size() > 65536) return false;  // the host is not reading: the endpoint is full
-        filter.pass(b, n, out);
-        return true;
-    };
-    // The watchdog counts simulated time: a faster clock would take the host's keep-alives for silence.
-    tapefw::Config defaults;
-    defaults.watchdog_ms = static_cast<std::uint16_t>(std::min(65535.0, defaults.watchdog_ms * std::max(1.0, a.speed)));
-    tapefw::Engine engine(hw, id, tapefw::Framing::stream, defaults);
+    return id;
+}
 
-    std::cout << "adapter:" << slave_path << std::endl;
-    auto t0 = std::chrono::steady_clock::now();
-    auto virtual_now = [&] {
-        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * a.speed;
+// One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
+void print_stats(const tapesim::SimHardware& hw, const tapesim::FaultFilter& filter, const tapefw::Engine& engine) {
+    const tapefw::Config& c = hw.config();
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "tape-adapter-sim: stats: tape_position=%llu rows_punched=%llu underruns=%llu late_punches=%llu "
+                  "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
+                  "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
+                  "watchdog_ms=%u\n",
+                  static_cast<unsigned long long>(hw.position()), static_cast<unsigned long long>(hw.punched().size()),
+                  static_cast<unsigned long long>(hw.underruns()), static_cast<unsigned long long>(hw.late_punches()),
+                  static_cast<unsigned long long>(hw.longest_punch_gap_us()),
+                  static_cast<unsigned long long>(filter.desyncs()),
+                  static_cast<unsigned long long>(engine.bad_packets()), c.data_invert, c.lines, c.tracks,
+                  c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us, c.sprocket_timeout_ms, c.watchdog_ms);
+    std::cerr << line;
+}
+
+// The adapter running: its engine and simulated hardware on the port, in simulated time.
+class Simulation {
+public:
+    Simulation(const SimArgs& a, std::vector<std::uint8_t> tape, Port port, std::FILE* punched_out)
+        : a_(a),
+          port_(std::move(port)),
+          punched_out_(punched_out),
+          hw_(tape, sim_options(a)),
+          id_(identity(a)),
+          filter_(a.faults),
+          engine_(hw_, id_, tapefw::Framing::stream, scaled_defaults(a)),
+          step_(static_cast<std::uint64_t>(16e6 / a.read_rate)) {
+        hw_.on_send = [this](const std::uint8_t* b, std::size_t n) {
+            if (out_.size() > 65536) return false;  // the host is not reading: the endpoint is full
+            filter_.pass(b, n, out_);
+            return true;
+        };
+    }
+
+    void run() {
+        std::cout << "adapter:" << port_.path << std::endl;
+        t0_ = std::chrono::steady_clock::now();
+        while (!cli::interrupted()) {
+            catch_up();
+            save_punched();
+            if (a_.unplug_after && engine_.rows_read() >= a_.unplug_after) {
+                std::cerr << "tape-adapter-sim: unplugged after " << engine_.rows_read() << " frames\n";
+                break;
+            }
+            send_out();
+            wait_for_host();
+        }
+    }
+
+    void finish() {
+        if (punched_out_) std::fclose(punched_out_);
+        ::close(port_.master);
+        ::close(port_.slave);
+        if (!a_.link.empty()) ::unlink(a_.link.c_str());
+        if (filter_.dropped() || filter_.corrupted())
+            std::cerr << "tape-adapter-sim: " << filter_.dropped() << " packet(s) dropped, " << filter_.corrupted()
+                      << " damaged, of " << filter_.rows_packets() << " ROWS packets\n";
+        if (a_.stats) print_stats(hw_, filter_, engine_);
+    }
+
+private:
+    // The watchdog counts simulated time: a faster clock would take the host's keep-alives for silence.
+    static tapefw::Config scaled_defaults(const SimArgs& a) {
+        tapefw::Config defaults;
+        defaults.watchdog_ms =
+            static_cast<std::uint16_t>(std::min(65535.0, defaults.watchdog_ms * std::max(1.0, a.speed)));
+        return defaults;
+    }
+    std::uint64_t virtual_now() const {
+        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() * a_.speed;
         return static_cast<std::uint64_t>(s * 1e6);
-    };
+    }
+    void take_input() {
+        std::uint8_t buf[4096];
+        ssize_t n = ::read(port_.master, buf, sizeof buf);
+        if (n > 0) engine_.receive(buf, static_cast<std::size_t>(n));
+    }
+    // The engine's turn, then the chad box, which fills at an exact row: looked at after each turn, which
+    // punches one row at most.
+    void turn() {
+        engine_.poll();
+        hw_.after_poll();
+        if (a_.chad_full_after && hw_.punched().size() >= a_.chad_full_after)
+            hw_.forced_status |= tapefw::status::chad_full;
+    }
     // The engine polls between rows, as the firmware's main loop does: rows are given in small steps.
-    const std::uint64_t step = static_cast<std::uint64_t>(16e6 / a.read_rate);
-    std::size_t punched_written = 0;
-    while (!cli::interrupted()) {
+    // Catching up after the process was not scheduled, the host's packets that came meanwhile are taken
+    // step by step, as the board's USB interrupt would take them, so that the watchdog does not count the
+    // simulator's own pause as the host's silence.
+    void catch_up() {
         std::uint64_t target = virtual_now();
-        // The chad box fills at an exact row: looked at after each turn, which punches one row at most.
-        auto chad = [&] {
-            if (a.chad_full_after && hw.punched().size() >= a.chad_full_after)
-                hw.forced_status |= tapefw::status::chad_full;
-        };
-        // Catching up after the process was not scheduled: the host's packets that came meanwhile are
-        // taken step by step, as the board's USB interrupt would take them, so that the watchdog does
-        // not count the simulator's own pause as the host's silence.
-        auto take_input = [&] {
-            std::uint8_t buf[4096];
-            ssize_t n = ::read(master, buf, sizeof buf);
-            if (n > 0) engine.receive(buf, static_cast<std::size_t>(n));
-        };
-        while (hw.now() < target) {
+        while (hw_.now() < target) {
             take_input();
-            hw.advance_to(std::min(target, hw.now() + step), engine);
-            engine.poll();
-            hw.after_poll();
-            chad();
+            hw_.advance_to(std::min(target, hw_.now() + step_), engine_);
+            turn();
         }
-        engine.poll();
-        hw.after_poll();
-        chad();
-        if (punched_out && hw.punched().size() > punched_written) {
-            std::fwrite(hw.punched().data() + punched_written, 1, hw.punched().size() - punched_written, punched_out);
-            std::fflush(punched_out);
-            punched_written = hw.punched().size();
-        }
-        if (a.unplug_after && engine.rows_read() >= a.unplug_after) {
-            std::cerr << "tape-adapter-sim: unplugged after " << engine.rows_read() << " frames\n";
-            break;
-        }
-        while (!out.empty()) {
-            ssize_t n = ::write(master, out.data(), out.size());
+        turn();
+    }
+    void save_punched() {
+        if (!punched_out_ || hw_.punched().size() <= punched_written_) return;
+        std::fwrite(hw_.punched().data() + punched_written_, 1, hw_.punched().size() - punched_written_, punched_out_);
+        std::fflush(punched_out_);
+        punched_written_ = hw_.punched().size();
+    }
+    void send_out() {
+        while (!out_.empty()) {
+            ssize_t n = ::write(port_.master, out_.data(), out_.size());
             if (n <= 0) break;
-            out.erase(0, static_cast<std::size_t>(n));
-        }
-        std::uint64_t next = hw.next_event();
-        std::uint64_t now = virtual_now();
-        int wait_ms = next > now ? static_cast<int>(std::min<double>(5, (next - now) / 1000.0 / a.speed)) : 0;
-        pollfd p{master, static_cast<short>(POLLIN | (out.empty() ? 0 : POLLOUT)), 0};
-        if (::poll(&p, 1, wait_ms) > 0 && (p.revents & POLLIN)) {
-            std::uint8_t buf[4096];
-            ssize_t n = ::read(master, buf, sizeof buf);
-            if (n > 0) engine.receive(buf, static_cast<std::size_t>(n));
+            out_.erase(0, static_cast<std::size_t>(n));
         }
     }
-    if (punched_out) std::fclose(punched_out);
-    ::close(master);
-    ::close(slave);
-    if (!a.link.empty()) ::unlink(a.link.c_str());
-    if (filter.dropped() || filter.corrupted())
-        std::cerr << "tape-adapter-sim: " << filter.dropped() << " packet(s) dropped, " << filter.corrupted()
-                  << " damaged, of " << filter.rows_packets() << " ROWS packets\n";
-    if (a.stats) {
-        // One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
-        const tapefw::Config& c = hw.config();
-        char line[512];
-        std::snprintf(
-            line, sizeof line,
-            "tape-adapter-sim: stats: tape_position=%llu rows_punched=%llu underruns=%llu late_punches=%llu "
-            "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
-            "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
-            "watchdog_ms=%u\n",
-            static_cast<unsigned long long>(hw.position()), static_cast<unsigned long long>(hw.punched().size()),
-            static_cast<unsigned long long>(hw.underruns()), static_cast<unsigned long long>(hw.late_punches()),
-            static_cast<unsigned long long>(hw.longest_punch_gap_us()),
-            static_cast<unsigned long long>(filter.desyncs()), static_cast<unsigned long long>(engine.bad_packets()),
-            c.data_invert, c.lines, c.tracks, c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us,
-            c.sprocket_timeout_ms, c.watchdog_ms);
-        std::cerr << line;
+    void wait_for_host() {
+        std::uint64_t next = hw_.next_event(), now = virtual_now();
+        int wait_ms = next > now ? static_cast<int>(std::min<double>(5, (next - now) / 1000.0 / a_.speed)) : 0;
+        pollfd p{port_.master, static_cast<short>(POLLIN | (out_.empty() ? 0 : POLLOUT)), 0};
+        if (::poll(&p, 1, wait_ms) > 0 && (p.revents & POLLIN)) take_input();
     }
+
+    const SimArgs& a_;
+    Port port_;
+    std::FILE* punched_out_;
+    tapesim::SimHardware hw_;
+    tapefw::Identity id_;
+    tapesim::FaultFilter filter_;
+    tapefw::Engine engine_;
+    std::string out_;
+    std::uint64_t step_;
+    std::size_t punched_written_ = 0;
+    std::chrono::steady_clock::time_point t0_;
+};
+
+int run(const SimArgs& a) {
+    std::vector<std::uint8_t> tape;
+    if (!a.reader.empty()) {
+        auto in = cli::read_tape(a.reader, "");
+        tape.assign(in.frames.begin(), in.frames.end());
+    }
+    std::FILE* punched_out = nullptr;
+    if (!a.punch.empty()) {
+        if (a.punch == "-")
+            cli::fail("--punch -", tape::Errc::usage, "standard output carries the device string: give a file");
+        cli::claim_output(a.punch);
+        punched_out = std::fopen(a.punch.c_str(), "wb");
+        if (!punched_out) die(a.punch + ": cannot create: " + std::strerror(errno));
+    }
+    Simulation sim(a, std::move(tape), open_port(a.link), punched_out);
+    sim.run();
+    sim.finish();
     return cli::ok;
 }
 

@@ -87,8 +87,8 @@ public:
                     ", \"first_frame\": " + json_number(p.start.frame) + ", \"line\": " + std::to_string(p.start.line) +
                     ", \"blocks\": [";
         else
-            out_ += "program " + (p.number ? *p.number : "(no number)") + " at " + position_text(p.start, from_tape_) +
-                    "\n";
+            out_ += "program " + (p.number ? tape::visible(*p.number) : "(no number)") + " at " +
+                    position_text(p.start, from_tape_) + "\n";
         ++programs_;
     }
     void block(const tape::Block& b) override {
@@ -116,7 +116,7 @@ public:
             out_ += "]}";
         } else {
             std::string pos = position_text(b.where, from_tape_);
-            out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + b.text();
+            out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + tape::visible(b.text());
             std::string flagged;
             for (const auto& w : b.words)
                 if (!w.known) flagged += (flagged.empty() ? "" : " ") + tape::visible(w.text);

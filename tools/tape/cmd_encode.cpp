@@ -50,25 +50,14 @@ void run(const EncodeArgs& a) {
     }
     auto writer = format.make_writer(tape::ImageWriteOptions{&code});
     std::string picture;
-    std::unique_ptr<tape::FileSource> source;
-    try {
-        source = std::make_unique<tape::FileSource>(a.input);
-    } catch (const tape::Error& e) {
-        fail(in_name, e);
-    }
+    auto source = open_source(a.input);
     // The text is read, encoded and written a chunk at a time; the output is created once the first
     // chunk has encoded, so that a text the code cannot carry leaves nothing behind.
     std::unique_ptr<tape::OutputFile> out;
     std::uint64_t written = 0;
     auto emit = [&](const std::vector<tape::Frame>& frames, bool last) {
         written += frames.size();
-        if (!out) {
-            try {
-                out = std::make_unique<tape::OutputFile>(a.output, a.force);
-            } catch (const tape::Error& e) {
-                fail(a.output == "-" ? "stdout" : a.output, e);
-            }
-        }
+        if (!out) out = open_output(a.output, a.force);
         try {
             if (format.bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
                 out->write(std::string_view(reinterpret_cast<const char*>(frames.data()), frames.size()));

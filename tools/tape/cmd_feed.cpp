@@ -34,7 +34,7 @@ void run(const FeedArgs& a) {
     if ((o.xon & 0x7F) == (o.xoff & 0x7F))
         fail("", tape::Errc::usage,
              "--xon '" + a.xon + "' and --xoff '" + a.xoff + "' are the same character (bit 8 is not compared)");
-    std::vector<tape::Frame> frames = frames_to_send(a.input, a.profile);
+    SendInput frames = open_frames_to_send(a.input, a.profile);  // read as it is sent
     deliver_or_fail(Delivery{.device = a.device,
                              .use = tape::DeviceUse::both,
                              .format = a.profile.format,

@@ -1,5 +1,6 @@
 #include "send.hpp"
 
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
@@ -38,11 +39,12 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
         ->capture_default_str();
 }
 
-std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
-    std::string name = display_name(path);
+SendInput open_frames_to_send(const std::string& path, const FeedProfile& p) {
+    SendInput in;
+    in.name_ = display_name(path);
     tape::InputOptions io = input_options(p.choice, p.format, p.kind);
     io.detect_code = false;  // an image is sent as it is
-    auto input = open_input(path, io);
+    in.input_ = open_input(path, io);
     tape::FeedOptions o;
     o.encode.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
     o.encode.parity = io.decode.parity;
@@ -57,18 +59,43 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
     o.dialect = tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic);
     try {
         tape::DialectChoice chosen;
-        auto frames = tape::frames_to_send(*input, o, &chosen);
-        if (!input->is_image()) say_dialect(name, chosen);
-        return frames;
+        in.frames_ = tape::feed_source(*in.input_, o, &chosen);
+        if (!in.input_->is_image()) {
+            say_dialect(in.name_, chosen);
+            in.code_ = tape::FrameCode::make(o.encode.code, o.encode.parity, o.encode.eia_table);
+        }
     } catch (const tape::Error& e) {
-        fail(name, e);
+        fail(in.name_, e);
     }
+    return in;
+}
+
+SendInput open_image_to_send(const std::string& path, const std::string& format_id) {
+    FeedProfile p;
+    p.format = format_id;
+    p.kind = "image";
+    return open_frames_to_send(path, p);
+}
+
+std::span<const tape::Frame> SendInput::next() {
+    std::span<const tape::Frame> chunk;
+    try {
+        chunk = frames_->next();
+    } catch (const tape::Error& e) {
+        fail(name_, e);
+    }
+    if (keep_) {
+        if (kept_.size() + chunk.size() > tape::max_tape_frames)
+            fail(name_, tape::Errc::usage, std::string(tape::too_long_text));
+        kept_.insert(kept_.end(), chunk.begin(), chunk.end());
+    }
+    return chunk;
 }
 
 namespace {
 
-void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o,
-                  const std::string& verb, bool progress_forced) {
+void send_or_fail(tape::Transport& line, SendInput& frames, tape::SendOptions o, const std::string& verb,
+                  bool progress_forced) {
     o.stop = &interrupted();
     ProgressLine progress(verb, progress_forced);
     o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
@@ -79,8 +106,8 @@ void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, ta
         fail("", e);
     }
     if (r.stopped) {
-        say(line.name(),
-            "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
+        say(line.name(), "stopped after " + std::to_string(r.sent) +
+                             (frames.total() ? " of " + std::to_string(frames.total()) : std::string()) + " frames");
         throw Exit{interrupted_status};
     }
     if (globals().verbosity > 0)
@@ -88,18 +115,39 @@ void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, ta
             verb + " " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
 }
 
-// Holes pictures are annotated with the characters of the code the frames are in, when one fits.
-std::string image_text(const tape::ImageFormat& format, std::span<const tape::Frame> frames) {
-    std::optional<tape::FrameCode> code;
-    if (auto detected = tape::detect_code(frames).code)
-        code = tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
-    return format.write(frames, tape::ImageWriteOptions{code ? &*code : nullptr});
+// The code a holes picture shows the frames' characters in: a text program's own, or the one detected
+// from the start of an image (its read-ahead, the whole of most tapes).
+std::optional<tape::FrameCode> picture_code(tape::Input& input, const std::optional<tape::FrameCode>& own) {
+    if (own) return own;
+    if (!input.is_image()) return std::nullopt;
+    if (auto detected = input.detect().code)
+        return tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
+    return std::nullopt;
+}
+
+// A file: device gets the image written as the frames come, made final at the end (atomically).
+std::uint64_t write_image_file(const std::string& path, const tape::ImageFormat& format, SendInput& frames,
+                               const std::optional<tape::FrameCode>& code, bool force) {
+    auto writer = format.make_writer(tape::ImageWriteOptions{code ? &*code : nullptr});
+    tape::OutputFile out(path, force);
+    std::uint64_t written = 0;
+    std::string piece;
+    writer->write({}, piece);  // the format's header, also for an empty tape
+    for (auto chunk = frames.next(); !chunk.empty(); chunk = frames.next()) {
+        writer->write(chunk, piece);
+        out.write(piece);
+        piece.clear();
+        written += chunk.size();
+    }
+    writer->finish(piece);
+    out.write(piece);
+    out.commit();
+    return written;
 }
 
 }  // namespace
 
-void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, tape::SendOptions o,
-                     const std::string& verb) {
+void deliver_or_fail(const Delivery& to, SendInput& frames, tape::SendOptions o, const std::string& verb) {
     if (auto path = file_device_path(to.device)) {
         // The messages match the file backend's own, as a device string would get them.
         if (o.flow == tape::Flow::rtscts)
@@ -108,15 +156,22 @@ void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, ta
         const tape::ImageFormat* format =
             to.format.empty() ? tape::image_format_for_path(*path) : tape::find_image_format(to.format);
         if (!format) format = &tape::default_image_format();
-        // The default Ctrl-C handling stays: it removes the temporary, so the file is whole or absent.
+        claim_output(*path);
+        std::optional<tape::FrameCode> code;
         try {
-            tape::write_file_atomic(*path, image_text(*format, frames), to.force);
+            code = picture_code(*frames.input_for_code(), frames.code());
+        } catch (const tape::Error& e) {
+            fail(frames.name(), e);
+        }
+        // The default Ctrl-C handling stays: it removes the temporary, so the file is whole or absent.
+        std::uint64_t written = 0;
+        try {
+            written = write_image_file(*path, *format, frames, code, to.force);
         } catch (const tape::Error& e) {
             fail(to.device, e);
         }
         if (globals().verbosity > 0)
-            say(to.device,
-                verb + " " + std::to_string(frames.size()) + " frames as a " + std::string(format->id) + " image");
+            say(to.device, verb + " " + std::to_string(written) + " frames as a " + std::string(format->id) + " image");
         return;
     }
     install_interrupt_handler();
