@@ -1,5 +1,6 @@
 // Sending frames over a line: pacing, XON/XOFF or RTS/CTS, exactly once each, in order.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -25,7 +26,7 @@ public:
         if (o_.wait_xon) wait_for_xon();
         start_ = next_ = last_report_ = clock_.now();
         while (!chunk.empty() && !stopped()) {
-            for (std::size_t i = 0; i < chunk.size() && !r_.stopped; ++i) send(chunk[i]);
+            for (std::size_t i = 0; i < chunk.size() && !stopped();) i += send_burst(chunk, i);
             if (r_.stopped) break;
             chunk = frames.next();
             check_seven_bit(chunk);
@@ -38,11 +39,26 @@ public:
             if (!stopped()) throw;
         }
         r_.pauses = xonxoff_.pauses();
-        report(r_.sent, false);
+        report(false);
         return r_;
     }
 
 private:
+    Transport& line_;
+    const SendOptions& o_;
+    Clock& clock_;
+    Flow flow_;
+    XonXoff xonxoff_;
+    SendResult r_;
+    Clock::time_point::duration period_{};
+    Clock::time_point start_{}, next_{}, last_report_{};
+    std::uint64_t total_ = 0;
+
+    bool stopped() {
+        if (o_.stop && o_.stop->load()) r_.stopped = true;
+        return r_.stopped;
+    }
+
     // A 7-bit line's UART makes even parity itself: it can carry only ISO frames whose track 8 is just that.
     void check_seven_bit(std::span<const Frame> chunk) const {
         if (!line_.seven_bit()) return;
@@ -56,53 +72,58 @@ private:
             }
     }
 
-    void send(Frame frame) {
-        if (stopped()) return;
-        if (period_.count() > 0) {
-            if (clock_.now() > next_ + 100 * period_) next_ = clock_.now();  // after a pause: no burst to catch up
+    // Paced, held while the other side says so, then a burst from chunk[from]. How many frames went
+    // (none once stopped).
+    std::size_t send_burst(std::span<const Frame> chunk, std::size_t from) {
+        if (period_.count() > 0 || o_.block_delay.count() > 0) {
+            // After a pause: no burst to catch up.
+            if (clock_.now() > next_ + 100 * period_ + o_.block_delay) next_ = clock_.now();
             clock_.sleep_until(next_);
-            next_ += period_;
         }
         // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
         if (flow_ == Flow::xonxoff) take_input(0ms);
+        bool waited = false;
         while (blocked() && !stopped()) {
-            report(r_.sent, true);
+            waited = true;
+            report(true);
             if (flow_ == Flow::xonxoff)
                 take_input(50ms);
             else
                 clock_.sleep_until(clock_.now() + 5ms);
         }
-        if (stopped()) return;
-        std::uint8_t byte = line_.seven_bit() ? frame & 0x7F : frame;
+        if (stopped()) return 0;
+        if (waited) next_ = clock_.now();  // resumed: paced from now, no burst to catch up the pause
+        std::size_t n = write_burst(chunk, from);
+        if (n == 0) return 0;
+        r_.sent += n;
+        next_ += static_cast<long>(n) * period_;
+        if (o_.block_delay.count() > 0 && chunk[from + n - 1] == o_.block_end) next_ += o_.block_delay;
+        if (o_.progress && clock_.now() - last_report_ > 250ms) {
+            last_report_ = clock_.now();
+            report(false);
+        }
+        return n;
+    }
+
+    // Writes up to a burst of frames from `from`, ending early after an end of block that has a delay
+    // after it. How many went: none when the write failed after a stop (the stop ends the run).
+    std::size_t write_burst(std::span<const Frame> frames, std::size_t from) {
+        std::uint8_t bytes[256];
+        std::size_t n = 0, most = std::min({std::max<std::size_t>(o_.burst, 1), sizeof bytes, frames.size() - from});
+        while (n < most) {
+            Frame f = frames[from + n++];
+            bytes[n - 1] = line_.seven_bit() ? f & 0x7F : f;
+            if (o_.block_delay.count() > 0 && f == o_.block_end) break;
+        }
         try {
-            line_.write({&byte, 1});
+            line_.write({bytes, n});
         } catch (const Error& e) {
-            if (stopped()) return;  // the stop came first: the run ends as stopped
+            if (stopped()) return 0;  // the stop came first: the run ends as stopped
             throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(r_.sent + 1) +
                                       (total_ ? " of " + std::to_string(total_) : std::string()) + ")");
         }
-        ++r_.sent;
-        if (o_.progress && clock_.now() - last_report_ > 250ms) {
-            last_report_ = clock_.now();
-            report(r_.sent, false);
-        }
+        return n;
     }
-
-    bool stopped() {
-        if (o_.stop && o_.stop->load()) r_.stopped = true;
-        return r_.stopped;
-    }
-
-private:
-    Transport& line_;
-    const SendOptions& o_;
-    Clock& clock_;
-    Flow flow_;
-    XonXoff xonxoff_;
-    SendResult r_;
-    Clock::time_point::duration period_{};
-    Clock::time_point start_{}, next_{}, last_report_{};
-    std::uint64_t total_ = 0;
     bool blocked() {
         if (flow_ == Flow::xonxoff) return xonxoff_.paused();
         if (flow_ == Flow::rtscts && line_.modem()) return !line_.modem()->cts();
@@ -131,11 +152,11 @@ private:
         if (xonxoff_.paused()) xonxoff_ = XonXoff(o_.xon, o_.xoff);
     }
 
-    void report(std::uint64_t done, bool paused) {
+    void report(bool paused) {
         if (!o_.progress) return;
         double seconds = std::chrono::duration<double>(clock_.now() - start_).count();
-        o_.progress(LineProgress{done, total_, xonxoff_.pauses(), paused,
-                                 seconds > 0 ? static_cast<double>(done) / seconds : 0});
+        o_.progress(LineProgress{r_.sent, total_, xonxoff_.pauses(), paused,
+                                 seconds > 0 ? static_cast<double>(r_.sent) / seconds : 0});
     }
 };
 

@@ -15,7 +15,7 @@
 
 namespace {
 
-constexpr std::size_t most_frames = 1536;  // of all reads together
+constexpr std::size_t most_frames = 768;  // of all reads together
 
 }  // namespace
 

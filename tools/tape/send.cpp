@@ -39,12 +39,16 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
         ->capture_default_str();
 }
 
-SendInput open_frames_to_send(const std::string& path, const FeedProfile& p) {
-    SendInput in;
-    in.name_ = display_name(path);
+tape::InputOptions feed_input_options(const FeedProfile& p) {
     tape::InputOptions io = input_options(p.choice, p.format, p.kind);
     io.detect_code = false;  // an image is sent as it is
-    in.input_ = open_input(path, io);
+    return io;
+}
+
+namespace {
+
+tape::FeedOptions feed_options(const FeedProfile& p) {
+    tape::InputOptions io = feed_input_options(p);
     tape::FeedOptions o;
     o.encode.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
     o.encode.parity = io.decode.parity;
@@ -57,6 +61,40 @@ SendInput open_frames_to_send(const std::string& path, const FeedProfile& p) {
     o.replace_trailer = p.trailer_given;
     o.percent = p.percent;
     o.dialect = tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic);
+    return o;
+}
+
+// The frames of a restart, made whole before anything is sent.
+class FramesInMemory : public tape::FrameSource {
+public:
+    explicit FramesInMemory(std::vector<tape::Frame> frames) : frames_(std::move(frames)), source_(frames_) {}
+    std::span<const tape::Frame> next() override { return source_.next(); }
+    std::uint64_t total() const override { return frames_.size(); }
+
+private:
+    std::vector<tape::Frame> frames_;
+    tape::SpanSource source_;
+};
+
+}  // namespace
+
+std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& name, const FeedProfile& p) {
+    tape::FeedOptions o = feed_options(p);
+    try {
+        tape::DialectChoice chosen;
+        auto frames = tape::frames_to_send(input, o, &chosen);
+        if (!input.is_image()) say_dialect(name, chosen);
+        return frames;
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+}
+
+SendInput open_frames_to_send(const std::string& path, const FeedProfile& p) {
+    SendInput in;
+    in.name_ = display_name(path);
+    in.input_ = open_input(path, feed_input_options(p));
+    tape::FeedOptions o = feed_options(p);
     try {
         tape::DialectChoice chosen;
         in.frames_ = tape::feed_source(*in.input_, o, &chosen);
@@ -67,6 +105,19 @@ SendInput open_frames_to_send(const std::string& path, const FeedProfile& p) {
     } catch (const tape::Error& e) {
         fail(in.name_, e);
     }
+    return in;
+}
+
+SendInput frames_in_memory(std::vector<tape::Frame> frames, const std::string& name,
+                           std::optional<tape::FrameCode> code) {
+    SendInput in;
+    in.name_ = name;
+    // A holes picture shows the frames' characters in the code they are in, when one fits.
+    if (!code)
+        if (auto detected = tape::detect_code(frames).code)
+            code = tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
+    in.code_ = code;
+    in.frames_ = std::make_unique<FramesInMemory>(std::move(frames));
     return in;
 }
 
@@ -117,10 +168,10 @@ void send_or_fail(tape::Transport& line, SendInput& frames, tape::SendOptions o,
 
 // The code a holes picture shows the frames' characters in: a text program's own, or the one detected
 // from the start of an image (its read-ahead, the whole of most tapes).
-std::optional<tape::FrameCode> picture_code(tape::Input& input, const std::optional<tape::FrameCode>& own) {
+std::optional<tape::FrameCode> picture_code(tape::Input* input, const std::optional<tape::FrameCode>& own) {
     if (own) return own;
-    if (!input.is_image()) return std::nullopt;
-    if (auto detected = input.detect().code)
+    if (!input || !input->is_image()) return std::nullopt;
+    if (auto detected = input->detect().code)
         return tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
     return std::nullopt;
 }
@@ -159,7 +210,7 @@ void deliver_or_fail(const Delivery& to, SendInput& frames, tape::SendOptions o,
         claim_output(*path);
         std::optional<tape::FrameCode> code;
         try {
-            code = picture_code(*frames.input_for_code(), frames.code());
+            code = picture_code(frames.input_for_code(), frames.code());
         } catch (const tape::Error& e) {
             fail(frames.name(), e);
         }

@@ -41,12 +41,12 @@ public:
     /// Frames are also kept (up to max_tape_frames), for a read-back to compare with.
     void keep() { keep_ = true; }
     const std::vector<tape::Frame>& kept() const { return kept_; }
-    /// The input, for the code a picture of its frames is annotated with.
+    /// The input, for the code a picture of its frames is annotated with (nullptr for frames in memory).
     tape::Input* input_for_code() { return input_.get(); }
 
 private:
     friend SendInput open_frames_to_send(const std::string&, const FeedProfile&);
-    friend SendInput open_image_to_send(const std::string&, const std::string&);
+    friend SendInput frames_in_memory(std::vector<tape::Frame>, const std::string&, std::optional<tape::FrameCode>);
 
     std::string name_;
     std::unique_ptr<tape::Input> input_;
@@ -61,6 +61,13 @@ private:
 SendInput open_frames_to_send(const std::string& path, const FeedProfile& p);
 /// A tape image's frames exactly as they are (punch).
 SendInput open_image_to_send(const std::string& path, const std::string& format_id);
+/// Frames made whole before they are sent (a restart); name is for messages, code for a holes picture.
+SendInput frames_in_memory(std::vector<tape::Frame> frames, const std::string& name,
+                           std::optional<tape::FrameCode> code = std::nullopt);
+/// The frames for an input already open (a restart's text), in memory; name is for messages.
+std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& name, const FeedProfile& p);
+/// How IN is opened for the profile: an image is sent as it is, its code not detected.
+tape::InputOptions feed_input_options(const FeedProfile& p);
 
 /// Where feed and punch send their frames.
 struct Delivery {
