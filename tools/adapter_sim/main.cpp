@@ -45,32 +45,48 @@ struct SimArgs {
     throw cli::Exit{cli::io_failure};
 }
 
-// The pseudo-terminal standing for the adapter's CDC port: its master is the adapter's side.
-struct Port {
-    int master = -1, slave = -1;
-    std::string path;
-};
-
-Port open_port(const std::string& link) {
-    Port port;
-    port.master = ::posix_openpt(O_RDWR | O_NOCTTY);
-    if (port.master < 0 || ::grantpt(port.master) != 0 || ::unlockpt(port.master) != 0)
-        die(std::string("no pseudo-terminal: ") + std::strerror(errno));
-    port.path = ::ptsname(port.master);
-    // Held open, so that a host closing the port (between runs) does not hang the line up.
-    port.slave = ::open(port.path.c_str(), O_RDWR | O_NOCTTY);
-    if (port.slave < 0) die(port.path + ": " + std::strerror(errno));
-    termios t{};
-    ::tcgetattr(port.slave, &t);
-    ::cfmakeraw(&t);
-    ::tcsetattr(port.slave, TCSANOW, &t);
-    ::fcntl(port.master, F_SETFL, O_NONBLOCK);
-    if (!link.empty()) {
-        ::unlink(link.c_str());
-        if (::symlink(port.path.c_str(), link.c_str()) != 0) die(link + ": " + std::strerror(errno));
-    }
-    return port;
+std::vector<std::uint8_t> reader_tape(const SimArgs& a) {
+    if (a.reader.empty()) return {};
+    auto in = cli::read_tape(a.reader, "");
+    return {in.frames.begin(), in.frames.end()};
 }
+
+// The adapter's CDC port: a pseudo-terminal in raw mode, its far end held open so that a host closing
+// the port (between runs) does not hang the line up, and optionally a symbolic link to it.
+class Port {
+public:
+    explicit Port(const std::string& link) : link_(link) {
+        master_ = ::posix_openpt(O_RDWR | O_NOCTTY);
+        if (master_ < 0 || ::grantpt(master_) != 0 || ::unlockpt(master_) != 0)
+            die(std::string("no pseudo-terminal: ") + std::strerror(errno));
+        path_ = ::ptsname(master_);
+        slave_ = ::open(path_.c_str(), O_RDWR | O_NOCTTY);
+        if (slave_ < 0) die(path_ + ": " + std::strerror(errno));
+        termios t{};
+        ::tcgetattr(slave_, &t);
+        ::cfmakeraw(&t);
+        ::tcsetattr(slave_, TCSANOW, &t);
+        ::fcntl(master_, F_SETFL, O_NONBLOCK);
+        if (!link_.empty()) {
+            ::unlink(link_.c_str());
+            if (::symlink(path_.c_str(), link_.c_str()) != 0) die(link_ + ": " + std::strerror(errno));
+        }
+    }
+    ~Port() {
+        ::close(master_);
+        ::close(slave_);
+        if (!link_.empty()) ::unlink(link_.c_str());
+    }
+    Port(const Port&) = delete;
+    Port& operator=(const Port&) = delete;
+
+    const std::string& path() const { return path_; }
+    int fd() const { return master_; }
+
+private:
+    std::string link_, path_;
+    int master_ = -1, slave_ = -1;
+};
 
 tapesim::SimOptions sim_options(const SimArgs& a) {
     tapesim::SimOptions so;
@@ -102,36 +118,23 @@ tapefw::Identity identity(const SimArgs& a) {
     return id;
 }
 
-// One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
-void print_stats(const tapesim::SimHardware& hw, const tapesim::FaultFilter& filter, const tapefw::Engine& engine) {
-    const tapefw::Config& c = hw.config();
-    char line[512];
-    std::snprintf(line, sizeof line,
-                  "tape-adapter-sim: stats: tape_position=%llu rows_punched=%llu underruns=%llu late_punches=%llu "
-                  "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
-                  "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
-                  "watchdog_ms=%u\n",
-                  static_cast<unsigned long long>(hw.position()), static_cast<unsigned long long>(hw.punched().size()),
-                  static_cast<unsigned long long>(hw.underruns()), static_cast<unsigned long long>(hw.late_punches()),
-                  static_cast<unsigned long long>(hw.longest_punch_gap_us()),
-                  static_cast<unsigned long long>(filter.desyncs()),
-                  static_cast<unsigned long long>(engine.bad_packets()), c.data_invert, c.lines, c.tracks,
-                  c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us, c.sprocket_timeout_ms, c.watchdog_ms);
-    std::cerr << line;
+// The watchdog counts simulated time: a faster clock would take the host's keep-alives for silence.
+tapefw::Config line_defaults(const SimArgs& a) {
+    tapefw::Config defaults;
+    defaults.watchdog_ms = static_cast<std::uint16_t>(std::min(65535.0, defaults.watchdog_ms * std::max(1.0, a.speed)));
+    return defaults;
 }
 
-// The adapter running: its engine and simulated hardware on the port, in simulated time.
-class Simulation {
+// The board: the firmware core driving the simulated reader and punch, its packets to the host passing
+// the fault filter, on a clock `speed` times real time.
+class Board {
 public:
-    Simulation(const SimArgs& a, std::vector<std::uint8_t> tape, Port port, std::FILE* punched_out)
+    Board(const SimArgs& a, const std::vector<std::uint8_t>& tape)
         : a_(a),
-          port_(std::move(port)),
-          punched_out_(punched_out),
           hw_(tape, sim_options(a)),
           id_(identity(a)),
           filter_(a.faults),
-          engine_(hw_, id_, tapefw::Framing::stream, scaled_defaults(a)),
-          step_(static_cast<std::uint64_t>(16e6 / a.read_rate)) {
+          engine_(hw_, id_, tapefw::Framing::stream, line_defaults(a)) {
         hw_.on_send = [this](const std::uint8_t* b, std::size_t n) {
             if (out_.size() > 65536) return false;  // the host is not reading: the endpoint is full
             filter_.pass(b, n, out_);
@@ -139,109 +142,119 @@ public:
         };
     }
 
-    void run() {
-        std::cout << "adapter:" << port_.path << std::endl;
+    /// Runs the board on the port until Ctrl-C or the unplug asked for.
+    void run(const Port& port, std::FILE* punched_out) {
+        fd_ = port.fd();
         t0_ = std::chrono::steady_clock::now();
         while (!cli::interrupted()) {
             catch_up();
-            save_punched();
+            if (punched_out) write_punched(punched_out);
             if (a_.unplug_after && engine_.rows_read() >= a_.unplug_after) {
                 std::cerr << "tape-adapter-sim: unplugged after " << engine_.rows_read() << " frames\n";
-                break;
+                return;
             }
-            send_out();
+            send_to_host();
             wait_for_host();
         }
     }
 
-    void finish() {
-        if (punched_out_) std::fclose(punched_out_);
-        ::close(port_.master);
-        ::close(port_.slave);
-        if (!a_.link.empty()) ::unlink(a_.link.c_str());
+    void print_faults() const {
         if (filter_.dropped() || filter_.corrupted())
             std::cerr << "tape-adapter-sim: " << filter_.dropped() << " packet(s) dropped, " << filter_.corrupted()
                       << " damaged, of " << filter_.rows_packets() << " ROWS packets\n";
-        if (a_.stats) print_stats(hw_, filter_, engine_);
+    }
+
+    // One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
+    void print_stats() const {
+        const tapefw::Config& c = hw_.config();
+        char line[512];
+        std::snprintf(
+            line, sizeof line,
+            "tape-adapter-sim: stats: tape_position=%llu rows_punched=%llu underruns=%llu late_punches=%llu "
+            "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
+            "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
+            "watchdog_ms=%u\n",
+            static_cast<unsigned long long>(hw_.position()), static_cast<unsigned long long>(hw_.punched().size()),
+            static_cast<unsigned long long>(hw_.underruns()), static_cast<unsigned long long>(hw_.late_punches()),
+            static_cast<unsigned long long>(hw_.longest_punch_gap_us()),
+            static_cast<unsigned long long>(filter_.desyncs()), static_cast<unsigned long long>(engine_.bad_packets()),
+            c.data_invert, c.lines, c.tracks, c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us,
+            c.sprocket_timeout_ms, c.watchdog_ms);
+        std::cerr << line;
     }
 
 private:
-    // The watchdog counts simulated time: a faster clock would take the host's keep-alives for silence.
-    static tapefw::Config scaled_defaults(const SimArgs& a) {
-        tapefw::Config defaults;
-        defaults.watchdog_ms =
-            static_cast<std::uint16_t>(std::min(65535.0, defaults.watchdog_ms * std::max(1.0, a.speed)));
-        return defaults;
-    }
+    const SimArgs& a_;
+    int fd_ = -1;  ///< the port's
+    tapesim::SimHardware hw_;
+    tapefw::Identity id_;
+    tapesim::FaultFilter filter_;
+    tapefw::Engine engine_;
+    std::string out_;  ///< bytes for the host the port has not taken yet
+    std::size_t punched_written_ = 0;
+    std::chrono::steady_clock::time_point t0_{};  ///< when the simulated clock started
+
     std::uint64_t virtual_now() const {
         double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() * a_.speed;
         return static_cast<std::uint64_t>(s * 1e6);
     }
+
     void take_input() {
         std::uint8_t buf[4096];
-        ssize_t n = ::read(port_.master, buf, sizeof buf);
+        ssize_t n = ::read(fd_, buf, sizeof buf);
         if (n > 0) engine_.receive(buf, static_cast<std::size_t>(n));
     }
-    // The engine's turn, then the chad box, which fills at an exact row: looked at after each turn, which
-    // punches one row at most.
+
+    // The chad box fills at an exact row: looked at after each turn, which punches one row at most.
     void turn() {
         engine_.poll();
         hw_.after_poll();
         if (a_.chad_full_after && hw_.punched().size() >= a_.chad_full_after)
             hw_.forced_status |= tapefw::status::chad_full;
     }
-    // The engine polls between rows, as the firmware's main loop does: rows are given in small steps.
-    // Catching up after the process was not scheduled, the host's packets that came meanwhile are taken
-    // step by step, as the board's USB interrupt would take them, so that the watchdog does not count the
-    // simulator's own pause as the host's silence.
+
+    // The simulated clock brought up to real time. The engine polls between rows, as the firmware's main
+    // loop does: rows are given in small steps. After the process was not scheduled, the host's packets
+    // that came meanwhile are taken step by step, as the board's USB interrupt would take them, so that
+    // the watchdog does not count the simulator's own pause as the host's silence.
     void catch_up() {
+        const std::uint64_t step = static_cast<std::uint64_t>(16e6 / a_.read_rate);
         std::uint64_t target = virtual_now();
         while (hw_.now() < target) {
             take_input();
-            hw_.advance_to(std::min(target, hw_.now() + step_), engine_);
+            hw_.advance_to(std::min(target, hw_.now() + step), engine_);
             turn();
         }
         turn();
     }
-    void save_punched() {
-        if (!punched_out_ || hw_.punched().size() <= punched_written_) return;
-        std::fwrite(hw_.punched().data() + punched_written_, 1, hw_.punched().size() - punched_written_, punched_out_);
-        std::fflush(punched_out_);
+
+    void write_punched(std::FILE* to) {
+        if (hw_.punched().size() <= punched_written_) return;
+        std::fwrite(hw_.punched().data() + punched_written_, 1, hw_.punched().size() - punched_written_, to);
+        std::fflush(to);
         punched_written_ = hw_.punched().size();
     }
-    void send_out() {
+
+    void send_to_host() {
         while (!out_.empty()) {
-            ssize_t n = ::write(port_.master, out_.data(), out_.size());
+            ssize_t n = ::write(fd_, out_.data(), out_.size());
             if (n <= 0) break;
             out_.erase(0, static_cast<std::size_t>(n));
         }
     }
+
+    // Until the next simulated event, 5 ms at most, or the host's next packet.
     void wait_for_host() {
-        std::uint64_t next = hw_.next_event(), now = virtual_now();
+        std::uint64_t next = hw_.next_event();
+        std::uint64_t now = virtual_now();
         int wait_ms = next > now ? static_cast<int>(std::min<double>(5, (next - now) / 1000.0 / a_.speed)) : 0;
-        pollfd p{port_.master, static_cast<short>(POLLIN | (out_.empty() ? 0 : POLLOUT)), 0};
+        pollfd p{fd_, static_cast<short>(POLLIN | (out_.empty() ? 0 : POLLOUT)), 0};
         if (::poll(&p, 1, wait_ms) > 0 && (p.revents & POLLIN)) take_input();
     }
-
-    const SimArgs& a_;
-    Port port_;
-    std::FILE* punched_out_;
-    tapesim::SimHardware hw_;
-    tapefw::Identity id_;
-    tapesim::FaultFilter filter_;
-    tapefw::Engine engine_;
-    std::string out_;
-    std::uint64_t step_;
-    std::size_t punched_written_ = 0;
-    std::chrono::steady_clock::time_point t0_;
 };
 
 int run(const SimArgs& a) {
-    std::vector<std::uint8_t> tape;
-    if (!a.reader.empty()) {
-        auto in = cli::read_tape(a.reader, "");
-        tape.assign(in.frames.begin(), in.frames.end());
-    }
+    const std::vector<std::uint8_t> tape = reader_tape(a);
     std::FILE* punched_out = nullptr;
     if (!a.punch.empty()) {
         if (a.punch == "-")
@@ -250,26 +263,22 @@ int run(const SimArgs& a) {
         punched_out = std::fopen(a.punch.c_str(), "wb");
         if (!punched_out) die(a.punch + ": cannot create: " + std::strerror(errno));
     }
-    Simulation sim(a, std::move(tape), open_port(a.link), punched_out);
-    sim.run();
-    sim.finish();
+    Board board(a, tape);
+    {
+        Port port(a.link);
+        std::cout << "adapter:" << port.path() << std::endl;
+        board.run(port, punched_out);
+    }
+    if (punched_out) std::fclose(punched_out);
+    board.print_faults();
+    if (a.stats) board.print_stats();
     return cli::ok;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "tape-adapter-sim: a USB tape adapter with a ФС-1501-class reader and a ПЛ-150-class punch, simulated on a "
-        "pseudo-terminal.\nPrints the device string (adapter:/dev/pts/N) on stdout, then runs until Ctrl-C.",
-        "tape-adapter-sim"};
-    app.set_version_flag("--version", std::string("tape-adapter-sim ") + TAPE_VERSION);
-    app.footer("See tape-usb(7) and docs/adapter-protocol.md.");
-    cli::globals().program = "tape-adapter-sim";
-    SimArgs a;
+// The adapter as built: what it holds, its line and its clock.
+void add_unit_options(CLI::App& app, SimArgs& a) {
     using cli::real_number;
     using cli::whole_number;
-    constexpr std::uint64_t most = 1'000'000'000;
     app.add_option("--reader", a.reader, "Tape image in the reader (any format); without it the reader has no tape");
     app.add_option("--punch", a.punch, "Raw image file the punch punches into (rows appended as punched)");
     app.add_option("--serial", a.serial, "The adapter's serial string")->capture_default_str();
@@ -296,6 +305,12 @@ int main(int argc, char** argv) {
     app.add_flag("--at-end", a.at_end,
                  "The tape is loaded with its end at the head, as after reading it through: read it back with "
                  "direction=reverse");
+}
+
+// Faults of the tape, the units and the line, each at a frame or packet named.
+void add_fault_options(CLI::App& app, SimArgs& a) {
+    using cli::whole_number;
+    constexpr std::uint64_t most = 1'000'000'000;
     app.add_option("--no-sprocket-at", a.no_sprocket_at,
                    "Frame N (from 1) is read without its sprocket hole, sampled by time, and flagged so "
                    "(repeatable)")
@@ -343,6 +358,21 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--protocol", a.faults.protocol, "Claim this protocol version in INFO (to try a mismatch)")
         ->check(whole_number(0, 255));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "tape-adapter-sim: a USB tape adapter with a ФС-1501-class reader and a ПЛ-150-class punch, simulated on a "
+        "pseudo-terminal.\nPrints the device string (adapter:/dev/pts/N) on stdout, then runs until Ctrl-C.",
+        "tape-adapter-sim"};
+    app.set_version_flag("--version", std::string("tape-adapter-sim ") + TAPE_VERSION);
+    app.footer("See tape-usb(7) and docs/adapter-protocol.md.");
+    cli::globals().program = "tape-adapter-sim";
+    SimArgs a;
+    add_unit_options(app, a);
+    add_fault_options(app, a);
     app.callback([&a] { throw cli::Exit{run(a)}; });
     cli::install_interrupt_handler();
     return cli::parse_and_run(app, argc, argv);
