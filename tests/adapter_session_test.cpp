@@ -111,6 +111,28 @@ std::string read_to_end(tape::adapter::Session& s) {
     }
 }
 
+// An adapter that answers READ_START with its OK and then the packets given, and nothing else.
+std::unique_ptr<ScriptedPipe> reading(std::vector<Packet> after) {
+    auto pipe = std::make_unique<ScriptedPipe>();
+    pipe->answer = [after](const Packet& p) {
+        if (static_cast<Msg>(p.type) != Msg::read_start) return std::vector<Packet>{};
+        std::vector<Packet> out{ScriptedPipe::ok(p)};
+        out.insert(out.end(), after.begin(), after.end());
+        return out;
+    };
+    return pipe;
+}
+
+// The message of the Error f throws, or "" when it throws none.
+std::string error_of(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const tape::Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
 tape::adapter::SessionTiming quick() {
     tape::adapter::SessionTiming t;
     t.silent = 300ms;
@@ -137,23 +159,13 @@ TEST(AdapterSession, ARequestAnsweredOnlyWithDamagedPacketsSaysTheLinkDamagesThe
     auto* script = pipe.get();
     tape::adapter::Session s(std::move(pipe), quick());
     script->damage_everything = true;
-    try {
-        s.configure(tapefw::Config{});
-        FAIL() << "a CONFIG with no answer was taken";
-    } catch (const tape::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("no answer to CONFIG after 3 tries: the link is damaging every packet"),
-                  std::string::npos)
-            << e.what();
-    }
+    std::string error = error_of([&] { s.configure(tapefw::Config{}); });
+    EXPECT_NE(error.find("no answer to CONFIG after 3 tries: the link is damaging every packet"), std::string::npos)
+        << error;
 }
 
 TEST(AdapterSession, TapeOutNamingAFrameBeforeTheRowsAlreadySentIsAProtocolError) {
-    auto pipe = std::make_unique<ScriptedPipe>();
-    pipe->answer = [](const Packet& p) {
-        if (static_cast<Msg>(p.type) != Msg::read_start) return std::vector<Packet>{};
-        return std::vector<Packet>{ScriptedPipe::ok(p), rows(0, 20), status(tapefw::status::tape_out, 5)};
-    };
-    tape::adapter::Session s(std::move(pipe), quick());
+    tape::adapter::Session s(reading({rows(0, 20), status(tapefw::status::tape_out, 5)}), quick());
     std::string error = read_to_end(s);
     EXPECT_NE(
         error.find("protocol error: the adapter's STATUS (tape out) names frame 6, before the 20 frames it has sent"),
@@ -170,29 +182,20 @@ TEST(AdapterSession, CreditForMoreRowsThanTheQueueHoldsIsAProtocolError) {
         return std::vector<Packet>{credit(punch.first + punch.count, 0, 9999)};
     };
     tape::adapter::Session s(std::move(pipe), quick());
-    try {
+    std::string error = error_of([&] {
         std::vector<std::uint8_t> row(10, 0x41);
         s.punch(row);
         s.drain();
-        FAIL() << "a credit beyond the ring was taken";
-    } catch (const tape::Error& e) {
-        EXPECT_NE(std::string(e.what()).find("protocol error: the adapter gives credit for 9999 rows, more than its "
-                                             "queue of 256"),
-                  std::string::npos)
-            << e.what();
-    }
+    });
+    EXPECT_NE(error.find("protocol error: the adapter gives credit for 9999 rows, more than its queue of 256"),
+              std::string::npos)
+        << error;
 }
 
 TEST(AdapterSession, FramesNeverResentAreGivenUpAfterTheRequestsAndTheirTimeNotBefore) {
-    auto pipe = std::make_unique<ScriptedPipe>();
-    pipe->answer = [](const Packet& p) {
-        // Rows 10 and on come, 0-9 never do, however often they are asked for.
-        if (static_cast<Msg>(p.type) != Msg::read_start) return std::vector<Packet>{};
-        return std::vector<Packet>{ScriptedPipe::ok(p), rows(10, 20)};
-    };
     tape::adapter::SessionTiming t = quick();
     t.silent = 10s;
-    tape::adapter::Session s(std::move(pipe), t);
+    tape::adapter::Session s(reading({rows(10, 20)}), t);  // 0-9 never come, however often asked for
     auto start = std::chrono::steady_clock::now();
     std::string error = read_to_end(s);
     auto took = std::chrono::steady_clock::now() - start;
