@@ -600,3 +600,21 @@ TEST(AdapterCdc, CtrlCOnAPunchRunEndsItAsStoppedAndStopsThePunchNow) {
         EXPECT_LT(read_text(dir.file("punched.ptp")).size(), at_stop + 120) << "the punch went on after the stop";
     }
 }
+
+TEST(AdapterCdc, AnAdapterWithoutAReaderOrAPunchIsRefusedBeforeAnOutputIsCreated) {
+    TempDir dir;
+    std::string in = write_tape(dir, 100);
+    {
+        SIM_OR_SKIP(sim, dir, {"--no-reader"});
+        Process tape({"read", sim.device, "-o", dir.file("out.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 3) << tape.err();
+        EXPECT_NE(tape.err().find("this adapter has no reader"), std::string::npos) << tape.err();
+        EXPECT_FALSE(std::filesystem::exists(dir.file("out.ptp")));
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--no-punch"});
+        Process tape({"punch", in, sim.device}, dir);
+        EXPECT_EQ(tape.wait(20s), 3) << tape.err();
+        EXPECT_NE(tape.err().find("this adapter has no punch"), std::string::npos) << tape.err();
+    }
+}

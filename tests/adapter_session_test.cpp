@@ -192,6 +192,60 @@ TEST(AdapterSession, CreditForMoreRowsThanTheQueueHoldsIsAProtocolError) {
         << error;
 }
 
+namespace {
+
+Packet out_of_order(std::uint32_t expected) {
+    Packet p;
+    tapefw::ErrorReply{tapefw::ErrorCode::out_of_order, static_cast<std::uint8_t>(Msg::punch), expected}.encode(p);
+    return p;
+}
+
+// An adapter that takes every PUNCH at once and punches it, then sends what after(punch) says.
+std::unique_ptr<ScriptedPipe> punching(std::function<std::vector<Packet>(const tapefw::Punch&)> after) {
+    auto pipe = std::make_unique<ScriptedPipe>();
+    pipe->answer = [after](const Packet& p) {
+        if (static_cast<Msg>(p.type) != Msg::punch) return std::vector<Packet>{};
+        tapefw::Punch punch;
+        punch.decode(p);
+        return after(punch);
+    };
+    return pipe;
+}
+
+std::string punch_rows(tape::adapter::Session& s, std::size_t count) {
+    return error_of([&] {
+        std::vector<std::uint8_t> rows(count, 0x41);
+        s.punch(rows);
+        s.drain();
+    });
+}
+
+}  // namespace
+
+TEST(AdapterSession, AnOutOfOrderErrorForRowsTheAdapterHasSinceTakenIsStaleAndIgnored) {
+    // The error about row 1 comes after the CREDIT that took rows 1-10: nothing is to be sent again.
+    int punches = 0;
+    tape::adapter::Session s(punching([&](const tapefw::Punch& punch) {
+                                 ++punches;
+                                 std::uint32_t end = punch.first + punch.count;
+                                 return std::vector<Packet>{credit(end, end, 256), out_of_order(0)};
+                             }),
+                             quick());
+    EXPECT_EQ(punch_rows(s, 10), "");
+    EXPECT_EQ(s.rows_punched(), 10u);
+    EXPECT_EQ(punches, 1) << "rows the adapter had taken were sent again";
+}
+
+TEST(AdapterSession, AnOutOfOrderErrorExpectingARowNeverSentIsAProtocolError) {
+    tape::adapter::Session s(punching([](const tapefw::Punch& punch) {
+                                 return std::vector<Packet>{out_of_order(punch.first + punch.count + 5)};
+                             }),
+                             quick());
+    std::string error = punch_rows(s, 10);
+    EXPECT_NE(error.find("protocol error: the adapter expects punch row 16, and only 10 were sent"), std::string::npos)
+        << error;
+}
+
 TEST(AdapterSession, FramesNeverResentAreGivenUpAfterTheRequestsAndTheirTimeNotBefore) {
     tape::adapter::SessionTiming t = quick();
     t.silent = 10s;

@@ -189,11 +189,12 @@ void Session::handle(const Packet& p) {
                     ++bad_out_;
                     return;
                 case tapefw::ErrorCode::out_of_order:
-                    // A PUNCH was lost: from the one expected, which the adapter has not taken yet.
-                    if (e.frame < rows_base_ || e.frame > rows_queued())
-                        protocol_error(e.frame + 1, "the adapter asks for punch row " + std::to_string(e.frame + 1) +
-                                                        ", which it has taken already or was never sent");
-                    sent_to_ = std::min(sent_to_, e.frame);
+                    // A PUNCH was lost: from the one expected. One the adapter has taken since (this error
+                    // overtaken by a CREDIT) is stale; one never sent cannot be expected.
+                    if (e.frame > rows_queued())
+                        protocol_error(e.frame + 1, "the adapter expects punch row " + std::to_string(e.frame + 1) +
+                                                        ", and only " + std::to_string(rows_queued()) + " were sent");
+                    if (e.frame >= credit_next_) sent_to_ = std::min(sent_to_, e.frame);
                     return;
                 case tapefw::ErrorCode::resend_gone:
                     fail(expected_ + 1, "frames " + std::to_string(expected_ + 1) + "-" +
