@@ -102,7 +102,8 @@ struct SessionTiming {
     int tries = 3;                                ///< requests are sent at most this often
     std::chrono::milliseconds ack_every{50};      ///< ACK (and keep-alive) period while reading or punching
     std::chrono::milliseconds resend_after{150};  ///< a gap not filled after this long is asked for again
-    int resend_tries = 5;                         ///< then the frames count as lost
+    int resend_tries = 5;                         ///< at least so many requests, and
+    std::chrono::milliseconds lost_after{750};    ///< this long since the first: then the frames count as lost
     std::chrono::milliseconds silent{2000};       ///< an adapter silent this long while it should talk is dead
 };
 
@@ -165,6 +166,7 @@ private:
     std::uint8_t seq_ = 0;
     std::uint64_t bad_out_ = 0;
     clock::time_point last_sent_{}, last_heard_{};
+    std::uint64_t bad_when_heard_ = 0;  ///< the pipe's bad packets when a good one last came
 
     // Reading.
     bool reading_ = false;
@@ -176,6 +178,7 @@ private:
     clock::time_point gap_asked_{};
     int gap_tries_ = 0;
     std::uint32_t gap_first_ = 0;
+    clock::time_point gap_since_{};  ///< when the first request for the open gap went out
     std::vector<std::pair<std::uint64_t, std::uint64_t>> recovered_;
     std::uint64_t bad_seen_ = 0;
     std::vector<Doubt> doubts_;
@@ -188,8 +191,11 @@ private:
     };
     std::optional<Pending> pending_;
 
-    // Punching: rows_ holds every row queued; frame numbers index it.
-    std::vector<std::uint8_t> rows_;
+    // Punching: rows_ holds the rows queued from frame rows_base_ on (those the adapter has not taken
+    // into its queue yet, to send again if need be), so that a tape of any length takes bounded memory.
+    std::deque<std::uint8_t> rows_;
+    std::uint32_t rows_base_ = 0;
+    bool punching_ = false;
     std::uint32_t sent_to_ = 0, credit_next_ = 0, punched_ = 0;
     std::uint32_t credit_free_ = 0;
     clock::time_point last_credit_{};
@@ -211,6 +217,14 @@ private:
     /// RESEND from expected_, timed for check_gap's next try.
     void ask_resend();
     [[noreturn]] void fail(std::uint64_t frame, const std::string& what) const;
+    /// A reply that breaks the protocol: Error(Errc::io) "protocol error: what".
+    [[noreturn]] void protocol_error(std::uint64_t frame, const std::string& what) const;
+    /// Why the adapter is not heard: silent, or every packet it sends fails its CRC.
+    std::string silence(const std::string& what) const;
+    /// A good packet came: the adapter is heard.
+    void heard();
+    void handle_credit(const tapefw::Packet& p);
+    std::uint32_t rows_queued() const { return rows_base_ + static_cast<std::uint32_t>(rows_.size()); }
 };
 
 }  // namespace tape::adapter

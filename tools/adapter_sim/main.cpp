@@ -17,8 +17,10 @@
 
 #include "adapter_sim/fault_filter.hpp"
 #include "adapter_sim/sim_hardware.hpp"
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
+#include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "cli/run.hpp"
 #include "cli/signals.hpp"
@@ -255,6 +257,9 @@ int run(const SimArgs& a) {
     const std::vector<std::uint8_t> tape = reader_tape(a);
     std::FILE* punched_out = nullptr;
     if (!a.punch.empty()) {
+        if (a.punch == "-")
+            cli::fail("--punch -", tape::Errc::usage, "standard output carries the device string: give a file");
+        cli::claim_output(a.punch);
         punched_out = std::fopen(a.punch.c_str(), "wb");
         if (!punched_out) die(a.punch + ": cannot create: " + std::strerror(errno));
     }

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "device_options.hpp"
 #include "tape/adapter.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 namespace {
@@ -16,9 +17,9 @@ std::string info_text(const tape::AdapterInfo& i) {
     std::string tracks;
     for (int n : i.tracks) tracks += (tracks.empty() ? "" : ", ") + std::to_string(n);
     std::string out;
-    out += "serial\t" + i.serial + "\n";
+    out += "serial\t" + tape::visible(i.serial) + "\n";  // the adapter's own string: no terminal escapes
     out += "protocol\t" + std::to_string(i.protocol) + "\n";
-    out += "firmware\t" + i.firmware + "\n";
+    out += "firmware\t" + tape::visible(i.firmware) + "\n";
     out += "reader\t" + std::string(i.reader ? "yes" : "no") +
            (i.reader ? ", " + std::to_string(i.max_read_rate) + " frames/s" + (i.reverse ? ", reverse" : "") +
                            (i.row_flags ? ", flags doubtful rows" : "")
@@ -49,22 +50,6 @@ std::string config_text(const tape::AdapterConfig& c) {
     out += "sprocket timeout\t" + std::to_string(c.sprocket_timeout_ms) + " ms\n";
     out += "watchdog\t" + (c.watchdog_ms ? std::to_string(c.watchdog_ms) + " ms" : std::string("off")) + "\n";
     return out;
-}
-
-// A mask of the eight data lines, in decimal or 0x hex: a wiring is read off as bits.
-CLI::Validator line_mask() {
-    return CLI::Validator(
-        [](std::string& s) -> std::string {
-            bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
-            std::string digits = hex ? s.substr(2) : s;
-            bool ok = !digits.empty() && digits.size() <= 4 &&
-                      digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") == std::string::npos;
-            unsigned long v = ok ? std::stoul(digits, nullptr, hex ? 16 : 10) : 256;
-            if (v > 255) return "must be a mask of the 8 data lines, 0 to 255 or 0x00 to 0xFF, not '" + s + "'";
-            s = std::to_string(v);
-            return "";
-        },
-        "MASK");
 }
 
 void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
