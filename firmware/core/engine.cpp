@@ -16,6 +16,7 @@ bool elapsed(std::uint32_t now, std::uint32_t since, std::uint32_t us) { return 
 Engine::Engine(Hardware& hw, const Identity& id, Framing framing, const Config& defaults)
     : hw_(hw), id_(id), framing_(framing), config_(defaults) {
     hw_.configure(config_);
+    hw_.configure_emulation(wiring_);
     hw_.drive(Drive::stop);
     last_status_ = static_cast<std::uint16_t>(hw_.status_lines() & line_faults);
 }

@@ -33,6 +33,12 @@ std::string msg_name(std::uint8_t type) {
             return "RESET";
         case Msg::echo:
             return "ECHO";
+        case Msg::wiring:
+            return "WIRING";
+        case Msg::emulate:
+            return "EMULATE";
+        case Msg::discard:
+            return "DISCARD";
         default:
             return "message " + std::to_string(type);
     }
@@ -83,11 +89,14 @@ Session::~Session() {
 
 void Session::fail(std::uint64_t frame, const std::string& what) const {
     // Before a run has started no frame is concerned: opening, info, self-test.
-    bool run = reading_ || !rows_.empty() || expected_ > 0;
+    bool run = reading_ || !rows_.empty() || expected_ > 0 || emulating_;
     throw Error(Errc::io, name() + ": " + (run ? "frame " + std::to_string(frame) + ": " : "") + what);
 }
 
-std::uint64_t Session::position() const { return (reading_ || rows_.empty() ? expected_ : punched_) + 1; }
+std::uint64_t Session::position() const {
+    if (emulating_) return std::uint64_t{taken_.taken} + 1;
+    return (reading_ || rows_.empty() ? expected_ : punched_) + 1;
+}
 
 // The pipe's failures (an adapter unplugged) get the frame position the session knows.
 [[noreturn]] void Session::rethrow(const Error& e) const {
@@ -147,6 +156,8 @@ void Session::handle(const Packet& p) {
             return handle_rows(p);
         case Msg::status:
             return handle_status(p);
+        case Msg::taken:
+            return handle_taken(p);
         case Msg::credit: {
             tapefw::Credit c;
             if (!c.decode(p)) return;
@@ -171,6 +182,9 @@ void Session::handle(const Packet& p) {
                     fail(expected_ + 1, "frames " + std::to_string(expected_ + 1) + "-" +
                                             std::to_string(gap_end_.value_or(expected_ + 1)) +
                                             " lost: the adapter no longer holds them");
+                case tapefw::ErrorCode::not_emulating:
+                    if (!emulating_) return;  // a FRAMES of a session already ended
+                    fail(std::uint64_t{e.frame} + 1, "the adapter is no longer emulating the reader");
                 case tapefw::ErrorCode::overrun:
                     if (!pending_) pending_ = Pending{e.frame, "the adapter's buffer overran: frames lost from here"};
                     return;
@@ -236,9 +250,17 @@ void Session::handle_status(const Packet& p) {
         }
         return;
     }
+    if (emulating_) {
+        if (s.bits & (st::watchdog | st::offline | st::motor_fault))
+            fail(std::uint64_t{s.frame} + 1,
+                 fault_text(s.bits) + "; " + std::to_string(s.frame) + " frame(s) taken by the control");
+        return;
+    }
     if (!rows_.empty() || feeds_) {
         std::uint16_t stop = st::punch_tape_out | st::chad_full | st::motor_fault | st::offline | st::watchdog;
         if (s.bits & stop) fail(std::uint64_t{s.frame} + 1, fault_text(s.bits & stop));
+    } else if (!expected_ && (s.bits & st::watchdog)) {
+        orphaned_ = s;  // told after this session's RESET: a run of a host that was gone
     }
 }
 
@@ -395,6 +417,83 @@ void Session::drain() {
                                                   " s: time-out");
         }
     }
+}
+
+void Session::handle_taken(const Packet& p) {
+    tapefw::Taken t;
+    if (!emulating_ || !t.decode(p)) return;
+    // After a turn of the control (or a DISCARD) the adapter expects frames from its next again.
+    if (t.turn != taken_.turn || t.next < taken_.next) emu_sent_to_ = t.next;
+    taken_ = t;
+    last_taken_ = clock::now();
+}
+
+void Session::set_wiring(const tapefw::Wiring& wiring) {
+    Packet p;
+    wiring.encode(p);
+    request(p, Msg::ok);
+}
+
+void Session::start_emulation() {
+    if (!(info_.capabilities & tapefw::caps::emulate))
+        fail(0, "this adapter cannot stand in for a tape reader (no emulate role)");
+    Packet p;
+    p.type = static_cast<std::uint8_t>(Msg::emulate);
+    taken_ = tapefw::Taken{};
+    taken_.free = 0;
+    emu_sent_to_ = 0;
+    request(p, Msg::ok);
+    emulating_ = true;
+    last_heard_ = last_taken_ = clock::now();
+}
+
+void Session::stop_emulation() {
+    if (!emulating_) return;
+    emulating_ = false;
+    Packet p;
+    p.type = static_cast<std::uint8_t>(Msg::reset);
+    request(p, Msg::ok);
+}
+
+void Session::offer(std::uint32_t first, std::span<const std::uint8_t> frames) {
+    std::uint32_t end = first + static_cast<std::uint32_t>(frames.size());
+    std::uint32_t limit = std::min(end, taken_.next + taken_.free);
+    // Frames sent but neither queued nor refused: a FRAMES or its TAKEN was lost; from the one expected again.
+    if (emu_sent_to_ > taken_.next && clock::now() - last_taken_ > t_.reply) {
+        emu_sent_to_ = taken_.next;
+        last_taken_ = clock::now();
+    }
+    emu_sent_to_ = std::max({emu_sent_to_, taken_.next, first});
+    while (emu_sent_to_ < limit) {
+        tapefw::Frames f;
+        f.first = emu_sent_to_;
+        f.turn = taken_.turn;
+        f.count = static_cast<std::uint8_t>(std::min<std::uint32_t>(tapefw::Frames::max_frames, limit - emu_sent_to_));
+        std::copy_n(frames.begin() + (emu_sent_to_ - first), f.count, f.frames);
+        Packet p;
+        f.encode(p);
+        send(p);
+        emu_sent_to_ += f.count;
+    }
+}
+
+void Session::discard(std::uint32_t from) {
+    Packet p;
+    tapefw::Discard{from}.encode(p);
+    handle_taken(request(p, Msg::taken));
+    emu_sent_to_ = taken_.next;
+}
+
+void Session::pump_emulation(std::chrono::milliseconds wait) {
+    keep_alive();
+    auto got = receive(wait);
+    while (got) {
+        last_heard_ = clock::now();
+        handle(*got);
+        got = receive(0ms);
+    }
+    if (clock::now() - last_heard_ > t_.silent)
+        fail(std::uint64_t{taken_.taken} + 1, "the adapter stopped answering: time-out");
 }
 
 std::vector<std::uint8_t> Session::echo(std::span<const std::uint8_t> payload) {

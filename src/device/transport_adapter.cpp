@@ -165,15 +165,19 @@ adapter::Settings adapter::settings_of(const DeviceQuery& q, DeviceUse use) {
 
 std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> pipe, const Settings& s, DeviceUse use) {
     auto t = std::make_unique<AdapterTransport>(std::move(pipe), use, s.start);
-    // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
-    const tapefw::Info& info = t->session().info();
-    if (s.serial && *s.serial != info.serial)
-        throw Error(Errc::io, t->name() + ": this adapter's serial is " + info.serial + ", not " + *s.serial);
     // Refused before anything is read or written, as the adapter would refuse its READ_START.
-    if (s.start.reverse && !(info.capabilities & tapefw::caps::reverse))
+    if (s.start.reverse && !(t->session().info().capabilities & tapefw::caps::reverse))
         throw Error(Errc::io, t->name() + ": this adapter's reader cannot read backwards (direction=reverse)");
-    if (s.config) t->session().configure(*s.config);
+    apply_settings(t->session(), s);
     return t;
+}
+
+void adapter::apply_settings(Session& session, const Settings& s) {
+    // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
+    const tapefw::Info& info = session.info();
+    if (s.serial && *s.serial != info.serial)
+        throw Error(Errc::io, session.name() + ": this adapter's serial is " + info.serial + ", not " + *s.serial);
+    if (s.config) session.configure(*s.config);
 }
 
 adapter::UsbId adapter::usb_id(std::string_view backend, const DeviceQuery& q) {
