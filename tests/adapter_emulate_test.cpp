@@ -96,7 +96,7 @@ TEST(AdapterEmulate, AnAdapterWithoutTheRoleRefusesIt) {
 TEST(AdapterEmulate, EveryFrameIsTakenOnceInOrderAndAStopWithinTheBrakingDistance) {
     auto tape = frames_of(60000);
     for (std::uint8_t braking : {0, 1, 2}) {
-        Bench b({}, with_control({.stops = 40, .seed = braking + 1u}), emulator());
+        Bench b({}, with_control({.stops = 40, .seed = braking + 1u, .stop_at_program_end = false}), emulator());
         Wiring w;
         w.braking = braking;
         configure_wiring(b, w);

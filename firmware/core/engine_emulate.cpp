@@ -30,6 +30,8 @@ void Engine::on_drive(std::uint8_t lines) {
     }
     if (!(was & drive_bit::run) && (lines & drive_bit::run)) {
         braking_left_ = 0;
+        started_at_ = emu_taken_;
+        until_start_ = false;
         hw_.frame_clock(wiring_.start_delay_us);
     }
 }
@@ -41,7 +43,7 @@ Slot Engine::next_frame(std::uint8_t& levels) {
         braking_left_ = static_cast<std::uint8_t>(braking_left_ - 1);
     }
     std::uint32_t taken = emu_taken_;
-    if (taken == emu_next_) return Slot::hold;
+    if (taken == emu_next_ || until_start_) return Slot::hold;
     std::uint8_t mask = static_cast<std::uint8_t>((1u << wiring_.tracks) - 1);
     levels = static_cast<std::uint8_t>((emu_frames_[taken % emulate_ring] & mask) ^ wiring_.data_invert);
     emu_taken_ = taken + 1;
@@ -66,6 +68,8 @@ void Engine::start_emulation(const Packet& p) {
     turn_ = 0;
     stops_ = 0;
     braking_left_ = 0;
+    started_at_ = 0;
+    until_start_ = false;
     drive_in_ = hw_.drive_inputs();
     emulating_ = true;
     hw_.critical(false);
@@ -99,6 +103,7 @@ void Engine::discard_frames(const Packet& p) {
     hw_.critical(true);
     std::uint32_t from = d.from > emu_taken_ ? d.from : emu_taken_;
     if (from < emu_next_) emu_next_ = from;
+    if (d.until_start && started_at_ < d.from) until_start_ = true;
     hw_.critical(false);
     send_taken(p.seq);
 }

@@ -197,8 +197,11 @@ struct Frames {
 };
 
 /// DISCARD: frames queued from `from` on and not yet taken are dropped (the host rewound or searched).
+/// With until_start, the frames queued after it wait for the control's next start, unless it started
+/// again after taking frame from-1 (a program's end: the control stops there and is started again).
 struct Discard {
     std::uint32_t from = 0;
+    std::uint8_t until_start = 0;
     bool encode(Packet& p) const;
     bool decode(const Packet& p);
 };

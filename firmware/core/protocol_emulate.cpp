@@ -75,6 +75,7 @@ bool Frames::decode(const Packet& p) {
 bool Discard::encode(Packet& p) const {
     Writer w(p, Msg::discard);
     w.u32(from);
+    w.u8(until_start);
     return w.ok;
 }
 
@@ -82,7 +83,8 @@ bool Discard::decode(const Packet& p) {
     if (!is(p, Msg::discard)) return false;
     Reader r{p};
     from = r.u32();
-    return r.done();
+    until_start = r.u8();
+    return r.done() && until_start <= 1;
 }
 
 bool Taken::encode(Packet& p) const {

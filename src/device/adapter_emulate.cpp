@@ -55,7 +55,6 @@ private:
     std::size_t cursor_ = 0;  ///< where the next frame held comes from
     bool backwards_ = false;
     bool at_program_end_ = false;  ///< frames held up to the program's end: none after it
-    bool rewound_ = false;         ///< rewound at the program's end: given again once the control stops
     bool ended_said_ = false;
     ProgramEndWatch taken_watch_, held_watch_;
     tapefw::Taken seen_{};
@@ -73,7 +72,7 @@ private:
 
     // Frames from the cursor, as many as the window holds; forwards only up to the program's end.
     void fill() {
-        if (rewound_ || at_program_end_) return;
+        if (at_program_end_) return;
         if (at_ > window_frames) {
             frames_.erase(frames_.begin(), frames_.begin() + static_cast<std::ptrdiff_t>(at_));
             places_.erase(places_.begin(), places_.begin() + static_cast<std::ptrdiff_t>(at_));
@@ -98,10 +97,6 @@ private:
         bool turned = t.turn != seen_.turn;
         seen_ = t;
         if (turned) turn(t.drive);
-        if (rewound_ && !(t.drive & db::run)) {
-            rewound_ = false;  // the control stopped after the program's end: the tape from the '%' stop
-            log("given again from the '%' stop");
-        }
         if (!backwards_ && head_ >= tape_.size() && base_ == t.next && !ended_said_) {
             ended_said_ = true;
             log("end of tape");
@@ -116,13 +111,13 @@ private:
         if (taken_watch_.feed(code_.character(tape_[place])) != ProgramEndWatch::Event::program_end) return;
         log("end of program");
         rewind_to_stop();
-        rewound_ = true;
     }
 
     // The frames held are not where the tape now stands: dropped (the adapter has dropped them too, at a
-    // turn; at a rewind of ours it is asked to).
+    // turn; at the program's end it is asked to, and to give the next frames only at the control's next
+    // start, as a reader stopped at the end of a program waits for the start button).
     void restart_from(std::size_t place, bool backwards, bool ask) {
-        if (ask) s_.discard(base_);
+        if (ask) s_.discard(base_, true);
         frames_.erase(frames_.begin() + static_cast<std::ptrdiff_t>(at_), frames_.end());
         places_.erase(places_.begin() + static_cast<std::ptrdiff_t>(at_), places_.end());
         head_ = cursor_ = place;

@@ -477,21 +477,24 @@ void Session::offer(std::uint32_t first, std::span<const std::uint8_t> frames) {
     }
 }
 
-void Session::discard(std::uint32_t from) {
+void Session::discard(std::uint32_t from, bool until_start) {
     Packet p;
-    tapefw::Discard{from}.encode(p);
+    tapefw::Discard{from, static_cast<std::uint8_t>(until_start)}.encode(p);
     handle_taken(request(p, Msg::taken));
     emu_sent_to_ = taken_.next;
 }
 
 void Session::pump_emulation(std::chrono::milliseconds wait) {
     keep_alive();
+    // A few packets a turn: on a slow link the adapter's news could otherwise keep this side listening
+    // for ever, and its keep-alives unsent.
     auto got = receive(wait);
-    while (got) {
+    for (int n = 1; got; ++n) {
         last_heard_ = clock::now();
         handle(*got);
-        got = receive(0ms);
+        got = n < 16 ? receive(0ms) : std::nullopt;
     }
+    keep_alive();
     if (clock::now() - last_heard_ > t_.silent)
         fail(std::uint64_t{taken_.taken} + 1, "the adapter stopped answering: time-out");
 }

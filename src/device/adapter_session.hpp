@@ -158,7 +158,8 @@ public:
     /// already sent go again only when their TAKEN did not come.
     void offer(std::uint32_t first, std::span<const std::uint8_t> frames);
     /// Drops the frames queued from `from` on that the control has not taken; waits for the adapter's TAKEN.
-    void discard(std::uint32_t from);
+    /// until_start: frames sent after wait for the control's next start (unless it started after from-1).
+    void discard(std::uint32_t from, bool until_start = false);
     /// Takes the adapter's news for up to wait, keeping its watchdog quiet. A fault (the watchdog's stop,
     /// an adapter no longer emulating, silence) throws Error(Errc::io).
     void pump_emulation(std::chrono::milliseconds wait);

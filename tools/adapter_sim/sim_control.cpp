@@ -50,9 +50,13 @@ void SimControl::strobe(std::uint64_t t, std::uint8_t frame, std::uint64_t slot_
         longest_gap_us_ = std::max(longest_gap_us_, t - last_strobe_);
     }
     last_strobe_ = t;
+    bool program_end = program_.feed(static_cast<char>(frame & 0x7F)) == tape::ProgramEndWatch::Event::program_end;
     if (!run_ || next_change_ != UINT64_MAX) return;
-    // A planned stop on this frame, or no room yet for the next one (a control slower than the reader).
-    if (next_stop_at_ && taken_.size() >= next_stop_at_) {
+    // The program's end, a planned stop on this frame, or no room yet for the next one (a control slower
+    // than the reader).
+    if (program_end && o_.stop_at_program_end) {
+        stop_at(t + o_.reaction_us, uniform(o_.pause_min_us, o_.pause_max_us));
+    } else if (next_stop_at_ && taken_.size() >= next_stop_at_) {
         --stops_left_;
         next_stop_at_ = stops_left_ ? taken_.size() + uniform(1, 2000) : 0;
         stop_at(t + o_.reaction_us, uniform(o_.pause_min_us, o_.pause_max_us));

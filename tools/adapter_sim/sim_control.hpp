@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "tape/line_state.hpp"
+
 namespace tapesim {
 
 struct ControlOptions {
@@ -21,6 +23,9 @@ struct ControlOptions {
     std::uint32_t reaction_us = 20;      ///< from the strobe of the frame it stops on to its stop line
     std::uint32_t seed = 1;
     bool running = true;  ///< asks for frames from the start
+    /// Stops at the end of a program (the block with M02/M30, read as ISO 7-bit) and starts again after a
+    /// pause, as a machinist's next cycle start: the program is read again from its '%'.
+    bool stop_at_program_end = true;
 };
 
 class SimControl {
@@ -57,7 +62,8 @@ private:
     std::vector<std::uint8_t> taken_;
     std::vector<std::uint32_t> after_stop_;
     std::uint64_t last_strobe_ = 0, started_at_ = 0, longest_gap_us_ = 0, longest_restart_us_ = 0, restarts_ = 0;
-    bool strobed_since_start_ = false, gap_open_ = false;
+    bool strobed_since_start_ = false;
+    tape::ProgramEndWatch program_;
     std::uint64_t uniform(std::uint64_t lo, std::uint64_t hi);
     void stop_at(std::uint64_t t, std::uint64_t pause_us);
 };
