@@ -45,7 +45,7 @@ public:
     static constexpr std::size_t stop_margin = 128;           ///< free rows left when the reader is stopped
     static constexpr std::uint32_t rows_flush_us = 10000;     ///< a partial ROWS packet waits at most this
     static constexpr std::uint32_t credit_every_us = 100000;  ///< CREDIT while the punch drains
-    static constexpr std::size_t emulate_ring = 256;          ///< frames queued for the control (a power of two)
+    static constexpr std::size_t emulate_ring = 1024;         ///< frames queued for the control (a power of two)
     static constexpr std::uint32_t taken_every_us = 20000;    ///< TAKEN while the control takes frames
     static constexpr std::uint32_t taken_idle_us = 100000;    ///< TAKEN while nothing changes (a heartbeat)
 

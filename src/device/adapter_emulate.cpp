@@ -13,8 +13,8 @@ namespace {
 using namespace std::chrono_literals;
 namespace db = tapefw::drive_bit;
 
-/// Frames held ahead of the control: the adapter's queue and a packet more.
-constexpr std::size_t window_frames = 512;
+/// Frames held ahead of the control: more than the adapter's queue holds.
+constexpr std::size_t window_frames = 2048;
 
 class AdapterReader {
 public:
