@@ -32,6 +32,13 @@ install(TARGETS tape-damage tape-adapter-sim RUNTIME DESTINATION ${CMAKE_INSTALL
 install(FILES ${TAPE_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions COMPONENT runtime)
 install(FILES data/eia-rs244.tab data/ita2.tab data/mtk2.tab DESTINATION ${CMAKE_INSTALL_DATADIR}/tape
         COMPONENT runtime)
+# tape dnc's systemd unit (with the installed binary's path) and its sample configuration; the unit goes to the
+# prefix's lib/systemd/system, systemd's own folder when the prefix is /usr.
+set(TAPE_BINDIR ${CMAKE_INSTALL_FULL_BINDIR})
+set(TAPE_DATADIR ${CMAKE_INSTALL_FULL_DATADIR}/tape)
+configure_file(packaging/tape-dnc.service.in ${PROJECT_BINARY_DIR}/tape-dnc.service @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/tape-dnc.service DESTINATION lib/systemd/system COMPONENT runtime)
+install(FILES packaging/dnc.toml DESTINATION ${CMAKE_INSTALL_DATADIR}/tape COMPONENT runtime)
 
 # The udev rule goes to the prefix's lib/udev/rules.d (not CMAKE_INSTALL_LIBDIR's multiarch folder): udev's
 # own folder when the prefix is /usr (a .deb), and a copy to put into /etc/udev/rules.d otherwise (README,

@@ -85,7 +85,12 @@ TEST(Restart, RealHaasProgram) {
     std::string path = std::string(TAPE_SOURCE_DIR) + "/../shared/data/outside2/haas/gcw_HAAS.nc";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path << " (the shared data is not beside the tree)";
     tape::RestartPlan p = tape::plan_restart(read_text(path), "N110");
-    EXPECT_EQ(p.start, "%\nO00094 ( HAAS )\n");
+    // The file's lines end CR LF, and the blocks made up for the restart end as its own do.
+    EXPECT_EQ(p.start, "%\r\nO00094 ( HAAS )\r\n");
+    EXPECT_EQ(p.line_end, "\r\n");
+    std::string header = p.header();
+    for (std::size_t i = header.find('\n'); i != std::string::npos; i = header.find('\n', i + 1))
+        EXPECT_TRUE(i > 0 && header[i - 1] == '\r') << "a bare LF at " << i << " of " << header;
     ASSERT_FALSE(p.modal.empty());
     EXPECT_EQ(p.modal.front(), "IF [ #5405 GE 6000 ] THEN #3000= 15");
     EXPECT_EQ(p.rest.rfind("N110 T3 M06", 0), 0u);

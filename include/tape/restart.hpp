@@ -21,8 +21,9 @@ struct RestartPlan {
     std::uint64_t line = 0;            ///< the block's line in the text, from 1
     std::uint64_t skipped_blocks = 0;  ///< blocks before it that are not sent
     Dialect dialect = Dialect::gost;   ///< the dialect the text was read in
+    std::string line_end = "\n";       ///< the program's own line end ("\r\n" for a CR LF text), for marker and modal
 
-    /// start, marker, modal and rest, each block ending with LF: the program to send.
+    /// start, marker, modal and rest, each block ending with the program's line end: the program to send.
     std::string text() const;
     /// start, marker and modal: what `tape feed --show` prints.
     std::string header() const;

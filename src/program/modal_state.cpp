@@ -433,8 +433,8 @@ void end_line(std::string& s) {
 }  // namespace
 
 std::string RestartPlan::header() const {
-    std::string out = start + marker + "\n";
-    for (const auto& b : modal) out += b + "\n";
+    std::string out = start + marker + line_end;
+    for (const auto& b : modal) out += b + line_end;
     return out;
 }
 
@@ -466,6 +466,9 @@ RestartPlan plan_restart(std::string_view text, std::string_view block, Dialect 
     auto state = walk.state().blocks();
     plan.modal.insert(plan.modal.end(), state.begin(), state.end());
     plan.rest = rest_of_program(tape, p, target);
+    // The blocks made up here end as the program's own lines do: a CR LF program stays CR LF.
+    auto lf = plan.rest.find('\n');
+    if (lf != std::string::npos && lf > 0 && plan.rest[lf - 1] == '\r') plan.line_end = "\r\n";
     return plan;
 }
 
