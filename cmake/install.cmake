@@ -85,11 +85,3 @@ install(CODE "set(TAPE_PC_IN \"${PROJECT_SOURCE_DIR}/tape_core.pc.in\")
   set(TAPE_PC_SANITIZE \"${TAPE_PC_SANITIZE}\")
   include(\"${PROJECT_SOURCE_DIR}/cmake/tape_core_pc.cmake\")" COMPONENT dev)
 install(FILES ${PROJECT_BINARY_DIR}/tape_core.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)
-
-# tape dnc's systemd unit (with the installed binary's path) and its sample configuration.
-set(TAPE_BINDIR ${CMAKE_INSTALL_FULL_BINDIR})
-set(TAPE_DATADIR ${CMAKE_INSTALL_FULL_DATADIR}/tape)
-configure_file(packaging/tape-dnc.service.in ${PROJECT_BINARY_DIR}/tape-dnc.service @ONLY)
-install(FILES ${PROJECT_BINARY_DIR}/tape-dnc.service DESTINATION ${CMAKE_INSTALL_PREFIX}/lib/systemd/system
-        COMPONENT runtime)
-install(FILES packaging/dnc.toml DESTINATION ${CMAKE_INSTALL_DATADIR}/tape COMPONENT runtime)
