@@ -256,3 +256,31 @@ TEST(AdapterEmulate, TheDataLinesCarryTheFramesInvertedAsWiredAndMaskedToTheTrac
     std::transform(tape.begin(), tape.end(), seven.begin(), [](std::uint8_t f) { return f & 0x7F; });
     EXPECT_EQ(b.hw.control()->taken(), seven);
 }
+
+TEST(AdapterEmulate, AfterADiscardUntilStartTheFramesWaitForTheControlsNextStartUnlessItCameAlready) {
+    auto tape = frames_of(3000);
+    Bench b({}, with_control({.running = false}), emulator());
+    Host h{b, tape, 100};
+    h.start();
+    b.engine.on_drive(drive_bit::run);
+    h.run(200'000);  // the control takes the 100 frames given and waits for more
+    ASSERT_EQ(b.hw.control()->taken().size(), 100u);
+    Packet p;
+    Discard{100, 1}.encode(p);
+    b.send(p);
+    h.limit = 200;
+    h.run(200'000);  // still running since before frame 100: the new frames wait
+    EXPECT_EQ(b.engine.frames_taken(), 100u);
+    b.engine.on_drive(0);
+    b.engine.on_drive(drive_bit::run);  // stopped and started again: they go
+    h.run(200'000);
+    EXPECT_EQ(b.engine.frames_taken(), 200u);
+    // A start that came after the last frame before `from` was taken counts: no wait.
+    b.engine.on_drive(0);
+    b.engine.on_drive(drive_bit::run);
+    Discard{200, 1}.encode(p);
+    b.send(p);
+    h.limit = 300;
+    h.run(200'000);
+    EXPECT_EQ(b.engine.frames_taken(), 300u);
+}
