@@ -9,14 +9,9 @@
 
 using namespace tapefw;
 using engine_host::Bench;
+using engine_host::test_tape;
 
 namespace {
-
-std::vector<std::uint8_t> frames_of(std::size_t n) {
-    std::vector<std::uint8_t> t(n);
-    for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<std::uint8_t>((i * 53 + i / 251) & 0xFF);
-    return t;
-}
 
 Identity emulator() {
     Identity id;
@@ -96,7 +91,7 @@ TEST(AdapterEmulate, AnAdapterWithoutTheRoleRefusesIt) {
 }
 
 TEST(AdapterEmulate, EveryFrameIsTakenOnceInOrderAndAStopWithinTheBrakingDistance) {
-    auto tape = frames_of(60000);
+    auto tape = test_tape(60000);
     for (std::uint8_t braking : {0, 1, 2}) {
         Bench b({}, with_control({.stops = 40, .seed = braking + 1u, .stop_at_program_end = false}), emulator());
         Wiring w;
@@ -120,7 +115,7 @@ TEST(AdapterEmulate, EveryFrameIsTakenOnceInOrderAndAStopWithinTheBrakingDistanc
 }
 
 TEST(AdapterEmulate, AHostThatStallsHoldsTheStrobeAndNoFrameIsWrongOrDoubled) {
-    auto tape = frames_of(6000);
+    auto tape = test_tape(6000);
     Bench b({}, with_control(), emulator());
     Packet p;
     Config slow;
@@ -139,7 +134,7 @@ TEST(AdapterEmulate, AHostThatStallsHoldsTheStrobeAndNoFrameIsWrongOrDoubled) {
 }
 
 TEST(AdapterEmulate, TheWatchdogStopsTheFramesAndSaysSoAgainAfterTheNextReset) {
-    auto tape = frames_of(6000);
+    auto tape = test_tape(6000);
     Bench b({}, with_control(), emulator());
     Host h{b, tape, 3000};
     h.start();
@@ -167,7 +162,7 @@ TEST(AdapterEmulate, TheWatchdogStopsTheFramesAndSaysSoAgainAfterTheNextReset) {
 }
 
 TEST(AdapterEmulate, AControlsTurnDropsTheQueueAndFramesForTheOldWayAreRefused) {
-    auto tape = frames_of(2000);
+    auto tape = test_tape(2000);
     Bench b({}, with_control({.running = false}), emulator());
     Host h{b, tape, tape.size()};
     h.start();
@@ -201,7 +196,7 @@ TEST(AdapterEmulate, AControlsTurnDropsTheQueueAndFramesForTheOldWayAreRefused) 
 }
 
 TEST(AdapterEmulate, DiscardDropsOnlyFramesNotYetTaken) {
-    auto tape = frames_of(2000);
+    auto tape = test_tape(2000);
     Bench b({}, with_control(), emulator());
     Host h{b, tape, 400};
     h.start();
@@ -241,7 +236,7 @@ TEST(AdapterEmulate, AWiringThatCannotWorkIsRefusedAndNoneWhileEmulating) {
 }
 
 TEST(AdapterEmulate, TheDataLinesCarryTheFramesInvertedAsWiredAndMaskedToTheTracks) {
-    auto tape = frames_of(600);
+    auto tape = test_tape(600);
     Bench b({}, with_control(), emulator());
     Wiring w;
     w.data_invert = 0x0F;
@@ -258,7 +253,7 @@ TEST(AdapterEmulate, TheDataLinesCarryTheFramesInvertedAsWiredAndMaskedToTheTrac
 }
 
 TEST(AdapterEmulate, AfterADiscardUntilStartTheFramesWaitForTheControlsNextStartUnlessItCameAlready) {
-    auto tape = frames_of(3000);
+    auto tape = test_tape(3000);
     Bench b({}, with_control({.running = false}), emulator());
     Host h{b, tape, 100};
     h.start();

@@ -16,14 +16,9 @@
 
 using namespace tapefw;
 using engine_host::Bench;
+using engine_host::test_tape;
 
 namespace {
-
-std::vector<std::uint8_t> test_tape(std::size_t n) {
-    std::vector<std::uint8_t> t(n);
-    for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<std::uint8_t>((i * 37 + i / 256) & 0xFF);
-    return t;
-}
 
 // Rows arrived in order, from first, into `into`; false at a gap or an overlap.
 bool take_rows(Bench& b, std::vector<std::uint8_t>& into, std::vector<std::uint32_t>* firsts = nullptr) {

@@ -15,6 +15,13 @@ namespace engine_host {
 
 using namespace tapefw;
 
+/// n frames of every value, in an order that repeats only after a long stretch.
+inline std::vector<std::uint8_t> test_tape(std::size_t n) {
+    std::vector<std::uint8_t> t(n);
+    for (std::size_t i = 0; i < n; ++i) t[i] = static_cast<std::uint8_t>((i * 37 + i / 256) & 0xFF);
+    return t;
+}
+
 // The adapter on a virtual clock with the test as its host.
 struct Bench {
     tapesim::SimHardware hw;

@@ -20,7 +20,7 @@ struct AdapterInfo {
     std::string firmware;  ///< "1.2.3"
     std::string serial;
     bool reader = false, punch = false, reverse = false, row_flags = false;
-    bool emulate = false;  ///< stands in for a tape reader toward a control (tape emulate)
+    bool emulate = false;                            ///< stands in for a tape reader toward a control (tape emulate)
     std::vector<int> tracks;                         ///< tape widths it handles, from 5 to 8
     unsigned max_read_rate = 0, max_punch_rate = 0;  ///< frames per second
     unsigned read_buffer = 0, punch_buffer = 0;      ///< rows
