@@ -176,7 +176,11 @@ void Session::handle(const Packet& p) {
                     ++bad_out_;
                     return;
                 case tapefw::ErrorCode::out_of_order:
-                    sent_to_ = std::min(sent_to_, e.frame);  // a PUNCH was lost: from the one expected
+                    // A PUNCH (or FRAMES) was lost: from the one expected.
+                    if (emulating_)
+                        emu_sent_to_ = std::min(emu_sent_to_, e.frame);
+                    else
+                        sent_to_ = std::min(sent_to_, e.frame);
                     return;
                 case tapefw::ErrorCode::resend_gone:
                     fail(expected_ + 1, "frames " + std::to_string(expected_ + 1) + "-" +
@@ -424,8 +428,8 @@ void Session::handle_taken(const Packet& p) {
     if (!emulating_ || !t.decode(p)) return;
     // After a turn of the control (or a DISCARD) the adapter expects frames from its next again.
     if (t.turn != taken_.turn || t.next < taken_.next) emu_sent_to_ = t.next;
+    if (t.next != taken_.next) last_taken_ = clock::now();
     taken_ = t;
-    last_taken_ = clock::now();
 }
 
 void Session::set_wiring(const tapefw::Wiring& wiring) {
@@ -458,7 +462,8 @@ void Session::stop_emulation() {
 void Session::offer(std::uint32_t first, std::span<const std::uint8_t> frames) {
     std::uint32_t end = first + static_cast<std::uint32_t>(frames.size());
     std::uint32_t limit = std::min(end, taken_.next + taken_.free);
-    // Frames sent but neither queued nor refused: a FRAMES or its TAKEN was lost; from the one expected again.
+    // Frames sent but not queued for a while (the adapter's TAKEN tells): a FRAMES was lost; from the one
+    // expected again.
     if (emu_sent_to_ > taken_.next && clock::now() - last_taken_ > t_.reply) {
         emu_sent_to_ = taken_.next;
         last_taken_ = clock::now();

@@ -227,7 +227,7 @@ private:
     bool emulating_ = false;
     tapefw::Taken taken_{};
     std::uint32_t emu_sent_to_ = 0;
-    clock::time_point last_taken_{};
+    clock::time_point last_taken_{};  ///< when the adapter's next frame expected last moved
     std::optional<tapefw::Status> orphaned_;
     void handle_taken(const tapefw::Packet& p);
 
