@@ -346,6 +346,42 @@ TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsP
     expect_clean(a);
 }
 
+// The control's own lines: its direction line reads backwards from where the tape stands, its rewind
+// line rewinds to the '%' stop.
+TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
+    TempDir dir;
+    auto frames = tape::encode("%\nN1 G01 X10 F100\nN2 X20 Y-5\nN3 G00 Z50\nN4 X0\nN5 Y0\n", {});
+    std::ofstream(dir.file("p.ptp"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+    std::vector<std::uint8_t> program(
+        std::find_if(frames.begin(), frames.end(), [](tape::Frame f) { return f != tape::blank_frame; }), frames.end());
+    auto o = options();
+    o.sim.control = tapesim::ControlOptions{.rewind_after = 70, .reverse_after = 40, .reverse_frames = 10};
+    fake::Adapter a(o);
+    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
+    struct Unset {
+        ~Unset() { ::unsetenv("LD_PRELOAD"); }
+    } unset;
+    Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
+    auto end = std::chrono::steady_clock::now() + 30s;
+    while (a.control_taken().size() < 100 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(20ms);
+    emulate.interrupt();
+    EXPECT_EQ(emulate.wait(20s), 0) << emulate.err();
+    auto taken = a.control_taken();
+    ASSERT_GE(taken.size(), 100u) << emulate.err();
+    // Each stop lets one frame more through (the braking distance): 40 forwards and one, 10 backwards
+    // and one (frames 40 down to 30), forwards again from frame 30 until 70 are taken and one, then
+    // from the '%' stop.
+    std::vector<std::uint8_t> expected(program.begin(), program.begin() + 41);
+    for (int i = 40; i >= 30; --i) expected.push_back(program[static_cast<std::size_t>(i)]);
+    expected.insert(expected.end(), program.begin() + 30, program.begin() + 49);
+    expected.insert(expected.end(), program.begin(), program.begin() + 29);
+    EXPECT_EQ(std::vector<std::uint8_t>(taken.begin(), taken.begin() + 100), expected);
+    EXPECT_NE(emulate.err().find("reading backwards"), std::string::npos) << emulate.err();
+    EXPECT_NE(emulate.err().find("the control's rewind line"), std::string::npos) << emulate.err();
+    expect_clean(a);
+}
+
 // A host gone while emulating: the adapter's watchdog stops the frames, and the next host hears of it.
 TEST_P(AdapterBackend, AnEmulationTheWatchdogEndedIsToldToTheNextHost) {
     auto o = options();

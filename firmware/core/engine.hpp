@@ -116,6 +116,7 @@ private:
     volatile std::uint8_t braking_left_ = 0;  ///< frames still allowed after the control's stop
     volatile std::uint8_t turn_ = 0;          ///< the control's turns (direction, rewind): the queue dropped
     volatile std::uint16_t stops_ = 0;
+    volatile std::uint8_t rewinds_ = 0;
     volatile std::uint32_t started_at_ = 0;  ///< frames taken at the control's last start
     volatile bool until_start_ = false;      ///< frames wait for the control's next start (DISCARD)
     Taken reported_{};                       ///< the last TAKEN sent

@@ -24,6 +24,8 @@ void Engine::on_drive(std::uint8_t lines) {
         turn_ = static_cast<std::uint8_t>(turn_ + 1);
         emu_next_ = emu_taken_;
     }
+    // Counted apart: a rewind set and released between two reports is still seen.
+    if (lines & ~was & drive_bit::rewind) rewinds_ = static_cast<std::uint8_t>(rewinds_ + 1);
     if ((was & drive_bit::run) && !(lines & drive_bit::run)) {
         stops_ = static_cast<std::uint16_t>(stops_ + 1);
         braking_left_ = turned ? 0 : wiring_.braking;
@@ -67,6 +69,7 @@ void Engine::start_emulation(const Packet& p) {
     emu_taken_ = emu_next_ = 0;
     turn_ = 0;
     stops_ = 0;
+    rewinds_ = 0;
     braking_left_ = 0;
     started_at_ = 0;
     until_start_ = false;
@@ -109,7 +112,8 @@ void Engine::discard_frames(const Packet& p) {
 }
 
 void Engine::report_taken(std::uint32_t now) {
-    bool changed = reported_.drive != drive_in_ || reported_.turn != turn_ || reported_.stops != stops_;
+    bool changed = reported_.drive != drive_in_ || reported_.turn != turn_ || reported_.stops != stops_ ||
+                   reported_.rewinds != rewinds_;
     bool moved = reported_.taken != emu_taken_ && elapsed(now, last_taken_us_, taken_every_us);
     if (changed || moved || elapsed(now, last_taken_us_, taken_idle_us)) send_taken(seq_++);
 }
@@ -122,6 +126,7 @@ bool Engine::send_taken(std::uint8_t seq) {
     t.drive = drive_in_;
     t.turn = turn_;
     t.stops = stops_;
+    t.rewinds = rewinds_;
     hw_.critical(false);
     t.free = static_cast<std::uint16_t>(emulate_ring - (t.next - t.taken));
     Packet out;

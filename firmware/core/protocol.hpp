@@ -208,12 +208,13 @@ struct Discard {
 
 /// TAKEN: every frame before `taken` the control has taken (strobed), in order, once.
 struct Taken {
-    std::uint32_t next = 0;   ///< the next frame the adapter expects (all before it are queued or taken)
-    std::uint32_t taken = 0;  ///< frames the control took
-    std::uint16_t free = 0;   ///< frames the queue can still take
-    std::uint8_t drive = 0;   ///< drive_bit bits: the control's lines now
-    std::uint8_t turn = 0;    ///< counts the control's turns (direction or rewind changed): queue dropped
-    std::uint16_t stops = 0;  ///< the control's stops so far (wraps)
+    std::uint32_t next = 0;    ///< the next frame the adapter expects (all before it are queued or taken)
+    std::uint32_t taken = 0;   ///< frames the control took
+    std::uint16_t free = 0;    ///< frames the queue can still take
+    std::uint8_t drive = 0;    ///< drive_bit bits: the control's lines now
+    std::uint8_t turn = 0;     ///< counts the control's turns (direction or rewind changed): queue dropped
+    std::uint16_t stops = 0;   ///< the control's stops so far (wraps)
+    std::uint8_t rewinds = 0;  ///< the control's rewinds so far (its rewind line set; wraps)
     bool encode(Packet& p) const;
     bool decode(const Packet& p);
 };

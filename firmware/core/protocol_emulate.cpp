@@ -95,6 +95,7 @@ bool Taken::encode(Packet& p) const {
     w.u8(drive);
     w.u8(turn);
     w.u16(stops);
+    w.u8(rewinds);
     return w.ok;
 }
 
@@ -107,6 +108,7 @@ bool Taken::decode(const Packet& p) {
     drive = r.u8();
     turn = r.u8();
     stops = r.u16();
+    rewinds = r.u8();
     return r.done() && taken <= next;
 }
 

@@ -54,6 +54,7 @@ private:
     std::size_t head_ = 0;    ///< where the tape stands after the frames taken (between frames)
     std::size_t cursor_ = 0;  ///< where the next frame held comes from
     bool backwards_ = false;
+    bool was_backwards_ = false;   ///< the way last said
     bool at_program_end_ = false;  ///< frames held up to the program's end: none after it
     bool ended_said_ = false;
     ProgramEndWatch taken_watch_, held_watch_;
@@ -95,8 +96,9 @@ private:
         r_.starts = r_.stops + ((t.drive & db::run) ? 1 : 0);
         if ((t.drive ^ seen_.drive) & db::run) log((t.drive & db::run) ? "start" : "stop");
         bool turned = t.turn != seen_.turn;
+        bool rewound = t.rewinds != seen_.rewinds;
         seen_ = t;
-        if (turned) turn(t.drive);
+        if (turned) turn(t.drive, rewound);
         if (!backwards_ && head_ >= tape_.size() && base_ == t.next && !ended_said_) {
             ended_said_ = true;
             log("end of tape");
@@ -133,16 +135,20 @@ private:
         log("rewound to the '%' stop");
     }
 
-    // The control's direction or rewind line changed: the adapter dropped the frames it held.
-    void turn(std::uint8_t drive) {
-        if (drive & db::rewind) {
-            restart_from(seek_rewind_stop(tape_, head_, code_), false, false);
+    // The control's direction or rewind line changed: the adapter dropped the frames it held. A rewind
+    // (counted by the adapter, so that one set and released between two reports is seen) puts the tape
+    // at its '%' stop; the direction line says which way it reads from where it stands.
+    void turn(std::uint8_t drive, bool rewound) {
+        std::size_t place = head_;
+        if (rewound) {
+            place = seek_rewind_stop(tape_, head_, code_);
             ++r_.rewinds;
-            log("rewound to the '%' stop (the control's rewind line)");
-        } else {
-            restart_from(head_, (drive & db::reverse) != 0, false);
-            log((drive & db::reverse) ? "reading backwards" : "reading forwards");
         }
+        bool backwards = (drive & db::reverse) != 0;
+        restart_from(place, backwards, false);
+        if (rewound) log("rewound to the '%' stop (the control's rewind line)");
+        if (backwards != was_backwards_) log(backwards ? "reading backwards" : "reading forwards");
+        was_backwards_ = backwards;
     }
 
     void report(std::chrono::steady_clock::time_point began) {

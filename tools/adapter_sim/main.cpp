@@ -31,7 +31,7 @@ struct SimArgs {
     double speed = 1, read_rate = 1500, punch_rate = 150;
     std::uint32_t stop_frames = 1;
     double control_rate = 1500;
-    std::uint64_t control_stops = 0;
+    std::uint64_t control_stops = 0, control_rewind_after = 0, control_reverse_after = 0, control_reverse_frames = 10;
     std::uint32_t control_seed = 1;
     std::uint64_t unplug_after = 0, torn_at = 0, chad_full_after = 0;
     std::vector<std::uint64_t> miss_hole_at, no_sprocket_at, mistimed_at, marginal_at;
@@ -100,7 +100,12 @@ tapesim::SimOptions sim_options(const SimArgs& a) {
     so.active_low = static_cast<std::uint8_t>(a.active_low);
     so.head_at_end = a.at_end;
     if (!a.control.empty())
-        so.control = tapesim::ControlOptions{.rate = a.control_rate, .stops = a.control_stops, .seed = a.control_seed};
+        so.control = tapesim::ControlOptions{.rate = a.control_rate,
+                                             .stops = a.control_stops,
+                                             .seed = a.control_seed,
+                                             .rewind_after = a.control_rewind_after,
+                                             .reverse_after = a.control_reverse_after,
+                                             .reverse_frames = a.control_reverse_frames};
     for (auto [frames, flag] :
          {std::pair{&a.no_sprocket_at, tapefw::row_flag::no_sprocket},
           std::pair{&a.mistimed_at, tapefw::row_flag::timing}, std::pair{&a.marginal_at, tapefw::row_flag::marginal}})
@@ -329,6 +334,17 @@ void add_unit_options(CLI::App& app, SimArgs& a) {
                    "again after a random 2 to 30 ms")
         ->check(whole_number(0, 1'000'000'000));
     app.add_option("--control-seed", a.control_seed, "Seed of the control's random stops")->capture_default_str();
+    app.add_option("--control-rewind-after", a.control_rewind_after,
+                   "Once, after taking N frames, the control stops, rewinds (its rewind line on and off) and starts "
+                   "again")
+        ->check(whole_number(1, 1'000'000'000));
+    app.add_option("--control-reverse-after", a.control_reverse_after,
+                   "Once, after taking N frames, the control reads backwards for --control-reverse-frames frames, "
+                   "then forwards again")
+        ->check(whole_number(1, 1'000'000'000));
+    app.add_option("--control-reverse-frames", a.control_reverse_frames, "Frames the control reads backwards")
+        ->check(whole_number(1, 1'000'000'000))
+        ->capture_default_str();
     app.add_flag("--no-reader", a.no_reader, "An adapter with a punch only");
     app.add_flag("--no-punch", a.no_punch, "An adapter with a reader only");
     app.add_flag("--no-reverse", a.no_reverse, "A reader that cannot read backwards");

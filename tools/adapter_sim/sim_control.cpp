@@ -9,7 +9,7 @@ namespace tapesim {
 SimControl::SimControl(ControlOptions options)
     : o_(options),
       rng_(options.seed),
-      run_(options.running),
+      lines_(options.running ? 1 : 0),
       stops_left_(options.stops),
       period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.rate))) {
     if (stops_left_) next_stop_at_ = uniform(1, 2000);
@@ -21,27 +21,57 @@ std::uint64_t SimControl::uniform(std::uint64_t lo, std::uint64_t hi) {
 
 std::uint8_t SimControl::change(std::uint64_t t) {
     if (t < next_change_) return lines();
+    bool was_running = running();
+    lines_ = next_lines_;
     next_change_ = UINT64_MAX;
-    run_ = !run_;
-    if (run_) {
+    if (!steps_.empty()) {
+        next_change_ = t + steps_.front().first;
+        next_lines_ = steps_.front().second;
+        steps_.pop_front();
+    }
+    if (running() && !was_running) {
         started_at_ = t;
         strobed_since_start_ = false;
         ++restarts_;
-    } else {
+    } else if (!running() && was_running) {
         after_stop_.push_back(0);
-        next_change_ = t + pending_pause_us_;
     }
     return lines();
 }
 
-void SimControl::stop_at(std::uint64_t t, std::uint64_t pause_us) {
+void SimControl::plan(std::uint64_t t, std::uint8_t lines, std::deque<std::pair<std::uint64_t, std::uint8_t>> steps) {
     next_change_ = t;
-    pending_pause_us_ = pause_us;
+    next_lines_ = lines;
+    steps_ = std::move(steps);
+}
+
+void SimControl::stop_at(std::uint64_t t, std::uint64_t pause_us) {
+    std::uint8_t stopped = static_cast<std::uint8_t>(lines_ & ~1);
+    plan(t, stopped, {{pause_us, static_cast<std::uint8_t>(stopped | 1)}});
+}
+
+bool SimControl::plan_turn(std::uint64_t t) {
+    constexpr std::uint8_t run = 1, reverse = 2, rewind = 4;
+    std::uint64_t n = taken_.size();
+    std::uint64_t at = t + o_.reaction_us;
+    if (o_.rewind_after && n >= o_.rewind_after && !rewound_) {
+        rewound_ = true;
+        plan(at, 0, {{1000, rewind}, {1000, 0}, {1000, run}});
+    } else if (o_.reverse_after && n >= o_.reverse_after && !reversed_) {
+        reversed_ = true;
+        reverse_left_ = o_.reverse_frames;
+        plan(at, 0, {{1000, reverse}, {1000, reverse | run}});
+    } else if (reverse_left_ && --reverse_left_ == 0) {
+        plan(at, reverse, {{1000, 0}, {1000, run}});
+    } else {
+        return false;
+    }
+    return true;
 }
 
 void SimControl::strobe(std::uint64_t t, std::uint8_t frame, std::uint64_t slot_us) {
     taken_.push_back(frame);
-    if (!run_) {
+    if (!running()) {
         if (!after_stop_.empty()) ++after_stop_.back();
     } else if (!strobed_since_start_) {
         if (restarts_) longest_restart_us_ = std::max(longest_restart_us_, t - started_at_);
@@ -51,7 +81,7 @@ void SimControl::strobe(std::uint64_t t, std::uint8_t frame, std::uint64_t slot_
     }
     last_strobe_ = t;
     bool program_end = program_.feed(static_cast<char>(frame & 0x7F)) == tape::ProgramEndWatch::Event::program_end;
-    if (!run_ || next_change_ != UINT64_MAX) return;
+    if (!running() || next_change_ != UINT64_MAX || plan_turn(t)) return;
     // The program's end, a planned stop on this frame, or no room yet for the next one (a control slower
     // than the reader).
     if (program_end && o_.stop_at_program_end) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <random>
 #include <string>
 #include <vector>
@@ -26,14 +27,21 @@ struct ControlOptions {
     /// Stops at the end of a program (the block with M02/M30, read as ISO 7-bit) and starts again after a
     /// pause, as a machinist's next cycle start: the program is read again from its '%'.
     bool stop_at_program_end = true;
+    /// Once, after taking this many frames (0: never): stops, rewinds (its rewind line on and off) and
+    /// starts again.
+    std::uint64_t rewind_after = 0;
+    /// Once, after taking this many frames (0: never): stops, turns the reader backwards for
+    /// reverse_frames frames, stops, and reads forwards again.
+    std::uint64_t reverse_after = 0;
+    std::uint64_t reverse_frames = 10;
 };
 
 class SimControl {
 public:
     explicit SimControl(ControlOptions options);
 
-    /// The start/stop line now (drive_bit::run when it wants frames).
-    std::uint8_t lines() const { return run_ ? 1 : 0; }
+    /// Its drive lines now (tapefw::drive_bit: run when it wants frames, reverse, rewind).
+    std::uint8_t lines() const { return lines_; }
     /// When its lines change next on their own (a stop or a restart due), or UINT64_MAX.
     std::uint64_t next_change() const { return next_change_; }
     /// Changes its lines as due at time t; the new lines.
@@ -53,9 +61,13 @@ public:
 private:
     ControlOptions o_;
     std::mt19937 rng_;
-    bool run_;
+    std::uint8_t lines_;
     std::uint64_t next_change_ = UINT64_MAX;
-    std::uint64_t pending_pause_us_ = 0;  ///< how long the stop due lasts
+    /// Line changes to come after the next one: each its delay after the one before, and the lines.
+    std::deque<std::pair<std::uint64_t, std::uint8_t>> steps_;
+    std::uint8_t next_lines_ = 0;              ///< the lines at next_change_
+    std::uint64_t reverse_left_ = 0;           ///< frames still to read backwards
+    bool rewound_ = false, reversed_ = false;  ///< the planned turns done
     std::uint64_t stops_left_;
     std::uint64_t next_stop_at_ = 0;  ///< stops after taking this many frames (0: no planned stop)
     std::uint64_t period_us_;
@@ -65,7 +77,12 @@ private:
     bool strobed_since_start_ = false;
     tape::ProgramEndWatch program_;
     std::uint64_t uniform(std::uint64_t lo, std::uint64_t hi);
+    bool running() const { return (lines_ & 1) != 0; }
+    /// Lines at t, then the steps after it.
+    void plan(std::uint64_t t, std::uint8_t lines, std::deque<std::pair<std::uint64_t, std::uint8_t>> steps);
     void stop_at(std::uint64_t t, std::uint64_t pause_us);
+    /// A planned turn (rewind or reverse) due after this frame, planned; false when none.
+    bool plan_turn(std::uint64_t t);
 };
 
 }  // namespace tapesim
