@@ -38,7 +38,8 @@ void add_devices(CLI::App& app) {
                 auto i = tape::adapter_info(p.device);
                 out += "\tprotocol " + std::to_string(i.protocol) + ", firmware " + i.firmware +
                        (i.reader ? ", reader " + std::to_string(i.max_read_rate) + " frames/s" : "") +
-                       (i.punch ? ", punch " + std::to_string(i.max_punch_rate) + " rows/s" : "") + "\n";
+                       (i.punch ? ", punch " + std::to_string(i.max_punch_rate) + " rows/s" : "") +
+                       (i.emulate ? ", emulates a reader" : "") + "\n";
             } catch (const tape::Error& e) {
                 out += "\tno answer: " + std::string(e.what()) + "\n";
             }
