@@ -78,10 +78,11 @@ Session::Session(std::unique_ptr<PacketPipe> pipe, SessionTiming timing) : pipe_
 }
 
 Session::~Session() {
-    if (!reading_) return;
+    if (!reading_ && !emulating_) return;
     try {
+        // A run ended by a fault on this side: the reader stopped, or the control given no more frames.
         Packet p;
-        p.type = static_cast<std::uint8_t>(Msg::read_stop);
+        p.type = static_cast<std::uint8_t>(reading_ ? Msg::read_stop : Msg::reset);
         send(p);
     } catch (const Error&) {  // an adapter already gone has no reader to stop
     }
