@@ -34,6 +34,12 @@ std::string msg_name(std::uint8_t type) {
             return "RESET";
         case Msg::echo:
             return "ECHO";
+        case Msg::wiring:
+            return "WIRING";
+        case Msg::emulate:
+            return "EMULATE";
+        case Msg::discard:
+            return "DISCARD";
         default:
             return "message " + std::to_string(type);
     }
@@ -80,10 +86,11 @@ Session::Session(std::unique_ptr<PacketPipe> pipe, SessionTiming timing) : pipe_
 }
 
 Session::~Session() {
-    // A run ended before its end (Ctrl-C, a failure): the reader is stopped, and a punch with rows
-    // still queued is reset, so that it stops now and not when its queue has run out.
+    // A run ended before its end (Ctrl-C, a failure): the reader is stopped, a punch with rows still
+    // queued is reset, so that it stops now and not when its queue has run out, and an emulating adapter
+    // gives the control no more frames.
     bool punch_left = punching_ && punched_ < rows_queued() + feeds_;
-    if (!reading_ && !punch_left) return;
+    if (!reading_ && !punch_left && !emulating_) return;
     try {
         Packet p;
         p.type = static_cast<std::uint8_t>(reading_ ? Msg::read_stop : Msg::reset);
@@ -94,7 +101,7 @@ Session::~Session() {
 
 void Session::fail(std::uint64_t frame, const std::string& what) const {
     // Before a run has started no frame is concerned: opening, info, self-test.
-    bool run = reading_ || punching_ || expected_ > 0;
+    bool run = reading_ || punching_ || expected_ > 0 || emulating_;
     throw Error(Errc::io, name() + ": " + (run ? "frame " + std::to_string(frame) + ": " : "") + what);
 }
 
@@ -114,7 +121,10 @@ void Session::heard() {
     bad_when_heard_ = pipe_->bad_packets();
 }
 
-std::uint64_t Session::position() const { return (reading_ || !punching_ ? expected_ : punched_) + 1; }
+std::uint64_t Session::position() const {
+    if (emulating_) return std::uint64_t{taken_.taken} + 1;
+    return (reading_ || !punching_ ? expected_ : punched_) + 1;
+}
 
 // The pipe's failures (an adapter unplugged) get the frame position the session knows.
 [[noreturn]] void Session::rethrow(const Error& e) const {
@@ -178,6 +188,8 @@ void Session::handle(const Packet& p) {
             return handle_rows(p);
         case Msg::status:
             return handle_status(p);
+        case Msg::taken:
+            return handle_taken(p);
         case Msg::credit:
             return handle_credit(p);
         case Msg::error: {
@@ -189,8 +201,12 @@ void Session::handle(const Packet& p) {
                     ++bad_out_;
                     return;
                 case tapefw::ErrorCode::out_of_order:
-                    // A PUNCH was lost: from the one expected. One the adapter has taken since (this error
-                    // overtaken by a CREDIT) is stale; one never sent cannot be expected.
+                    // A PUNCH (or FRAMES) was lost: from the one expected. One the adapter has taken since
+                    // (this error overtaken by a CREDIT) is stale; one never sent cannot be expected.
+                    if (emulating_) {
+                        emu_sent_to_ = std::min(emu_sent_to_, e.frame);
+                        return;
+                    }
                     if (e.frame > rows_queued())
                         protocol_error(e.frame + 1, "the adapter expects punch row " + std::to_string(e.frame + 1) +
                                                         ", and only " + std::to_string(rows_queued()) + " were sent");
@@ -200,6 +216,9 @@ void Session::handle(const Packet& p) {
                     fail(expected_ + 1, "frames " + std::to_string(expected_ + 1) + "-" +
                                             std::to_string(gap_end_.value_or(expected_ + 1)) +
                                             " lost: the adapter no longer holds them");
+                case tapefw::ErrorCode::not_emulating:
+                    if (!emulating_) return;  // a FRAMES of a session already ended
+                    fail(std::uint64_t{e.frame} + 1, "the adapter is no longer emulating the reader");
                 case tapefw::ErrorCode::overrun:
                     if (!pending_) pending_ = Pending{e.frame, "the adapter's buffer overran: frames lost from here"};
                     return;
@@ -294,9 +313,17 @@ void Session::handle_status(const Packet& p) {
         }
         return;
     }
+    if (emulating_) {
+        if (s.bits & (st::watchdog | st::offline | st::motor_fault))
+            fail(std::uint64_t{s.frame} + 1,
+                 fault_text(s.bits) + "; " + std::to_string(s.frame) + " frame(s) taken by the control");
+        return;
+    }
     if (punching_ || feeds_) {
         std::uint16_t stop = st::punch_tape_out | st::chad_full | st::motor_fault | st::offline | st::watchdog;
         if (s.bits & stop) fail(std::uint64_t{s.frame} + 1, fault_text(s.bits & stop));
+    } else if (!expected_ && (s.bits & st::watchdog)) {
+        orphaned_ = s;  // told after this session's RESET: a run of a host that was gone
     }
 }
 
@@ -463,6 +490,88 @@ void Session::drain() {
                          " s: time-out"));
         }
     }
+}
+
+void Session::handle_taken(const Packet& p) {
+    tapefw::Taken t;
+    if (!emulating_ || !t.decode(p)) return;
+    // After a turn of the control (or a DISCARD) the adapter expects frames from its next again.
+    if (t.turn != taken_.turn || t.next < taken_.next) emu_sent_to_ = t.next;
+    if (t.next != taken_.next) last_taken_ = clock::now();
+    taken_ = t;
+}
+
+void Session::set_wiring(const tapefw::Wiring& wiring) {
+    Packet p;
+    wiring.encode(p);
+    request(p, Msg::ok);
+}
+
+void Session::start_emulation() {
+    if (!(info_.capabilities & tapefw::caps::emulate))
+        fail(0, "this adapter cannot stand in for a tape reader (no emulate role)");
+    Packet p;
+    p.type = static_cast<std::uint8_t>(Msg::emulate);
+    taken_ = tapefw::Taken{};
+    taken_.free = 0;
+    emu_sent_to_ = 0;
+    request(p, Msg::ok);
+    emulating_ = true;
+    heard();
+    last_taken_ = clock::now();
+}
+
+void Session::stop_emulation() {
+    if (!emulating_) return;
+    emulating_ = false;
+    Packet p;
+    p.type = static_cast<std::uint8_t>(Msg::reset);
+    request(p, Msg::ok);
+}
+
+void Session::offer(std::uint32_t first, std::span<const std::uint8_t> frames) {
+    std::uint32_t end = first + static_cast<std::uint32_t>(frames.size());
+    std::uint32_t limit = std::min(end, taken_.next + taken_.free);
+    // Frames sent but not queued for a while (the adapter's TAKEN tells): a FRAMES was lost; from the one
+    // expected again.
+    if (emu_sent_to_ > taken_.next && clock::now() - last_taken_ > t_.reply) {
+        emu_sent_to_ = taken_.next;
+        last_taken_ = clock::now();
+    }
+    emu_sent_to_ = std::max({emu_sent_to_, taken_.next, first});
+    while (emu_sent_to_ < limit) {
+        tapefw::Frames f;
+        f.first = emu_sent_to_;
+        f.turn = taken_.turn;
+        f.count = static_cast<std::uint8_t>(std::min<std::uint32_t>(tapefw::Frames::max_frames, limit - emu_sent_to_));
+        std::copy_n(frames.begin() + (emu_sent_to_ - first), f.count, f.frames);
+        Packet p;
+        f.encode(p);
+        send(p);
+        emu_sent_to_ += f.count;
+    }
+}
+
+void Session::discard(std::uint32_t from, bool until_start) {
+    Packet p;
+    tapefw::Discard{from, static_cast<std::uint8_t>(until_start)}.encode(p);
+    handle_taken(request(p, Msg::taken));
+    emu_sent_to_ = taken_.next;
+}
+
+void Session::pump_emulation(std::chrono::milliseconds wait) {
+    keep_alive();
+    // A few packets a turn: on a slow link the adapter's news could otherwise keep this side listening
+    // for ever, and its keep-alives unsent.
+    auto got = receive(wait);
+    for (int n = 1; got; ++n) {
+        heard();
+        handle(*got);
+        got = n < 16 ? receive(0ms) : std::nullopt;
+    }
+    keep_alive();
+    if (clock::now() - last_heard_ > t_.silent)
+        fail(std::uint64_t{taken_.taken} + 1, silence("the adapter stopped answering: time-out"));
 }
 
 std::vector<std::uint8_t> Session::echo(std::span<const std::uint8_t> payload) {

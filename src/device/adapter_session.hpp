@@ -96,6 +96,14 @@ tapefw::Config to_wire(const AdapterConfig& config);
 /// way asked; sends settings.config.
 std::unique_ptr<Transport> open_transport(std::unique_ptr<PacketPipe> pipe, const Settings& settings, DeviceUse use);
 
+/// The pipe to the adapter device names, and its settings (checked before anything is opened).
+std::unique_ptr<PacketPipe> open_pipe(std::string_view device, DeviceUse use, Settings& settings);
+
+class Session;
+/// Refuses (Error(Errc::io)) an adapter whose serial is not settings.serial, or without the reader
+/// (use read) or the punch (use write) asked for; sends settings.config.
+void apply_settings(Session& session, const Settings& settings, DeviceUse use);
+
 /// Timing of the host's side; tests shorten nothing, they are the protocol's own numbers.
 struct SessionTiming {
     std::chrono::milliseconds reply{300};         ///< wait for a reply before asking again
@@ -138,6 +146,27 @@ public:
     ReadResult punch_input(std::chrono::milliseconds timeout);
     /// The payload echoed back, or an error. For the link self-test.
     std::vector<std::uint8_t> echo(std::span<const std::uint8_t> payload);
+
+    // Emulating: the adapter stands in for a reader toward a control (docs/adapter-protocol.md).
+    /// Sends the wiring (WIRING) and waits for its OK.
+    void set_wiring(const tapefw::Wiring& wiring);
+    /// Starts an EMULATE session, frames numbered from 0. Throws when the adapter has no emulate role.
+    void start_emulation();
+    /// Ends it (RESET): the control sees the reader stand.
+    void stop_emulation();
+    /// What the adapter last said of the control: frames taken, room, its drive lines and turns.
+    const tapefw::Taken& taken() const { return taken_; }
+    /// Sends the frames numbered first.. (those not yet taken) as far as the adapter has room; frames
+    /// already sent go again only when their TAKEN did not come.
+    void offer(std::uint32_t first, std::span<const std::uint8_t> frames);
+    /// Drops the frames queued from `from` on that the control has not taken; waits for the adapter's TAKEN.
+    /// until_start: frames sent after wait for the control's next start (unless it started after from-1).
+    void discard(std::uint32_t from, bool until_start = false);
+    /// Takes the adapter's news for up to wait, keeping its watchdog quiet. A fault (the watchdog's stop,
+    /// an adapter no longer emulating, silence) throws Error(Errc::io).
+    void pump_emulation(std::chrono::milliseconds wait);
+    /// A run the adapter's watchdog ended while no host listened, as it said after this session's RESET.
+    const std::optional<tapefw::Status>& orphaned() const { return orphaned_; }
 
     /// Rows read or punched so far.
     std::uint64_t rows_read() const { return expected_; }
@@ -200,6 +229,14 @@ private:
     std::uint32_t credit_free_ = 0;
     clock::time_point last_credit_{};
     std::uint32_t feeds_ = 0;
+
+    // Emulating.
+    bool emulating_ = false;
+    tapefw::Taken taken_{};
+    std::uint32_t emu_sent_to_ = 0;
+    clock::time_point last_taken_{};  ///< when the adapter's next frame expected last moved
+    std::optional<tapefw::Status> orphaned_;
+    void handle_taken(const tapefw::Packet& p);
 
     std::uint8_t send(tapefw::Packet p);
     std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout);

@@ -175,21 +175,25 @@ adapter::Settings adapter::settings_of(const DeviceQuery& q, DeviceUse use) {
 
 std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> pipe, const Settings& s, DeviceUse use) {
     auto t = std::make_unique<AdapterTransport>(std::move(pipe), use, s.start);
-    // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
-    const tapefw::Info& info = t->session().info();
-    if (s.serial && *s.serial != info.serial)
-        throw Error(Errc::io, t->name() + ": this adapter's serial is " + info.serial + ", not " + *s.serial);
     // Refused before anything is read or written, as the adapter would refuse its READ_START.
-    if (s.start.reverse && !(info.capabilities & tapefw::caps::reverse))
+    if (s.start.reverse && !(t->session().info().capabilities & tapefw::caps::reverse))
         throw Error(Errc::io, t->name() + ": this adapter's reader cannot read backwards (direction=reverse)");
+    apply_settings(t->session(), s, use);
+    t->set_tracks(unit_tracks(t->session().info(), s.config));
+    return t;
+}
+
+void adapter::apply_settings(Session& session, const Settings& s, DeviceUse use) {
+    // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
+    const tapefw::Info& info = session.info();
+    if (s.serial && *s.serial != info.serial)
+        throw Error(Errc::io, session.name() + ": this adapter's serial is " + info.serial + ", not " + *s.serial);
     // An adapter without the reader or the punch asked for is refused before any output is created.
     if (use == DeviceUse::read && !(info.capabilities & tapefw::caps::reader))
-        throw Error(Errc::io, t->name() + ": this adapter has no reader");
+        throw Error(Errc::io, session.name() + ": this adapter has no reader");
     if (use == DeviceUse::write && !(info.capabilities & tapefw::caps::punch))
-        throw Error(Errc::io, t->name() + ": this adapter has no punch");
-    if (s.config) t->session().configure(*s.config);
-    t->set_tracks(unit_tracks(info, s.config));
-    return t;
+        throw Error(Errc::io, session.name() + ": this adapter has no punch");
+    if (s.config) session.configure(*s.config);
 }
 
 adapter::UsbId adapter::usb_id(std::string_view backend, const DeviceQuery& q) {

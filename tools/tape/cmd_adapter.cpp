@@ -2,6 +2,7 @@
 // and its link measured.
 #include <cstdio>
 
+#include "adapter_wiring.hpp"
 #include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "cli/outputs.hpp"
@@ -27,6 +28,7 @@ std::string info_text(const tape::AdapterInfo& i) {
            "\n";
     out += "punch\t" + std::string(i.punch ? "yes" : "no") +
            (i.punch ? ", " + std::to_string(i.max_punch_rate) + " rows/s" : "") + "\n";
+    out += "emulate\t" + std::string(i.emulate ? "yes, stands in for a reader toward a control" : "no") + "\n";
     out += "tracks\t" + tracks + "\n";
     out += "buffers\t" + std::to_string(i.read_buffer) + " rows read, " + std::to_string(i.punch_buffer) +
            " rows to punch\n";
@@ -59,7 +61,8 @@ void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
     auto* cfg = sub.add_subcommand(
         "config",
         "Send the adapter its unit's line settings (a CONFIG: every setting at once, defaults for those "
-        "not given) and print them");
+        "not given) and, when any emulate option is given, how it is wired to a control's reader input (a WIRING), "
+        "and print them");
     cfg->add_option("device", *device, "Device string: adapter:/dev/ttyACM0")->required();
     cfg->add_option("--invert", c->data_invert,
                     "Data lines that read a hole as a low level: a mask, bit n for track n+1")
@@ -96,15 +99,22 @@ void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
                     "Milliseconds the host may be silent before the adapter stops reader and punch (0: never)")
         ->check(whole_number(0, 65535))
         ->capture_default_str();
-    cfg->callback([device, c, strobe, drive] {
+    auto wiring = std::make_shared<WiringArgs>();
+    add_wiring_options(*cfg, wiring);
+    cfg->callback([device, c, strobe, drive, wiring, cfg] {
         c->strobe_falling = *strobe == "falling";
         c->drive_pulse = *drive == "pulse";
+        finish_wiring(*cfg, *wiring, c->tracks);
+        // Checked before anything is sent: a refused wiring leaves the line settings as they were.
+        if (auto problem = tape::adapter_wiring_problem(wiring->wiring); wiring->given && !problem.empty())
+            fail("", tape::Errc::usage, "the emulate wiring: " + problem);
         try {
             tape::adapter_configure(*device, *c);
+            if (wiring->given) tape::adapter_configure_emulation(*device, wiring->wiring);
         } catch (const tape::Error& e) {
             fail("", e);
         }
-        write_output("-", config_text(*c), false, false);
+        write_output("-", config_text(*c) + (wiring->given ? wiring_text(wiring->wiring) : ""), false, false);
     });
 }
 

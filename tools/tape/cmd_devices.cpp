@@ -41,7 +41,8 @@ void add_devices(CLI::App& app) {
                 auto i = tape::adapter_info(p.device);
                 out += "\tprotocol " + std::to_string(i.protocol) + ", firmware " + tape::visible(i.firmware) +
                        (i.reader ? ", reader " + std::to_string(i.max_read_rate) + " frames/s" : "") +
-                       (i.punch ? ", punch " + std::to_string(i.max_punch_rate) + " rows/s" : "") + "\n";
+                       (i.punch ? ", punch " + std::to_string(i.max_punch_rate) + " rows/s" : "") +
+                       (i.emulate ? ", emulates a reader" : "") + "\n";
             } catch (const tape::Error& e) {
                 out += "\tno answer: " + tape::visible(e.what()) + "\n";
             }
