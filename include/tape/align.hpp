@@ -12,12 +12,13 @@
 
 #include "tape/error.hpp"
 #include "tape/frame.hpp"
+#include "tape/limits.hpp"
 
 namespace tape {
 
 /// The longest read align_reads takes, in frames: 10^8 frames is 254 km of tape, more than any reel
 /// holds; a longer input is no read of a paper tape.
-inline constexpr std::size_t max_read_frames = 100'000'000;
+inline constexpr std::size_t max_read_frames = max_tape_frames;
 
 struct AlignOptions {
     std::size_t anchor_length = 12;  ///< frames in an anchor: a run that occurs once in each read

@@ -1,5 +1,5 @@
-// The reads of tape restore, tape diff and tape-damage: each read whole, named by its file, and refused above the
-// frames any paper tape holds (tape::max_read_frames) before it is held in memory.
+// The reads of tape restore, tape diff and tape-damage: each read whole (cli/inputs.hpp's read_tape, which
+// refuses what no paper tape holds before it is held in memory), and what is said of one unrelated.
 #pragma once
 
 #include <string>
@@ -10,12 +10,7 @@
 
 namespace cli {
 
-/// READ read whole as a tape image ("-": standard input), in format_id (empty: by extension or content).
-/// A file of more than tape::max_read_frames frames is refused (bad data) with a message saying the
-/// limit: a raw image by its size before it is read, any other as soon as it passes the limit.
-TapeInput read_bounded(const std::string& path, const std::string& format_id = "");
-
-/// Every read, in order.
+/// Every read, in order, each read whole by read_tape (refused beyond tape::max_tape_frames).
 std::vector<TapeInput> read_all_bounded(const std::vector<std::string>& paths);
 
 /// "shares runs of frames with r1.ptp over only 3% of the runs that occur as often in each: a read of

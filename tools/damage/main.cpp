@@ -15,7 +15,6 @@
 #include "cli/numbers.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
-#include "cli/restore_inputs.hpp"
 #include "cli/run.hpp"
 #include "cli/signals.hpp"
 #include "tape/code.hpp"
@@ -94,7 +93,7 @@ void run(const DamageArgs& a) {
     cli::check_outputs({{"-o", a.output}, {"--log", a.log}});
     refuse_existing(a.output, a.force);
     refuse_existing(a.log, a.force);
-    cli::TapeInput in = cli::read_bounded(a.input, a.format);
+    cli::TapeInput in = cli::read_tape(a.input, a.format);
     options.tracks = in.format->tracks;
     tape::DamageLog log;
     std::string image;
