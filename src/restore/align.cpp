@@ -166,12 +166,43 @@ Pairs chain(const Pairs& anchors, std::int32_t k) {
     return out;
 }
 
+// The dynamic programming's three states: a pair (M), a ref frame alone (X), a read frame alone (Y).
+enum : std::uint8_t { M = 0, X = 1, Y = 2 };
+
+// The best of the three states' scores, and which it is.
+int best3(int m, int x, int y, std::uint8_t& from) {
+    from = M;
+    int s = m;
+    if (x > s) s = x, from = X;
+    if (y > s) s = y, from = Y;
+    return s;
+}
+
+// From cell (i, j) in state back to the table's start, appending the pairs that stand in one column in
+// order. cell(i, j): the trace byte there (the state before M, X and Y in its bits 0-1, 2-3 and 4-5).
+template <typename Cell>
+void trace_back(std::size_t i, std::size_t j, std::uint8_t state, std::size_t ri, std::size_t rj, Pairs& out,
+                Cell cell) {
+    const std::size_t first = out.size();  // the pairs come last first: turned once all are in
+    while (i > 0 && j > 0) {
+        std::uint8_t t = cell(i, j);
+        if (state == M) {
+            out.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
+            state = t & 3, --i, --j;
+        } else if (state == X) {
+            state = (t >> 2) & 3, --i;
+        } else {
+            state = (t >> 4) & 3, --j;
+        }
+    }
+    std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
+
 // A stretch between anchors too long for the whole table (no run anchors it: a long repetitive part,
 // or reads that disagree long): the same alignment within a band around its diagonal, as wide as the
 // reads' lengths there differ and a little more, so that time and memory grow with its length only.
 void align_banded(std::span<const Frame> ref, std::span<const Frame> read, std::size_t ri, std::size_t a,
                   std::size_t rj, std::size_t b, Pairs& out) {
-    enum : std::uint8_t { M = 0, X = 1, Y = 2 };
     constexpr int never = INT_MIN / 4;
     const std::size_t w = (a > b ? a - b : b - a) + 96, width = 2 * w + 1;
     auto lo = [&](std::size_t i) {
@@ -180,13 +211,6 @@ void align_banded(std::span<const Frame> ref, std::span<const Frame> read, std::
     };
     auto hi = [&](std::size_t i) { return std::min(b, i * b / a + w); };
     auto run = [](std::size_t len) { return gap_open + static_cast<int>(len - 1) * gap_extend; };
-    auto best3 = [](int m, int x, int y, std::uint8_t& from) {
-        from = M;
-        int s = m;
-        if (x > s) s = x, from = X;
-        if (y > s) s = y, from = Y;
-        return s;
-    };
     std::vector<std::uint8_t> trace((a + 1) * width);
     std::vector<int> pm(b + 1, never), px(b + 1, never), py(b + 1, never), cm(b + 1, never), cx(b + 1, never),
         cy(b + 1, never);
@@ -210,20 +234,7 @@ void align_banded(std::span<const Frame> ref, std::span<const Frame> read, std::
     }
     std::uint8_t state;
     best3(pm[b], px[b], py[b], state);
-    std::size_t i = a, j = b;
-    const std::size_t first = out.size();
-    while (i > 0 && j > 0) {
-        std::uint8_t t = trace[i * width + (j - lo(i))];
-        if (state == M) {
-            out.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
-            state = t & 3, --i, --j;
-        } else if (state == X) {
-            state = (t >> 2) & 3, --i;
-        } else {
-            state = (t >> 4) & 3, --j;
-        }
-    }
-    std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+    trace_back(a, b, state, ri, rj, out, [&](std::size_t i, std::size_t j) { return trace[i * width + (j - lo(i))]; });
 }
 
 // Aligns ref[ri, ri + a) with read[rj, rj + b) by dynamic programming with gaps that cost most where
@@ -247,7 +258,6 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     }
     // States: a pair (M), a reference frame unpaired (X), a read frame unpaired (Y). A cell's trace
     // holds where each state came from: bits 0-1 for M, 2-3 for X, 4-5 for Y.
-    enum : std::uint8_t { M = 0, X = 1, Y = 2 };
     constexpr int never = INT_MIN / 4;
     auto run = [](std::size_t len) { return gap_open + static_cast<int>(len - 1) * gap_extend; };
     // Scratch kept between calls: the stretches between anchors are many and mostly a few frames long.
@@ -258,13 +268,6 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     cm.assign(b + 1, 0), cx.assign(b + 1, 0), cy.assign(b + 1, 0);
     pm[0] = 0;
     for (std::size_t j = 1; j <= b; ++j) py[j] = free_start ? 0 : run(j);
-    auto best3 = [](int m, int x, int y, std::uint8_t& from) {
-        from = M;
-        int s = m;
-        if (x > s) s = x, from = X;
-        if (y > s) s = y, from = Y;
-        return s;
-    };
     int best = never;
     std::size_t best_i = a, best_j = b;
     std::uint8_t best_state = M;
@@ -292,21 +295,8 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     } else {
         best3(pm[b], px[b], py[b], best_state);
     }
-    std::size_t i = best_i, j = best_j;
-    std::uint8_t state = best_state;
-    const std::size_t first = out.size();  // the pairs come last first: turned once all are in
-    while (i > 0 && j > 0) {
-        std::uint8_t t = trace[i * (b + 1) + j];
-        if (state == M) {
-            out.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
-            state = t & 3, --i, --j;
-        } else if (state == X) {
-            state = (t >> 2) & 3, --i;
-        } else {
-            state = (t >> 4) & 3, --j;
-        }
-    }
-    std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+    trace_back(best_i, best_j, best_state, ri, rj, out,
+               [&](std::size_t i, std::size_t j) { return trace[i * (b + 1) + j]; });
 }
 
 // The pairs of ref and read frames that stand in one column, in order.
