@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
     cli::add_adapter(app);
     cli::add_label(app);
     cli::add_render(app);
+    cli::add_scan(app);
     cli::install_output_cleanup();
     return cli::parse_and_run(app, argc, argv, "'tape --help' or 'tape SUBCOMMAND --help'");
 }
