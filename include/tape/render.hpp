@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -70,6 +71,10 @@ Point hole_centre(std::uint64_t n, int track, std::uint64_t per_strip, bool mirr
 /// with an id "fN" (N the frame number) for links. Throws Error(Errc::usage) for from after to, or a range past the
 /// end.
 std::string render_svg(std::span<const Frame> frames, const RenderOptions& options);
+/// The same document given to sink a strip at a time (a header, then each strip, then the end): memory
+/// that of one strip, however long the tape. Throws as above before anything reaches sink.
+void render_svg(std::span<const Frame> frames, const RenderOptions& options,
+                const std::function<void(std::string_view)>& sink);
 
 /// How a tape is drawn as pixels: to scale at a resolution, as a scanner or a camera would see it.
 struct RasterOptions {
@@ -103,5 +108,10 @@ struct PictureEffects {
 /// Applies the effects in the order a picture gets them: light, dust on the glass, blur, noise, JPEG.
 /// dpi: the picture's, for the size of the dust. JPEG needs OpenCV (tape/picture.hpp).
 void apply_effects(Picture& picture, const PictureEffects& effects, double dpi);
+
+/// Effects written as KEY=VALUE,... : skew=DEG, bow=MM, stains=N, paper=RRGGBB, backing=RRGGBB (the
+/// drawing), light=0..0.9, dust=N, blur=PX, noise=LEVELS, jpeg=QUALITY, seed=N (the picture). Throws
+/// Error(Errc::usage) naming a key or value it does not take.
+void parse_picture_effects(std::string_view spec, RasterOptions& raster, PictureEffects& effects);
 
 }  // namespace tape

@@ -47,28 +47,44 @@ std::optional<FeedLine> straight_line(std::span<const Blob> blobs, const FeedCha
     return sub_line(line, first, last);
 }
 
-// True when most of chain's blobs lie on the line's feed holes: the same strip found in pieces.
-bool on_line(const FeedChain& chain, std::span<const Blob> blobs, const FeedLine& line) {
-    std::size_t near = 0;
-    for (auto b : chain.blobs)
-        for (std::size_t i = 0; i < line.centre.size(); ++i)
-            if (std::hypot(blobs[b].x - line.centre[i].x, blobs[b].y - line.centre[i].y) < 0.3 * line.pitch[i]) {
-                ++near;
-                break;
-            }
-    return near * 2 > chain.blobs.size();
+double hole_size(const FeedChain& c) { return c.hole_ratio * c.pitch; }
+
+// True when chain lies within the strip of line (its code holes, read two frames apart, make chains too).
+bool on_strip(const FeedChain& chain, std::span<const Blob> blobs, const FeedLine& line) {
+    const Blob& b = blobs[chain.blobs[chain.blobs.size() / 2]];
+    for (std::size_t i = 0; i < line.centre.size(); ++i)
+        if (std::hypot(b.x - line.centre[i].x, b.y - line.centre[i].y) < 7 * line.pitch[i]) return true;
+    return false;
 }
 
+// Other strips: rows of holes of the read strip's feed holes' size and spacing, elsewhere in the picture.
 void describe_others(std::span<const FeedChain> chains, std::size_t read, std::span<const Blob> blobs,
                      const FeedLine& line, ImageScan& image) {
+    auto alike = [&](double a, double b) { return a < 1.25 * b && b < 1.25 * a; };
     for (std::size_t i = 0; i < chains.size(); ++i) {
-        if (i == read || !feed_like(chains[i]) || chains[i].frames() < min_strip_frames ||
-            on_line(chains[i], blobs, line))
+        const FeedChain& c = chains[i];
+        if (i == read || !feed_like(c) || c.frames() < min_strip_frames || !alike(c.pitch, chains[read].pitch) ||
+            !alike(hole_size(c), hole_size(chains[read])) || on_strip(c, blobs, line))
             continue;
-        const Blob& b = blobs[chains[i].blobs.front()];
-        image.notes.push_back("another strip of " + std::to_string(chains[i].frames()) + " frames starts at " +
-                              where(b) + ": not read (one strip a picture; crop the picture to read it)");
+        const Blob& b = blobs[c.blobs.front()];
+        image.notes.push_back("another strip of " + std::to_string(c.frames()) + " frames starts at " + where(b) +
+                              ": not read (one strip a picture; crop the picture to read it)");
     }
+}
+
+// The strip to read: the longest row of feed holes. Code holes are 1.56 times as wide as feed holes, and
+// a row of them punched every other frame is spaced like feed holes: only rows of the smallest holes count.
+std::size_t pick_strip(std::span<const FeedChain> chains) {
+    double smallest = 0;
+    for (const auto& c : chains)
+        if (feed_like(c) && c.frames() >= min_strip_frames && (smallest == 0 || hole_size(c) < smallest))
+            smallest = hole_size(c);
+    std::size_t pick = chains.size();
+    for (std::size_t i = 0; i < chains.size(); ++i)
+        if (feed_like(chains[i]) && chains[i].frames() >= min_strip_frames && hole_size(chains[i]) <= 1.25 * smallest &&
+            (pick == chains.size() || chains[i].frames() > chains[pick].frames()))
+            pick = i;
+    return pick;
 }
 
 bool any_hole(std::span<const FrameSamples> samples) {
@@ -82,11 +98,7 @@ bool any_hole(std::span<const FrameSamples> samples) {
 
 std::optional<Piece> read_strip(const GreyView& picture, std::span<const Blob> blobs, std::span<const FeedChain> chains,
                                 const ScanOptions& options, std::uint32_t image_number, ImageScan& image) {
-    std::size_t pick = chains.size();
-    for (std::size_t i = 0; i < chains.size(); ++i)
-        if (feed_like(chains[i]) && chains[i].frames() >= min_strip_frames &&
-            (pick == chains.size() || chains[i].frames() > chains[pick].frames()))
-            pick = i;
+    std::size_t pick = pick_strip(chains);
     if (pick == chains.size()) {
         image.refusal = refusal_for(chains, blobs);
         return std::nullopt;
