@@ -97,6 +97,7 @@ struct ImageScan {
     std::optional<StripScan> strip;  ///< the strip read; none when the image was refused
     std::string refusal;             ///< why nothing was read (empty when read)
     std::vector<std::string> notes;  ///< what else was seen: other strips, a dpi unlike the hint
+    std::size_t parts_unread = 0;    ///< parts of the strip read that could not be joined to it (in notes)
     std::uint64_t first_frame = 0;   ///< where its frames start in the whole read (1-based; 0: not used)
     std::uint64_t frames_used = 0;   ///< frames it gave the whole read (others lay in an overlap)
     std::vector<ScanPoint> blobs;    ///< every round blob looked at (for the debug picture)

@@ -42,38 +42,61 @@ void dust(Picture& p, int count, double dpi, std::mt19937_64& rng) {
     }
 }
 
-// A Gaussian blur, rows then columns.
-void blur(Picture& p, double sigma) {
-    int radius = static_cast<int>(std::ceil(3 * sigma));
-    std::vector<double> kernel(static_cast<std::size_t>(2 * radius + 1));
-    double sum = 0;
-    for (int i = -radius; i <= radius; ++i)
-        sum += kernel[static_cast<std::size_t>(i + radius)] = std::exp(-i * i / (2 * sigma * sigma));
-    for (auto& k : kernel) k /= sum;
-    const int c = p.channels;
-    std::vector<double> line;
-    auto pass = [&](int count, int length, auto&& pixel) {
-        line.resize(static_cast<std::size_t>(length * c));
-        for (int a = 0; a < count; ++a) {
-            for (int b = 0; b < length; ++b)
-                for (int k = 0; k < c; ++k) {
-                    double v = 0;
-                    for (int i = -radius; i <= radius; ++i)
-                        v += kernel[static_cast<std::size_t>(i + radius)] *
-                             pixel(a, std::clamp(b + i, 0, length - 1))[k];
-                    line[static_cast<std::size_t>(b * c + k)] = v;
-                }
-            for (int b = 0; b < length; ++b)
-                for (int k = 0; k < c; ++k) pixel(a, b)[k] = byte(line[static_cast<std::size_t>(b * c + k)]);
+// A Gaussian blur, rows then columns, over lines of floats (the picture's channels side by side).
+void blur_lines(std::vector<float>& line, std::vector<float>& out, int length, int c,
+                const std::vector<float>& kernel) {
+    const int radius = static_cast<int>(kernel.size() / 2);
+    for (int b = 0; b < length; ++b) {
+        int lo = std::max(0, b - radius), hi = std::min(length - 1, b + radius);
+        for (int k = 0; k < c; ++k) {
+            float v = 0;
+            // Taps past an end take the end pixel's value.
+            for (int i = b - radius; i < lo; ++i)
+                v += kernel[static_cast<std::size_t>(i - b + radius)] * line[static_cast<std::size_t>(k)];
+            for (int i = lo; i <= hi; ++i)
+                v += kernel[static_cast<std::size_t>(i - b + radius)] * line[static_cast<std::size_t>(i * c + k)];
+            for (int i = hi + 1; i <= b + radius; ++i)
+                v += kernel[static_cast<std::size_t>(i - b + radius)] *
+                     line[static_cast<std::size_t>((length - 1) * c + k)];
+            out[static_cast<std::size_t>(b * c + k)] = v;
         }
-    };
-    pass(p.height, p.width, [&](int y, int x) { return p.at(x, y); });
-    pass(p.width, p.height, [&](int x, int y) { return p.at(x, y); });
+    }
 }
 
+void blur(Picture& p, double sigma) {
+    const int radius = static_cast<int>(std::ceil(3 * sigma)), c = p.channels;
+    std::vector<float> kernel(static_cast<std::size_t>(2 * radius + 1));
+    float sum = 0;
+    for (int i = -radius; i <= radius; ++i)
+        sum += kernel[static_cast<std::size_t>(i + radius)] =
+            static_cast<float>(std::exp(-i * i / (2 * sigma * sigma)));
+    for (auto& k : kernel) k /= sum;
+    std::vector<float> line, out;
+    for (int y = 0; y < p.height; ++y) {
+        line.assign(p.at(0, y), p.at(0, y) + p.width * c);
+        out.resize(line.size());
+        blur_lines(line, out, p.width, c, kernel);
+        for (std::size_t i = 0; i < out.size(); ++i) p.at(0, y)[i] = byte(out[i]);
+    }
+    line.resize(static_cast<std::size_t>(p.height * c));
+    out.resize(line.size());
+    for (int x = 0; x < p.width; ++x) {
+        for (int y = 0; y < p.height; ++y) std::copy_n(p.at(x, y), c, &line[static_cast<std::size_t>(y * c)]);
+        blur_lines(line, out, p.height, c, kernel);
+        for (int y = 0; y < p.height; ++y)
+            for (int k = 0; k < c; ++k) p.at(x, y)[k] = byte(out[static_cast<std::size_t>(y * c + k)]);
+    }
+}
+
+// Gaussian noise from pairs of uniform numbers (Box-Muller): the same for a seed on every machine.
 void noise(Picture& p, double sigma, std::mt19937_64& rng) {
-    std::normal_distribution<double> n(0, sigma);
-    for (auto& v : p.pixels) v = byte(v + n(rng));
+    constexpr double unit = 1.0 / 18446744073709551616.0;  // 2^-64
+    for (std::size_t i = 0; i + 1 < p.pixels.size(); i += 2) {
+        double u1 = (static_cast<double>(rng()) + 1) * unit, u2 = static_cast<double>(rng()) * unit;
+        double r = sigma * std::sqrt(-2 * std::log(u1)), a = 2 * 3.141592653589793 * u2;
+        p.pixels[i] = byte(p.pixels[i] + r * std::cos(a));
+        p.pixels[i + 1] = byte(p.pixels[i + 1] + r * std::sin(a));
+    }
 }
 
 }  // namespace

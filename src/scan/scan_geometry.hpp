@@ -43,6 +43,11 @@ struct FeedChain {
 std::vector<FeedChain> follow_chains(std::span<const Blob> blobs, std::size_t min_frames);
 inline constexpr std::size_t max_blobs = 200000;
 
+/// chains[pick] with the other parts of its row joined, where the holes were not seen over a few frames
+/// and the part lies a whole number of frames on. unjoined: parts on the row at no whole number of frames.
+FeedChain join_parts(std::span<const Blob> blobs, std::span<const FeedChain> chains, std::size_t pick,
+                     std::vector<std::size_t>& unjoined);
+
 /// True for a chain whose holes are feed holes (small against their spacing), not a row of code holes.
 bool feed_like(const FeedChain& chain);
 

@@ -32,7 +32,7 @@ std::optional<TapeStart> parse_tape_start(std::string_view word) {
 
 bool ScanResult::complete() const {
     for (const auto& i : images)
-        if (!i.strip) return false;
+        if (!i.strip || i.parts_unread) return false;
     return gaps.empty() && doubts.runs.empty() && doubts.unkept == 0;
 }
 

@@ -103,7 +103,17 @@ std::optional<Piece> read_strip(const GreyView& picture, std::span<const Blob> b
         image.refusal = refusal_for(chains, blobs);
         return std::nullopt;
     }
-    auto line = straight_line(blobs, chains[pick], image);
+    std::vector<std::size_t> unjoined;
+    FeedChain chain = join_parts(blobs, chains, pick, unjoined);
+    for (auto k : unjoined) {
+        const Blob& b = blobs[chains[k].blobs.front()];
+        image.notes.push_back("a part of the strip (" + std::to_string(chains[k].frames()) + " frames, from " +
+                              where(b) +
+                              ") lies beyond a place where its feed holes are not seen, at no whole number of frames: "
+                              "not read");
+    }
+    image.parts_unread = unjoined.size();
+    auto line = straight_line(blobs, chain, image);
     if (!line) return std::nullopt;
     describe_others(chains, pick, blobs, *line, image);
     StripScan strip;

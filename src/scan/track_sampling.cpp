@@ -70,6 +70,7 @@ float ring_at(const GreyView& g, const Frame2& f, double u, double v, double r) 
 // One place of a code hole: its levels, the paper right around it, and how far it was moved onto a blob.
 struct RawHole {
     float core = 0, ring = 0, paper = 0, shift = 0;
+    std::array<float, 2> beside{};  // between it and the rows next to it: always paper on a whole tape
 };
 
 // What one frame gives before it is compared with its neighbours: raw grey levels.
@@ -80,18 +81,24 @@ struct RawFrame {
     float edge[2][edge_samples]{};
 };
 
-// The paper right around a place: the middle of the four points between it and its diagonal neighbours,
-// where no hole can be (a speck on one of them does not count).
-float paper_around(const GreyView& g, const Frame2& f, double v) {
-    std::array<float, 4> p{};
+// The paper right around a place: the middle of the points between it and its diagonal neighbours and
+// between it and the rows beside it, where no hole can be (a speck on one, or the tape's end beyond two,
+// does not count).
+float paper_around(const GreyView& g, const Frame2& f, double v, std::array<float, 2>& beside) {
+    std::array<float, 6> p{};
     std::size_t k = 0;
     for (double du : {-0.5, 0.5})
         for (double dv : {-0.5, 0.5}) {
             ScanPoint q = f.at(du, v + dv);
             p[k++] = g.at(q.x, q.y);
         }
+    for (double dv : {-0.5, 0.5}) {
+        ScanPoint q = f.at(0, v + dv);
+        beside[k - 4] = p[k] = g.at(q.x, q.y);
+        ++k;
+    }
     std::sort(p.begin(), p.end());
-    return (p[1] + p[2]) / 2;
+    return (p[2] + p[3]) / 2;
 }
 
 RawHole sample_hole(const GreyView& g, const Frame2& f, double v, const Grid& grid, std::span<const Blob> blobs) {
@@ -107,7 +114,7 @@ RawHole sample_hole(const GreyView& g, const Frame2& f, double v, const Grid& gr
     }
     h.core = mean_at(g, at, 0, v, core_radius, 4);
     h.ring = ring_at(g, at, 0, v, ring_radius);
-    h.paper = paper_around(g, f, v);
+    h.paper = paper_around(g, f, v, h.beside);
     return h;
 }
 
@@ -153,9 +160,11 @@ HoleLevel level_of(const RawHole& h, float frame_paper, float hole) {
     float contrast = h.paper - hole;
     HoleLevel l;
     l.shift = h.shift;
-    // Paper around the place that looks more like the backing than like paper: the paper is not there.
-    // (Ink and stains darken paper the other way, or less.)
-    float toward_hole = frame_paper == hole ? 0 : (frame_paper - h.paper) / (frame_paper - hole);
+    // Beside the place, what looks more like the backing than like paper: the paper is not there (a cut
+    // corner, a tear). Ink and stains darken paper the other way, or less.
+    float toward_hole = 0;
+    for (float a : h.beside)
+        if (frame_paper != hole) toward_hole = std::max(toward_hole, (frame_paper - a) / (frame_paper - hole));
     l.on_paper = toward_hole < 0.5F;
     if (std::abs(contrast) < 1) contrast = contrast < 0 ? -1.0F : 1.0F;
     l.core = (h.paper - h.core) / contrast;

@@ -45,7 +45,7 @@ std::size_t longest_feed(std::span<const FeedChain> chains) {
 void consider(const cv::Mat& binary, std::size_t grey, BlobSet& best) {
     BlobSet s;
     s.blobs = blobs_of(binary);
-    s.chains = follow_chains(s.blobs, 8);
+    s.chains = follow_chains(s.blobs, 4);  // short parts too: a strip's row of feed holes may be broken
     s.grey = grey;
     s.longest_feed = longest_feed(s.chains);
     if (best.blobs.empty() || s.longest_feed > best.longest_feed) best = std::move(s);
