@@ -109,15 +109,32 @@ double median(std::vector<double> v) {
     return *mid;
 }
 
-void measure(std::span<const Blob> blobs, FeedChain& c) {
+void measure(std::span<const Blob> blobs, const Grid& grid, FeedChain& c) {
     std::vector<double> steps;
     double size = 0;
+    std::size_t halfway = 0, beside = 0;
     for (std::size_t i = 0; i < c.blobs.size(); ++i) {
-        size += blobs[c.blobs[i]].diameter;
+        const Blob& q = blobs[c.blobs[i]];
+        size += q.diameter;
         if (i == 0) continue;
-        const Blob &p = blobs[c.blobs[i - 1]], &q = blobs[c.blobs[i]];
-        steps.push_back(std::hypot(q.x - p.x, q.y - p.y) / (c.missing_before[i] + 1.0));
+        const Blob& p = blobs[c.blobs[i - 1]];
+        float d = std::hypot(q.x - p.x, q.y - p.y);
+        steps.push_back(d / (c.missing_before[i] + 1.0));
+        if (c.missing_before[i] == 0 &&
+            nearest_blob(grid, blobs, (p.x + q.x) / 2, (p.y + q.y) / 2, 0.15F * d, q.diameter / near_size,
+                         q.diameter * near_size) != UINT32_MAX)
+            ++halfway;
+        // Across the row, a step away: the code holes beside a feed hole are half as wide again.
+        float ux = (q.x - p.x) / d, uy = (q.y - p.y) / d, step = d / static_cast<float>(c.missing_before[i] + 1);
+        for (float side : {-1.0F, 1.0F})
+            if (nearest_blob(grid, blobs, q.x - uy * step * side, q.y + ux * step * side, 0.25F * step,
+                             q.diameter / 1.25F, q.diameter * 1.25F) != UINT32_MAX) {
+                ++beside;
+                break;
+            }
     }
+    c.beside = c.blobs.size() > 1 ? static_cast<double>(beside) / static_cast<double>(c.blobs.size() - 1) : 0;
+    c.between = steps.empty() ? 0 : static_cast<double>(halfway) / static_cast<double>(steps.size());
     c.pitch = median(steps);
     c.hole_ratio = c.pitch > 0 ? size / static_cast<double>(c.blobs.size()) / c.pitch : 0;
 }
@@ -147,7 +164,9 @@ std::size_t FeedChain::frames() const {
     return n;
 }
 
-bool feed_like(const FeedChain& chain) { return chain.hole_ratio > 0.2 && chain.hole_ratio < 0.6; }
+bool feed_like(const FeedChain& chain) {
+    return chain.hole_ratio > 0.2 && chain.hole_ratio < 0.6 && chain.between < 0.1 && chain.beside < 0.1;
+}
 
 std::vector<FeedChain> follow_chains(std::span<const Blob> blobs, std::size_t min_frames) {
     if (blobs.size() < 2 || blobs.size() > max_blobs) return {};
@@ -176,7 +195,7 @@ std::vector<FeedChain> follow_chains(std::span<const Blob> blobs, std::size_t mi
             FeedChain c = finder.grow_from(a, b);
             if (c.blobs.size() < 3) continue;
             finder.mark(c);
-            measure(blobs, c);
+            measure(blobs, grid, c);
             if (c.frames() >= min_frames) found.push_back(std::move(c));
         }
     }

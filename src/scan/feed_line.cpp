@@ -64,14 +64,22 @@ FeedLine feed_line(std::span<const Blob> blobs, const FeedChain& chain) {
             std::reverse(line.seen.begin(), line.seen.end());
         }
     }
+    set_directions(line);
+    if (n == 1) line.pitch[0] = chain.pitch;
+    return line;
+}
+
+void set_directions(FeedLine& line) {
     constexpr std::size_t w = 2;
+    const std::size_t n = line.centre.size();
+    line.along.clear();
+    line.pitch.clear();
     for (std::size_t i = 0; i < n; ++i) {
         std::size_t a = i > w ? i - w : 0, b = std::min(n - 1, i + w);
         line.along.push_back(unit(line.centre[a], line.centre[b]));
         double d = std::hypot(line.centre[b].x - line.centre[a].x, line.centre[b].y - line.centre[a].y);
-        line.pitch.push_back(b > a ? d / static_cast<double>(b - a) : chain.pitch);
+        line.pitch.push_back(b > a ? d / static_cast<double>(b - a) : 1);
     }
-    return line;
 }
 
 LineShape line_shape(const FeedLine& line, int width, int height) {

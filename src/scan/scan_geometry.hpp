@@ -35,6 +35,8 @@ struct FeedChain {
     std::vector<std::uint8_t> missing_before;  ///< per blob: feed holes not seen between it and the one before
     double pitch = 0;                          ///< median distance between neighbouring feed holes
     double hole_ratio = 0;                     ///< mean blob diameter / pitch: 0.46 for feed holes, 0.72 for code holes
+    double between = 0;  ///< share of its steps with a blob of its size half-way: a row of code holes every other frame
+    double beside = 0;   ///< share of its blobs with one of their size a step away across: code holes, not feed holes
     std::size_t frames() const;                ///< blobs plus the holes missing between them
 };
 
@@ -61,6 +63,13 @@ struct FeedLine {
 
 /// The feed line of a chain, ordered left to right (or top to bottom for a strip nearer upright).
 FeedLine feed_line(std::span<const Blob> blobs, const FeedChain& chain);
+
+/// along and pitch of a line from its centres.
+void set_directions(FeedLine& line);
+
+/// The line followed on past both ends through the picture, where feed holes too faint to be blobs are
+/// still darker (or lighter) than the paper round them; stops after 3 places in a row without one.
+void extend_line(const GreyView& picture, FeedLine& line);
 
 /// Skew, bow and bend of a feed line, and whether it runs off a picture of width x height.
 struct LineShape {

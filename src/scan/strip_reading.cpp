@@ -115,6 +115,7 @@ std::optional<Piece> read_strip(const GreyView& picture, std::span<const Blob> b
     image.parts_unread = unjoined.size();
     auto line = straight_line(blobs, chain, image);
     if (!line) return std::nullopt;
+    extend_line(picture, *line);
     describe_others(chains, pick, blobs, *line, image);
     StripScan strip;
     LineShape shape = line_shape(*line, image.width, image.height);

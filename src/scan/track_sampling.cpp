@@ -160,11 +160,9 @@ HoleLevel level_of(const RawHole& h, float frame_paper, float hole) {
     float contrast = h.paper - hole;
     HoleLevel l;
     l.shift = h.shift;
-    // Beside the place, what looks more like the backing than like paper: the paper is not there (a cut
-    // corner, a tear). Ink and stains darken paper the other way, or less.
-    float toward_hole = 0;
-    for (float a : h.beside)
-        if (frame_paper != hole) toward_hole = std::max(toward_hole, (frame_paper - a) / (frame_paper - hole));
+    // Round the place, paper that looks more like the backing than like paper: the paper is not there (a
+    // cut corner, a tear). Ink and stains darken paper the other way, or less.
+    float toward_hole = frame_paper == hole ? 0 : (frame_paper - h.paper) / (frame_paper - hole);
     l.on_paper = toward_hole < 0.5F;
     if (std::abs(contrast) < 1) contrast = contrast < 0 ? -1.0F : 1.0F;
     l.core = (h.paper - h.core) / contrast;
