@@ -56,8 +56,7 @@ void consider(const cv::Mat& binary, std::size_t grey, BlobSet& best) {
 BlobSet find_blobs(std::span<const cv::Mat> greys) {
     BlobSet best;
     cv::Mat binary;
-    // Both greys: a strip found in one may be found longer in the other (small holes on coloured paper).
-    for (std::size_t g = 0; g < greys.size(); ++g) {
+    for (std::size_t g = 0; g < greys.size() && best.longest_feed < min_strip_frames; ++g) {
         double t = cv::threshold(greys[g], binary, 0, 255, cv::THRESH_BINARY_INV | cv::THRESH_OTSU);
         consider(binary, g, best);  // holes darker than the threshold
         cv::threshold(greys[g], binary, t, 255, cv::THRESH_BINARY);

@@ -1,5 +1,6 @@
 // tape/scan.hpp with OpenCV: each picture decoded (imgcodecs), its blobs found (imgproc), its strip
 // read and the pieces made one read by the stages of scan_geometry.hpp.
+#include <algorithm>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -28,12 +29,32 @@ std::vector<cv::Mat> grey_pictures(const std::string& path, int& width, int& hei
     width = colour.cols, height = colour.rows;
     std::vector<cv::Mat> out(2);
     cv::cvtColor(colour, out[0], cv::COLOR_BGR2GRAY);
-    cv::Mat planes[3];
-    cv::split(colour, planes);
-    colour.release();
-    cv::min(planes[0], planes[1], out[1]);
-    cv::min(out[1], planes[2], out[1]);
+    out[1].create(colour.rows, colour.cols, CV_8UC1);  // row by row: no copy of the colours on the side
+    for (int y = 0; y < colour.rows; ++y) {
+        const std::uint8_t* c = colour.ptr<std::uint8_t>(y);
+        std::uint8_t* m = out[1].ptr<std::uint8_t>(y);
+        for (int x = 0; x < colour.cols; ++x, c += 3) m[x] = std::min({c[0], c[1], c[2]});
+    }
     return out;
+}
+
+// The grey in which holes and paper differ most, at the blobs found: the holes are sampled in it.
+std::size_t sampling_grey(const std::vector<cv::Mat>& greys, const scan::BlobSet& set) {
+    std::size_t best = set.grey;
+    double most = -1;
+    for (std::size_t k = 0; k < greys.size(); ++k) {
+        const cv::Mat& g = greys[k];
+        scan::GreyView v{g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step[0])};
+        std::vector<float> d;
+        for (std::size_t i = 0; i < set.blobs.size(); i += std::max<std::size_t>(1, set.blobs.size() / 500)) {
+            const auto& b = set.blobs[i];
+            d.push_back(std::abs(v.at(b.x, b.y) - v.at(b.x + b.diameter, b.y)));
+        }
+        if (d.empty()) continue;
+        std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+        if (d[d.size() / 2] > most) most = d[d.size() / 2], best = k;
+    }
+    return best;
 }
 
 void check(const ScanOptions& o) {
@@ -59,9 +80,10 @@ ScanResult scan_images(std::span<const std::string> paths, const ScanOptions& op
         im.name = paths[m];
         auto greys = grey_pictures(paths[m], im.width, im.height);
         scan::BlobSet set = scan::find_blobs(greys);
-        const cv::Mat& g = greys[set.grey];
+        const cv::Mat& g = greys[sampling_grey(greys, set)];
         scan::GreyView view{g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step[0])};
-        greys[1 - set.grey].release();
+        for (auto& other : greys)
+            if (&other != &g) other.release();
         auto piece = scan::read_strip(view, set.blobs, set.chains, options, static_cast<std::uint32_t>(m), im);
         for (const auto& b : set.blobs) im.blobs.push_back({b.x, b.y});
         if (piece) pieces.push_back(std::move(*piece));
