@@ -1,19 +1,17 @@
 // tape scan against the figures of its issue, on tapes drawn by tape render as scanners and cameras show
 // them (random frames: every hole pattern, no text to lean on):
-//   Accuracy300  300 dpi, skew up to 3°, bow, stains, dust, blur, noise, uneven light, JPEG: >= 99.99 % right, 0 silently wrong
-//   Accuracy200  the same at 200 dpi: >= 99.9 %
-//   Phone        a flat photo at 6 px a code hole: >= 99 %, the rest doubtful
-//   Faces        either face, either direction: the same read
-//   Segments     30 overlapping segments, shuffled and turned: one exact read
-//   Speed        frames a CPU second at 300 dpi (>= 394: a metre of tape)
-//   Memory       the peak memory a scan adds over the decoded picture (<= 3)
+//   Accuracy300  300 dpi, skew up to 3°, bow, stains, dust, blur, noise, uneven light, JPEG: >= 99.99 % right, 0
+//   silently wrong Accuracy200  the same at 200 dpi: >= 99.9 % Phone        a flat photo at 6 px a code hole: >= 99 %,
+//   the rest doubtful Faces        either face, either direction: the same read Segments     30 overlapping segments,
+//   shuffled and turned: one exact read Speed        frames a CPU second at 300 dpi (>= 394: a metre of tape) Memory
+//   the peak memory a scan adds over the decoded picture (<= 3)
 // Run: build/bin/scan_bench (TAPE_SCAN_BENCH_PICTURES=N: pictures per accuracy figure, default 25).
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
 #include <random>
-#include <unistd.h>
 
 #include "scan_util.hpp"
 #include "tape/encode.hpp"
@@ -51,13 +49,21 @@ struct Worn {
 // A picture of t as a flatbed (or, phone, a camera) shows it, written as JPEG.
 std::string worn_picture(const std::vector<tape::Frame>& t, const Worn& w, std::mt19937_64& rng, int k) {
     std::uniform_real_distribution<double> u(0, 1);
-    tape::RasterOptions ro{.dpi = w.dpi, .mirror = u(rng) < 0.5, .skew_deg = -3 + 6 * u(rng), .bow_mm = 2 * u(rng),
-                           .stains = 4, .seed = rng()};
+    tape::RasterOptions ro{.dpi = w.dpi,
+                           .mirror = u(rng) < 0.5,
+                           .skew_deg = -3 + 6 * u(rng),
+                           .bow_mm = 2 * u(rng),
+                           .stains = 4,
+                           .seed = rng()};
     if (w.phone) ro.paper = 0xE8B060, ro.backing = 0xD0D0D0;  // orange paper on a light mat, holes light
     tape::Picture p = tape::render_picture(t, ro);
-    tape::apply_effects(p, tape::PictureEffects{.light = 0.3 + 0.2 * u(rng), .dust = w.phone ? 10 : 40,
-                                                .blur_px = w.blur * (0.8 + 0.4 * u(rng)), .noise = 4 + 4 * u(rng),
-                                                .jpeg_quality = static_cast<int>(75 + 15 * u(rng)), .seed = rng()},
+    tape::apply_effects(p,
+                        tape::PictureEffects{.light = 0.3 + 0.2 * u(rng),
+                                             .dust = w.phone ? 10 : 40,
+                                             .blur_px = w.blur * (0.8 + 0.4 * u(rng)),
+                                             .noise = 4 + 4 * u(rng),
+                                             .jpeg_quality = static_cast<int>(75 + 15 * u(rng)),
+                                             .seed = rng()},
                         w.dpi);
     std::string path = temp_dir() + "/worn" + std::to_string(k) + ".png";
     if (u(rng) < 0.5) p = half_turn(p);

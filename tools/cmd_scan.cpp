@@ -4,6 +4,7 @@
 #include "cli_numbers.hpp"
 #include "commands.hpp"
 #include "scan_report.hpp"
+#include "tape/file_io.hpp"
 #include "tape/scan.hpp"
 
 namespace cli {
@@ -28,8 +29,16 @@ void write_report(const ScanArgs& a, const std::string& text) {
     write_output("-", text, false, a.force);
 }
 
+// An output that exists is refused before the pictures are read, not after.
+void refuse_existing(const std::string& path, bool force) {
+    if (force || path.empty() || path == "-" || !tape::path_exists(path)) return;
+    fail(path, tape::Error(tape::Errc::exists, "already exists", tape::Hint{tape::Hint::Action::replace_output}));
+}
+
 void run(const ScanArgs& a) {
     if (!tape::scan_available()) fail("", tape::Errc::io, std::string(tape::scan_unavailable_message()));
+    for (const auto* path : {&a.output, &a.report}) refuse_existing(*path, a.force);
+    if (a.images.size() == 1) refuse_existing(a.debug_svg, a.force);
     const tape::ImageFormat& out_format = output_format(a.format, a.output);
     refuse_binary_terminal(a.output, out_format.binary, a.force);
     tape::ScanOptions o{.tracks = a.tracks, .dpi_hint = a.dpi, .start = *tape::parse_tape_start(a.start)};
@@ -37,7 +46,7 @@ void run(const ScanArgs& a) {
     try {
         r = tape::scan_images(a.images, o);
     } catch (const tape::Error& e) {
-        fail(a.images.size() == 1 ? a.images[0] : "", e);
+        fail("", e);  // the message names the picture
     }
     // The read first: it is what the run is for, and it is written even when some frames are doubtful.
     write_output(a.output, out_format.write(r.frames, tape::ImageWriteOptions{}), out_format.binary, a.force);

@@ -2,6 +2,7 @@
 // asks for a tape drawn as a scanner or a camera would show it.
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "tape/error.hpp"
@@ -10,12 +11,18 @@
 namespace tape {
 namespace {
 
+std::string shown(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
 double number(std::string_view key, std::string_view value, double lo, double hi) {
     double v = 0;
     auto r = std::from_chars(value.data(), value.data() + value.size(), v);
     if (r.ec != std::errc() || r.ptr != value.data() + value.size() || !std::isfinite(v) || v < lo || v > hi)
-        throw Error(Errc::usage, std::string(key) + "=" + std::string(value) + ": a number from " + std::to_string(lo) +
-                                     " to " + std::to_string(hi) + " is needed");
+        throw Error(Errc::usage, std::string(key) + "=" + std::string(value) + ": a number from " + shown(lo) + " to " +
+                                     shown(hi) + " is needed");
     return v;
 }
 

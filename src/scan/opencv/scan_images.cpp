@@ -22,10 +22,10 @@ std::vector<cv::Mat> grey_pictures(const std::string& path, int& width, int& hei
     try {
         colour = cv::imdecode(bytes, cv::IMREAD_COLOR);
     } catch (const cv::Exception& e) {
-        throw Error(Errc::io, path + ": cannot decode the picture: " + e.msg);
+        throw Error(Errc::io, "cannot decode the picture: " + e.msg);
     }
     bytes = {};
-    if (colour.empty()) throw Error(Errc::io, path + ": not a picture OpenCV can read (PNG, JPEG, TIFF, ...)");
+    if (colour.empty()) throw Error(Errc::io, "not a picture OpenCV can read (PNG, JPEG, TIFF, ...)");
     width = colour.cols, height = colour.rows;
     std::vector<cv::Mat> out(2);
     cv::cvtColor(colour, out[0], cv::COLOR_BGR2GRAY);
@@ -78,7 +78,12 @@ ScanResult scan_images(std::span<const std::string> paths, const ScanOptions& op
     for (std::size_t m = 0; m < paths.size(); ++m) {
         ImageScan im;
         im.name = paths[m];
-        auto greys = grey_pictures(paths[m], im.width, im.height);
+        std::vector<cv::Mat> greys;
+        try {
+            greys = grey_pictures(paths[m], im.width, im.height);
+        } catch (const Error& e) {
+            throw Error(e.code(), paths[m] + ": " + e.what(), e.hint());
+        }
         scan::BlobSet set = scan::find_blobs(greys);
         const cv::Mat& g = greys[sampling_grey(greys, set)];
         scan::GreyView view{g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step[0])};
@@ -91,8 +96,7 @@ ScanResult scan_images(std::span<const std::string> paths, const ScanOptions& op
     }
     if (pieces.empty()) {
         std::string why;
-        for (const auto& im : images)
-            why += (why.empty() ? "" : "; ") + (images.size() > 1 ? im.name + ": " : "") + im.refusal;
+        for (const auto& im : images) why += (why.empty() ? "" : "; ") + im.name + ": " + im.refusal;
         throw Error(Errc::bad_image, why);
     }
     return scan::assemble(std::move(images), std::move(pieces), options);
