@@ -5,7 +5,10 @@ set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
           libusb-1.0-0-dev libhidapi-dev clang-14 libclang-rt-14-dev clang-format-14 python3
           gcc-arm-none-eabi picolibc-arm-none-eabi libstdc++-arm-none-eabi-picolibc libxml2-utils chromium
-          umockdev libumockdev-dev)
+          umockdev libumockdev-dev nlohmann-json3-dev
+          # Reading pictures (tape scan, render to PNG): about 150 MB with what they pull in (GDAL for
+          # imgcodecs), so a demo that only runs tape may go without: the build then says so.
+          libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev)
 command -v dpkg-query >/dev/null || {
   echo "install-deps: no dpkg-query: this is not a Debian-like system; install the equivalents of" >&2
   echo "  ${packages[*]}" >&2
