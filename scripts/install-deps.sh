@@ -2,7 +2,7 @@
 # Installs the Debian packages the build and the tests need, when they are missing: as root directly,
 # else through sudo. Without either it says what to run as root, and fails.
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+packages=(cmake ninja-build g++ pkg-config libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
           libusb-1.0-0-dev libhidapi-dev clang-14 libclang-rt-14-dev clang-format-14 python3
           gcc-arm-none-eabi picolibc-arm-none-eabi libstdc++-arm-none-eabi-picolibc libxml2-utils chromium
           umockdev libumockdev-dev nlohmann-json3-dev

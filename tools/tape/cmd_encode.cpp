@@ -1,0 +1,145 @@
+// tape encode: a text program -> a tape image.
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <span>
+
+#include "cli/globals.hpp"
+#include "cli/inputs.hpp"
+#include "cli/messages.hpp"
+#include "cli/numbers.hpp"
+#include "cli/options.hpp"
+#include "cli/outputs.hpp"
+#include "commands.hpp"
+#include "tape/encode.hpp"
+#include "tape/file_io.hpp"
+#include "tape/utf8_text.hpp"
+
+namespace cli {
+namespace {
+
+struct EncodeArgs {
+    std::string input = "-", output = "-", format, label;
+    CodeChoice choice;
+    std::size_t leader = tape::default_leader, trailer = tape::default_trailer;
+    bool force = false;
+};
+
+void run(const EncodeArgs& a) {
+    std::string in_name = display_name(a.input);
+    tape::EncodeOptions o;
+    o.code = *tape::parse_code(a.choice.code);
+    o.parity = *tape::parse_parity(a.choice.parity);
+    o.charset = *tape::parse_charset(a.choice.charset);
+    o.leader = a.leader;
+    o.trailer = a.trailer;
+    o.eia_table = globals().table();
+    o.label = a.label;
+    if (o.code == tape::Code::eia && o.parity != tape::Parity::even)
+        fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
+    if (tape::is_five_track(o.code) && o.parity != tape::Parity::even)
+        fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; 5-track codes carry none");
+    const tape::ImageFormat& format = output_format(a.format, a.output);
+    refuse_binary_terminal(a.output, format.binary, a.force);
+    tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
+    std::unique_ptr<tape::Encoder> made;
+    try {
+        made = std::make_unique<tape::Encoder>(o);  // a label the font or the leader cannot take fails here
+    } catch (const tape::Error& e) {
+        fail(a.label.empty() ? in_name : "--label", e);
+    }
+    auto writer = format.make_writer(tape::ImageWriteOptions{&code});
+    std::string picture;
+    std::unique_ptr<tape::FileSource> source;
+    try {
+        source = std::make_unique<tape::FileSource>(a.input);
+    } catch (const tape::Error& e) {
+        fail(in_name, e);
+    }
+    // The text is read, encoded and written a chunk at a time; the output is created once the first
+    // chunk has encoded, so that a text the code cannot carry leaves nothing behind.
+    std::unique_ptr<tape::OutputFile> out;
+    std::uint64_t written = 0;
+    auto emit = [&](const std::vector<tape::Frame>& frames, bool last) {
+        written += frames.size();
+        if (!out) {
+            try {
+                out = std::make_unique<tape::OutputFile>(a.output, a.force);
+            } catch (const tape::Error& e) {
+                fail(a.output == "-" ? "stdout" : a.output, e);
+            }
+        }
+        try {
+            if (format.bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
+                out->write(std::string_view(reinterpret_cast<const char*>(frames.data()), frames.size()));
+                return;
+            }
+            picture.clear();
+            writer->write(frames, picture);
+            if (last) writer->finish(picture);
+            out->write(picture);
+        } catch (const tape::Error& e) {
+            fail(a.output == "-" ? "stdout" : a.output, e);
+        }
+    };
+    std::vector<tape::Frame> frames;
+    tape::Encoder& encoder = *made;
+    bool noted = false;
+    auto note_bom = [&] {
+        if (noted || !encoder.skipped_byte_order_mark()) return;
+        say_note(in_name, tape::byte_order_mark_note());
+        noted = true;
+    };
+    try {
+        // Page-aligned: read() copies into it faster than into malloc's page + 16 bytes.
+        constexpr std::size_t chunk = 128 << 10;
+        std::unique_ptr<std::uint8_t, decltype(&std::free)> storage(
+            static_cast<std::uint8_t*>(std::aligned_alloc(4096, chunk)), &std::free);
+        if (!storage) throw std::bad_alloc();
+        std::span<std::uint8_t> buffer(storage.get(), chunk);
+        for (std::size_t n; (n = source->read(buffer)) > 0;) {
+            encoder.feed(std::string_view(reinterpret_cast<const char*>(buffer.data()), n), frames);
+            note_bom();
+            if (!frames.empty()) emit(frames, false);
+            frames.clear();
+        }
+        encoder.finish(frames);
+    } catch (const tape::Error& e) {
+        if (out) out->discard();
+        note_bom();
+        fail(in_name, e);
+    }
+    emit(frames, true);
+    try {
+        out->commit();
+    } catch (const tape::Error& e) {
+        fail(a.output == "-" ? "stdout" : a.output, e);
+    }
+    if (globals().verbosity > 0) say(in_name, std::to_string(written) + " frames written as " + std::string(format.id));
+}
+
+}  // namespace
+
+void add_encode(CLI::App& app) {
+    auto a = std::make_shared<EncodeArgs>();
+    auto* sub = app.add_subcommand("encode", "Punch a text program into a tape image (each line a block)");
+    sub->add_option("input", a->input, "Text program; - or nothing for stdin");
+    sub->add_option("-o,--output", a->output, "Tape image to write; - for stdout (raw refuses a terminal)");
+    add_code_options(sub, a->choice, false, true);
+    sub->add_option("--leader", a->leader, "Blank frames before the program (10 frames = 25.4 mm)")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str();
+    sub->add_option("--trailer", a->trailer, "Blank frames after the program")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str();
+    sub->add_option("--format,-f", a->format,
+                    "Image format: " + format_choices(true) + " (default: by extension of OUT, else raw)")
+        ->check(format_check(true));
+    sub->add_option("--label", a->label,
+                    "Punch TEXT into the leader as letters of holes, readable along the tape (Latin or Cyrillic "
+                    "capitals, digits, space, - . /); the program is unchanged");
+    sub->add_flag("--force", a->force, "Replace an existing OUT; write raw to a terminal");
+    sub->callback([a] { run(*a); });
+}
+
+}  // namespace cli
