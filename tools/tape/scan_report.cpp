@@ -71,22 +71,26 @@ void say_scan_findings(const tape::ScanResult& r, const std::string& output) {
                         g.after_image + " do not overlap; the frames between them are missing (how many is unknown)");
     if (r.direction.basis == tape::DirectionBasis::none || r.direction.weak)
         say(output, direction_text(r.direction) + " (give --start to say where the tape starts)");
-    std::uint64_t shown = 0, unshown = r.doubts.unkept;
-    for (const auto& d : r.doubts.runs) {
+    say_frame_doubts(output, r.doubts);
+}
+
+void say_frame_doubts(const std::string& name, const tape::FrameDoubts& doubts) {
+    std::uint64_t shown = 0, unshown = doubts.unkept;
+    for (const auto& d : doubts.runs) {
         if (globals().max_errors && shown >= globals().max_errors) {
             unshown += d.last - d.first + 1;
             continue;
         }
         ++shown;
         std::string run = d.last > d.first ? "doubtful, to frame " + std::to_string(d.last) + ": " : "doubtful: ";
-        say_diagnostic(output,
+        say_diagnostic(name,
                        tape::Diagnostic{.code = tape::Errc::doubtful_frame,
                                         .where = tape::Position{.frame = d.first},
                                         .message = run + d.what,
                                         .severity = tape::Severity::warning},
                        false);
     }
-    if (unshown) say_unlisted(output, unshown, "doubtful frame(s)");
+    if (unshown) say_unlisted(name, unshown, "doubtful frame(s)");
 }
 
 std::string scan_report_text(const tape::ScanResult& r) {

@@ -10,6 +10,8 @@ namespace cli {
 /// On stderr: pictures not read and what else was seen, gaps, an undecided direction, the doubtful
 /// frames (as doubtful-frame warnings, numbered in the read written to output).
 void say_scan_findings(const tape::ScanResult& r, const std::string& output);
+/// Each run of doubtful frames as a doubtful-frame warning, as a reader's flagged rows are said.
+void say_frame_doubts(const std::string& name, const tape::FrameDoubts& doubts);
 /// The report for people: the read, then each picture's strip and its doubtful frames.
 std::string scan_report_text(const tape::ScanResult& r);
 /// The report as JSON, schema tape-scan/1 (tape(1)).
