@@ -15,6 +15,14 @@
 /// How a read did against its tape: frames right, wrong but doubtful, wrong and not doubtful.
 struct ReadScore {
     std::uint64_t frames = 0, right = 0, flagged_wrong = 0, silently_wrong = 0, doubtful = 0;
+    void tally(bool right_frame, bool doubt) {
+        if (right_frame)
+            ++right;
+        else if (doubt)
+            ++flagged_wrong;
+        else
+            ++silently_wrong;
+    }
     double right_share() const { return frames ? static_cast<double>(right) / static_cast<double>(frames) : 0; }
 };
 
@@ -32,13 +40,7 @@ inline ReadScore score_read(const std::vector<tape::Frame>& tape_frames, const t
     for (const auto& d : r.doubts.runs) s.doubtful += d.last - d.first + 1;
     if (r.frames.size() == tape_frames.size()) {
         for (std::size_t i = 0; i < tape_frames.size(); ++i) {
-            bool doubt = doubtful_at(r, i + 1);
-            if (r.frames[i] == tape_frames[i])
-                ++s.right;
-            else if (doubt)
-                ++s.flagged_wrong;
-            else
-                ++s.silently_wrong;
+            s.tally(r.frames[i] == tape_frames[i], doubtful_at(r, i + 1));
         }
         return s;
     }
@@ -49,13 +51,9 @@ inline ReadScore score_read(const std::vector<tape::Frame>& tape_frames, const t
     for (std::size_t c = 0; c < a.columns(); ++c) {
         auto t = a.frame(c, 0), g = a.frame(c, 1);
         bool doubt = g != tape::ReadAlignment::none && doubtful_at(r, static_cast<std::uint64_t>(g) + 1);
-        if (t != tape::ReadAlignment::none && g != tape::ReadAlignment::none &&
-            tape_frames[static_cast<std::size_t>(t)] == r.frames[static_cast<std::size_t>(g)])
-            ++s.right;
-        else if (doubt)
-            ++s.flagged_wrong;
-        else
-            ++s.silently_wrong;
+        s.tally(t != tape::ReadAlignment::none && g != tape::ReadAlignment::none &&
+                    tape_frames[static_cast<std::size_t>(t)] == r.frames[static_cast<std::size_t>(g)],
+                doubt);
     }
     return s;
 }

@@ -120,9 +120,8 @@ void measure(std::span<const Blob> blobs, const Grid& grid, FeedChain& c) {
         const Blob& p = blobs[c.blobs[i - 1]];
         float d = std::hypot(q.x - p.x, q.y - p.y);
         steps.push_back(d / (c.missing_before[i] + 1.0));
-        if (c.missing_before[i] == 0 &&
-            nearest_blob(grid, blobs, (p.x + q.x) / 2, (p.y + q.y) / 2, 0.15F * d, q.diameter / near_size,
-                         q.diameter * near_size) != UINT32_MAX)
+        if (c.missing_before[i] == 0 && nearest_blob(grid, blobs, (p.x + q.x) / 2, (p.y + q.y) / 2, 0.15F * d,
+                                                     q.diameter / near_size, q.diameter * near_size) != UINT32_MAX)
             ++halfway;
         // Across the row, a step away: the code holes beside a feed hole are half as wide again.
         float ux = (q.x - p.x) / d, uy = (q.y - p.y) / d, step = d / static_cast<float>(c.missing_before[i] + 1);

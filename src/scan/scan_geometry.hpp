@@ -37,7 +37,7 @@ struct FeedChain {
     double hole_ratio = 0;                     ///< mean blob diameter / pitch: 0.46 for feed holes, 0.72 for code holes
     double between = 0;  ///< share of its steps with a blob of its size half-way: a row of code holes every other frame
     double beside = 0;   ///< share of its blobs with one of their size a step away across: code holes, not feed holes
-    std::size_t frames() const;                ///< blobs plus the holes missing between them
+    std::size_t frames() const;  ///< blobs plus the holes missing between them
 };
 
 /// The chains of equally spaced blobs of one size that the blobs hold, longest first, each at least

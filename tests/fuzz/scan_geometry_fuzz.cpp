@@ -43,7 +43,8 @@ void read(const cv::Mat& grey, std::span<const tape::scan::Blob> blobs, std::spa
 
 cv::Mat picture_of(std::span<const std::uint8_t> bytes, int width, int height) {
     cv::Mat m(height, width, CV_8UC1);
-    for (int i = 0; i < width * height; ++i) m.data[i] = bytes.empty() ? 0 : bytes[static_cast<std::size_t>(i) % bytes.size()];
+    for (int i = 0; i < width * height; ++i)
+        m.data[i] = bytes.empty() ? 0 : bytes[static_cast<std::size_t>(i) % bytes.size()];
     return m;
 }
 
