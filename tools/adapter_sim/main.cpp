@@ -43,35 +43,50 @@ struct SimArgs {
     throw cli::Exit{cli::io_failure};
 }
 
-int run(const SimArgs& a) {
-    std::vector<std::uint8_t> tape;
-    if (!a.reader.empty()) {
-        auto in = cli::read_tape(a.reader, "");
-        tape.assign(in.frames.begin(), in.frames.end());
-    }
-    std::FILE* punched_out = nullptr;
-    if (!a.punch.empty()) {
-        punched_out = std::fopen(a.punch.c_str(), "wb");
-        if (!punched_out) die(a.punch + ": cannot create: " + std::strerror(errno));
-    }
+std::vector<std::uint8_t> reader_tape(const SimArgs& a) {
+    if (a.reader.empty()) return {};
+    auto in = cli::read_tape(a.reader, "");
+    return {in.frames.begin(), in.frames.end()};
+}
 
-    int master = ::posix_openpt(O_RDWR | O_NOCTTY);
-    if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0)
-        die(std::string("no pseudo-terminal: ") + std::strerror(errno));
-    std::string slave_path = ::ptsname(master);
-    // Held open, so that a host closing the port (between runs) does not hang the line up.
-    int slave = ::open(slave_path.c_str(), O_RDWR | O_NOCTTY);
-    if (slave < 0) die(slave_path + ": " + std::strerror(errno));
-    termios t{};
-    ::tcgetattr(slave, &t);
-    ::cfmakeraw(&t);
-    ::tcsetattr(slave, TCSANOW, &t);
-    ::fcntl(master, F_SETFL, O_NONBLOCK);
-    if (!a.link.empty()) {
-        ::unlink(a.link.c_str());
-        if (::symlink(slave_path.c_str(), a.link.c_str()) != 0) die(a.link + ": " + std::strerror(errno));
+// The adapter's CDC port: a pseudo-terminal in raw mode, its far end held open so that a host closing
+// the port (between runs) does not hang the line up, and optionally a symbolic link to it.
+class Port {
+public:
+    explicit Port(const std::string& link) : link_(link) {
+        master_ = ::posix_openpt(O_RDWR | O_NOCTTY);
+        if (master_ < 0 || ::grantpt(master_) != 0 || ::unlockpt(master_) != 0)
+            die(std::string("no pseudo-terminal: ") + std::strerror(errno));
+        path_ = ::ptsname(master_);
+        slave_ = ::open(path_.c_str(), O_RDWR | O_NOCTTY);
+        if (slave_ < 0) die(path_ + ": " + std::strerror(errno));
+        termios t{};
+        ::tcgetattr(slave_, &t);
+        ::cfmakeraw(&t);
+        ::tcsetattr(slave_, TCSANOW, &t);
+        ::fcntl(master_, F_SETFL, O_NONBLOCK);
+        if (!link_.empty()) {
+            ::unlink(link_.c_str());
+            if (::symlink(path_.c_str(), link_.c_str()) != 0) die(link_ + ": " + std::strerror(errno));
+        }
     }
+    ~Port() {
+        ::close(master_);
+        ::close(slave_);
+        if (!link_.empty()) ::unlink(link_.c_str());
+    }
+    Port(const Port&) = delete;
+    Port& operator=(const Port&) = delete;
 
+    const std::string& path() const { return path_; }
+    int fd() const { return master_; }
+
+private:
+    std::string link_, path_;
+    int master_ = -1, slave_ = -1;
+};
+
+tapesim::SimOptions sim_options(const SimArgs& a) {
     tapesim::SimOptions so;
     so.read_rate = a.read_rate;
     so.punch_rate = a.punch_rate;
@@ -85,7 +100,10 @@ int run(const SimArgs& a) {
          {std::pair{&a.no_sprocket_at, tapefw::row_flag::no_sprocket},
           std::pair{&a.mistimed_at, tapefw::row_flag::timing}, std::pair{&a.marginal_at, tapefw::row_flag::marginal}})
         for (auto n : *frames) so.row_flags.emplace_back(n - 1, flag);
-    tapesim::SimHardware hw(tape, so);
+    return so;
+}
+
+tapefw::Identity identity(const SimArgs& a) {
     tapefw::Identity id;
     id.serial = a.serial.c_str();
     // The simulated board tells a row without a sprocket, a mistimed one and a marginal level apart.
@@ -95,86 +113,58 @@ int run(const SimArgs& a) {
         (a.no_punch ? 0 : tapefw::caps::punch));
     id.max_read_rate = static_cast<std::uint16_t>(std::lround(a.read_rate));
     id.max_punch_rate = static_cast<std::uint16_t>(std::lround(a.punch_rate));
-    tapesim::FaultFilter filter(a.faults);
-    std::string out;
-    hw.on_send = [&](const std::uint8_t* b, std::size_t n) {
-        if (out.size() > 65536) return false;  // the host is not reading: the endpoint is full
-        filter.pass(b, n, out);
-        return true;
-    };
-    // The watchdog counts simulated time: a faster clock would take the host's keep-alives for silence.
+    return id;
+}
+
+// The watchdog counts simulated time: a faster clock would take the host's keep-alives for silence.
+tapefw::Config line_defaults(const SimArgs& a) {
     tapefw::Config defaults;
     defaults.watchdog_ms = static_cast<std::uint16_t>(std::min(65535.0, defaults.watchdog_ms * std::max(1.0, a.speed)));
-    tapefw::Engine engine(hw, id, tapefw::Framing::stream, defaults);
+    return defaults;
+}
 
-    std::cout << "adapter:" << slave_path << std::endl;
-    auto t0 = std::chrono::steady_clock::now();
-    auto virtual_now = [&] {
-        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * a.speed;
-        return static_cast<std::uint64_t>(s * 1e6);
-    };
-    // The engine polls between rows, as the firmware's main loop does: rows are given in small steps.
-    const std::uint64_t step = static_cast<std::uint64_t>(16e6 / a.read_rate);
-    std::size_t punched_written = 0;
-    while (!cli::interrupted()) {
-        std::uint64_t target = virtual_now();
-        // The chad box fills at an exact row: looked at after each turn, which punches one row at most.
-        auto chad = [&] {
-            if (a.chad_full_after && hw.punched().size() >= a.chad_full_after)
-                hw.forced_status |= tapefw::status::chad_full;
+// The board: the firmware core driving the simulated reader and punch, its packets to the host passing
+// the fault filter, on a clock `speed` times real time.
+class Board {
+public:
+    Board(const SimArgs& a, const std::vector<std::uint8_t>& tape)
+        : a_(a),
+          hw_(tape, sim_options(a)),
+          id_(identity(a)),
+          filter_(a.faults),
+          engine_(hw_, id_, tapefw::Framing::stream, line_defaults(a)) {
+        hw_.on_send = [this](const std::uint8_t* b, std::size_t n) {
+            if (out_.size() > 65536) return false;  // the host is not reading: the endpoint is full
+            filter_.pass(b, n, out_);
+            return true;
         };
-        // Catching up after the process was not scheduled: the host's packets that came meanwhile are
-        // taken step by step, as the board's USB interrupt would take them, so that the watchdog does
-        // not count the simulator's own pause as the host's silence.
-        auto take_input = [&] {
-            std::uint8_t buf[4096];
-            ssize_t n = ::read(master, buf, sizeof buf);
-            if (n > 0) engine.receive(buf, static_cast<std::size_t>(n));
-        };
-        while (hw.now() < target) {
-            take_input();
-            hw.advance_to(std::min(target, hw.now() + step), engine);
-            engine.poll();
-            hw.after_poll();
-            chad();
-        }
-        engine.poll();
-        hw.after_poll();
-        chad();
-        if (punched_out && hw.punched().size() > punched_written) {
-            std::fwrite(hw.punched().data() + punched_written, 1, hw.punched().size() - punched_written, punched_out);
-            std::fflush(punched_out);
-            punched_written = hw.punched().size();
-        }
-        if (a.unplug_after && engine.rows_read() >= a.unplug_after) {
-            std::cerr << "tape-adapter-sim: unplugged after " << engine.rows_read() << " frames\n";
-            break;
-        }
-        while (!out.empty()) {
-            ssize_t n = ::write(master, out.data(), out.size());
-            if (n <= 0) break;
-            out.erase(0, static_cast<std::size_t>(n));
-        }
-        std::uint64_t next = hw.next_event();
-        std::uint64_t now = virtual_now();
-        int wait_ms = next > now ? static_cast<int>(std::min<double>(5, (next - now) / 1000.0 / a.speed)) : 0;
-        pollfd p{master, static_cast<short>(POLLIN | (out.empty() ? 0 : POLLOUT)), 0};
-        if (::poll(&p, 1, wait_ms) > 0 && (p.revents & POLLIN)) {
-            std::uint8_t buf[4096];
-            ssize_t n = ::read(master, buf, sizeof buf);
-            if (n > 0) engine.receive(buf, static_cast<std::size_t>(n));
+    }
+
+    /// Runs the board on the port until Ctrl-C or the unplug asked for.
+    void run(const Port& port, std::FILE* punched_out) {
+        fd_ = port.fd();
+        t0_ = std::chrono::steady_clock::now();
+        while (!cli::interrupted()) {
+            catch_up();
+            if (punched_out) write_punched(punched_out);
+            if (a_.unplug_after && engine_.rows_read() >= a_.unplug_after) {
+                std::cerr << "tape-adapter-sim: unplugged after " << engine_.rows_read() << " frames\n";
+                return;
+            }
+            send_to_host();
+            wait_for_host();
         }
     }
-    if (punched_out) std::fclose(punched_out);
-    ::close(master);
-    ::close(slave);
-    if (!a.link.empty()) ::unlink(a.link.c_str());
-    if (filter.dropped() || filter.corrupted())
-        std::cerr << "tape-adapter-sim: " << filter.dropped() << " packet(s) dropped, " << filter.corrupted()
-                  << " damaged, of " << filter.rows_packets() << " ROWS packets\n";
-    if (a.stats) {
-        // One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
-        const tapefw::Config& c = hw.config();
+
+    void print_faults() const {
+        if (filter_.dropped() || filter_.corrupted())
+            std::cerr << "tape-adapter-sim: " << filter_.dropped() << " packet(s) dropped, " << filter_.corrupted()
+                      << " damaged, of " << filter_.rows_packets() << " ROWS packets\n";
+    }
+
+    // One line of name=value pairs, for the tests and benchmarks to read what the adapter saw.
+    void print_stats() const {
+        const tapefw::Config& c = hw_.config();
         char line[512];
         std::snprintf(
             line, sizeof line,
@@ -182,31 +172,108 @@ int run(const SimArgs& a) {
             "longest_punch_gap_us=%llu desyncs=%llu bad_packets_in=%llu config: invert=0x%02X lines=0x%02X "
             "tracks=%u sample_delay_us=%u punch_pulse_us=%u drive_pulse_us=%u sprocket_timeout_ms=%u "
             "watchdog_ms=%u\n",
-            static_cast<unsigned long long>(hw.position()), static_cast<unsigned long long>(hw.punched().size()),
-            static_cast<unsigned long long>(hw.underruns()), static_cast<unsigned long long>(hw.late_punches()),
-            static_cast<unsigned long long>(hw.longest_punch_gap_us()),
-            static_cast<unsigned long long>(filter.desyncs()), static_cast<unsigned long long>(engine.bad_packets()),
+            static_cast<unsigned long long>(hw_.position()), static_cast<unsigned long long>(hw_.punched().size()),
+            static_cast<unsigned long long>(hw_.underruns()), static_cast<unsigned long long>(hw_.late_punches()),
+            static_cast<unsigned long long>(hw_.longest_punch_gap_us()),
+            static_cast<unsigned long long>(filter_.desyncs()), static_cast<unsigned long long>(engine_.bad_packets()),
             c.data_invert, c.lines, c.tracks, c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us,
             c.sprocket_timeout_ms, c.watchdog_ms);
         std::cerr << line;
     }
+
+private:
+    const SimArgs& a_;
+    int fd_ = -1;  ///< the port's
+    tapesim::SimHardware hw_;
+    tapefw::Identity id_;
+    tapesim::FaultFilter filter_;
+    tapefw::Engine engine_;
+    std::string out_;  ///< bytes for the host the port has not taken yet
+    std::size_t punched_written_ = 0;
+    std::chrono::steady_clock::time_point t0_{};  ///< when the simulated clock started
+
+    std::uint64_t virtual_now() const {
+        double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() * a_.speed;
+        return static_cast<std::uint64_t>(s * 1e6);
+    }
+
+    void take_input() {
+        std::uint8_t buf[4096];
+        ssize_t n = ::read(fd_, buf, sizeof buf);
+        if (n > 0) engine_.receive(buf, static_cast<std::size_t>(n));
+    }
+
+    // The chad box fills at an exact row: looked at after each turn, which punches one row at most.
+    void turn() {
+        engine_.poll();
+        hw_.after_poll();
+        if (a_.chad_full_after && hw_.punched().size() >= a_.chad_full_after)
+            hw_.forced_status |= tapefw::status::chad_full;
+    }
+
+    // The simulated clock brought up to real time. The engine polls between rows, as the firmware's main
+    // loop does: rows are given in small steps. After the process was not scheduled, the host's packets
+    // that came meanwhile are taken step by step, as the board's USB interrupt would take them, so that
+    // the watchdog does not count the simulator's own pause as the host's silence.
+    void catch_up() {
+        const std::uint64_t step = static_cast<std::uint64_t>(16e6 / a_.read_rate);
+        std::uint64_t target = virtual_now();
+        while (hw_.now() < target) {
+            take_input();
+            hw_.advance_to(std::min(target, hw_.now() + step), engine_);
+            turn();
+        }
+        turn();
+    }
+
+    void write_punched(std::FILE* to) {
+        if (hw_.punched().size() <= punched_written_) return;
+        std::fwrite(hw_.punched().data() + punched_written_, 1, hw_.punched().size() - punched_written_, to);
+        std::fflush(to);
+        punched_written_ = hw_.punched().size();
+    }
+
+    void send_to_host() {
+        while (!out_.empty()) {
+            ssize_t n = ::write(fd_, out_.data(), out_.size());
+            if (n <= 0) break;
+            out_.erase(0, static_cast<std::size_t>(n));
+        }
+    }
+
+    // Until the next simulated event, 5 ms at most, or the host's next packet.
+    void wait_for_host() {
+        std::uint64_t next = hw_.next_event();
+        std::uint64_t now = virtual_now();
+        int wait_ms = next > now ? static_cast<int>(std::min<double>(5, (next - now) / 1000.0 / a_.speed)) : 0;
+        pollfd p{fd_, static_cast<short>(POLLIN | (out_.empty() ? 0 : POLLOUT)), 0};
+        if (::poll(&p, 1, wait_ms) > 0 && (p.revents & POLLIN)) take_input();
+    }
+};
+
+int run(const SimArgs& a) {
+    const std::vector<std::uint8_t> tape = reader_tape(a);
+    std::FILE* punched_out = nullptr;
+    if (!a.punch.empty()) {
+        punched_out = std::fopen(a.punch.c_str(), "wb");
+        if (!punched_out) die(a.punch + ": cannot create: " + std::strerror(errno));
+    }
+    Board board(a, tape);
+    {
+        Port port(a.link);
+        std::cout << "adapter:" << port.path() << std::endl;
+        board.run(port, punched_out);
+    }
+    if (punched_out) std::fclose(punched_out);
+    board.print_faults();
+    if (a.stats) board.print_stats();
     return cli::ok;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    CLI::App app{
-        "tape-adapter-sim: a USB tape adapter with a ФС-1501-class reader and a ПЛ-150-class punch, simulated on a "
-        "pseudo-terminal.\nPrints the device string (adapter:/dev/pts/N) on stdout, then runs until Ctrl-C.",
-        "tape-adapter-sim"};
-    app.set_version_flag("--version", std::string("tape-adapter-sim ") + TAPE_VERSION);
-    app.footer("See tape-usb(7) and docs/adapter-protocol.md.");
-    cli::globals().program = "tape-adapter-sim";
-    SimArgs a;
+// The adapter as built: what it holds, its line and its clock.
+void add_unit_options(CLI::App& app, SimArgs& a) {
     using cli::real_number;
     using cli::whole_number;
-    constexpr std::uint64_t most = 1'000'000'000;
     app.add_option("--reader", a.reader, "Tape image in the reader (any format); without it the reader has no tape");
     app.add_option("--punch", a.punch, "Raw image file the punch punches into (rows appended as punched)");
     app.add_option("--serial", a.serial, "The adapter's serial string")->capture_default_str();
@@ -233,6 +300,12 @@ int main(int argc, char** argv) {
     app.add_flag("--at-end", a.at_end,
                  "The tape is loaded with its end at the head, as after reading it through: read it back with "
                  "direction=reverse");
+}
+
+// Faults of the tape, the units and the line, each at a frame or packet named.
+void add_fault_options(CLI::App& app, SimArgs& a) {
+    using cli::whole_number;
+    constexpr std::uint64_t most = 1'000'000'000;
     app.add_option("--no-sprocket-at", a.no_sprocket_at,
                    "Frame N (from 1) is read without its sprocket hole, sampled by time, and flagged so "
                    "(repeatable)")
@@ -280,6 +353,21 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--protocol", a.faults.protocol, "Claim this protocol version in INFO (to try a mismatch)")
         ->check(whole_number(0, 255));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "tape-adapter-sim: a USB tape adapter with a ФС-1501-class reader and a ПЛ-150-class punch, simulated on a "
+        "pseudo-terminal.\nPrints the device string (adapter:/dev/pts/N) on stdout, then runs until Ctrl-C.",
+        "tape-adapter-sim"};
+    app.set_version_flag("--version", std::string("tape-adapter-sim ") + TAPE_VERSION);
+    app.footer("See tape-usb(7) and docs/adapter-protocol.md.");
+    cli::globals().program = "tape-adapter-sim";
+    SimArgs a;
+    add_unit_options(app, a);
+    add_fault_options(app, a);
     app.callback([&a] { throw cli::Exit{run(a)}; });
     cli::install_interrupt_handler();
     return cli::parse_and_run(app, argc, argv);

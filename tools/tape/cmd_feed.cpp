@@ -3,6 +3,7 @@
 #include "cli/numbers.hpp"
 #include "commands.hpp"
 #include "device_options.hpp"
+#include "restart_frames.hpp"
 #include "send.hpp"
 
 namespace cli {
@@ -15,6 +16,8 @@ struct FeedArgs {
     bool wait_xon = false, progress = false, force = false;
     double xon_timeout = 0;
     std::string flow, xon = "0x11", xoff = "0x13";
+    std::string from_block;  // restart after a tool break
+    bool show = false;
 };
 
 void run(const FeedArgs& a) {
@@ -34,7 +37,11 @@ void run(const FeedArgs& a) {
     if ((o.xon & 0x7F) == (o.xoff & 0x7F))
         fail("", tape::Errc::usage,
              "--xon '" + a.xon + "' and --xoff '" + a.xoff + "' are the same character (bit 8 is not compared)");
-    std::vector<tape::Frame> frames = frames_to_send(a.input, a.profile);
+    if (a.show && a.from_block.empty()) fail("", tape::Errc::usage, "--show shows a restart: give --from-block");
+    if (!a.show && a.device.empty()) fail("", tape::Errc::usage, "DEVICE is required (or --show with --from-block)");
+    std::vector<tape::Frame> frames = a.from_block.empty() ? frames_to_send(a.input, a.profile)
+                                                           : restart_frames(a.input, a.profile, a.from_block, a.show);
+    if (a.show) return;
     deliver_or_fail(Delivery{.device = a.device,
                              .use = tape::DeviceUse::both,
                              .format = a.profile.format,
@@ -50,8 +57,7 @@ void add_feed(CLI::App& app) {
     auto* sub = app.add_subcommand("feed", "Send a program to a controller over a line, as a tape reader would (DNC)");
     sub->add_option("input", a->input, "Text program or tape image; - for stdin")->required();
     sub->add_option("device", a->device,
-                    "Device string, e.g. serial:/dev/ttyUSB0?baud=9600&flow=xonxoff; file:PATH gets the image at once")
-        ->required();
+                    "Device string, e.g. serial:/dev/ttyUSB0?baud=9600&flow=xonxoff; file:PATH gets the image at once");
     add_feed_profile_options(sub, a->profile);
     auto* rate = sub->add_option("--rate", a->rate, "Frames per second (default: the line's speed)")
                      ->check(real_number(min_rate, max_rate));
@@ -68,6 +74,12 @@ void add_feed(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--xoff", a->xoff, "The pause character (default DC3, 0x13; bit 8 is not compared)")
         ->capture_default_str();
+    sub->add_option("--from-block", a->from_block,
+                    "Restart after a tool break: the program's start, the modal state at block N (G groups, F, S, "
+                    "T, spindle and coolant) rebuilt as blocks, then N to the end; refused, saying why, where it "
+                    "cannot be rebuilt safely")
+        ->type_name("N");
+    sub->add_flag("--show", a->show, "With --from-block: print the restart's header on stdout, send nothing");
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
     sub->add_flag("--force", a->force, "Replace an existing file: device");
     sub->callback([a] { run(*a); });

@@ -24,6 +24,7 @@ void add_diff(CLI::App& app);
 void add_adapter(CLI::App& app);
 void add_label(CLI::App& app);
 void add_render(CLI::App& app);
+void add_dnc(CLI::App& app);
 void add_scan(CLI::App& app);
 
 }  // namespace cli

@@ -1,6 +1,7 @@
 // tape: punched paper tape for NC machine tools — encode, decode, show, inspect.
 #include <limits>
 
+#include "cli/completion.hpp"
 #include "cli/globals.hpp"
 #include "cli/numbers.hpp"
 #include "cli/run.hpp"
@@ -50,7 +51,9 @@ int main(int argc, char** argv) {
     cli::add_adapter(app);
     cli::add_label(app);
     cli::add_render(app);
+    cli::add_dnc(app);
     cli::add_scan(app);
+    cli::add_bash_completion_flag(app, "tape");
     cli::install_output_cleanup();
     return cli::parse_and_run(app, argc, argv, "'tape --help' or 'tape SUBCOMMAND --help'");
 }

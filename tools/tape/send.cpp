@@ -38,11 +38,19 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
         ->capture_default_str();
 }
 
-std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
-    std::string name = display_name(path);
+tape::InputOptions feed_input_options(const FeedProfile& p) {
     tape::InputOptions io = input_options(p.choice, p.format, p.kind);
     io.detect_code = false;  // an image is sent as it is
-    auto input = open_input(path, io);
+    return io;
+}
+
+std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
+    auto input = open_input(path, feed_input_options(p));
+    return frames_to_send(*input, display_name(path), p);
+}
+
+std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& name, const FeedProfile& p) {
+    tape::InputOptions io = feed_input_options(p);
     tape::FeedOptions o;
     o.encode.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
     o.encode.parity = io.decode.parity;
@@ -57,8 +65,8 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
     o.dialect = tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic);
     try {
         tape::DialectChoice chosen;
-        auto frames = tape::frames_to_send(*input, o, &chosen);
-        if (!input->is_image()) say_dialect(name, chosen);
+        auto frames = tape::frames_to_send(input, o, &chosen);
+        if (!input.is_image()) say_dialect(name, chosen);
         return frames;
     } catch (const tape::Error& e) {
         fail(name, e);

@@ -10,6 +10,7 @@
 #include "tape/device.hpp"
 #include "tape/dnc.hpp"
 #include "tape/encode.hpp"
+#include "tape/input.hpp"
 
 namespace cli {
 
@@ -29,6 +30,10 @@ void add_feed_profile_options(CLI::App* sub, FeedProfile& p);
 /// The frames to send for IN: an image as it is (blank ends replaced when --leader/--trailer are given),
 /// or a text program encoded with the profile.
 std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p);
+/// The same for an input already open (a restart's text); name is for messages.
+std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& name, const FeedProfile& p);
+/// How IN is opened for the profile: an image is sent as it is, its code not detected.
+tape::InputOptions feed_input_options(const FeedProfile& p);
 
 /// Where feed and punch send their frames.
 struct Delivery {
