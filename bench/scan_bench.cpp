@@ -5,10 +5,12 @@
 //   the rest doubtful Faces        either face, either direction: the same read Segments     30 overlapping segments,
 //   shuffled and turned: one exact read Speed        frames a CPU second at 300 dpi (>= 394: a metre of tape) Memory
 //   the peak memory a scan adds over the decoded picture (<= 3)
-// Run: build/bin/scan_bench (TAPE_SCAN_BENCH_PICTURES=N: pictures per accuracy figure, default 25).
+// Run: build/bin/scan_bench (TAPE_SCAN_BENCH_PICTURES=N: pictures per accuracy figure, default 25;
+// TAPE_SCAN_BENCH_VERBOSE=1: each picture not read right is named, and kept in the bench's folder).
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <random>
@@ -65,7 +67,8 @@ std::string worn_picture(const std::vector<tape::Frame>& t, const Worn& w, std::
                                              .jpeg_quality = static_cast<int>(75 + 15 * u(rng)),
                                              .seed = rng()},
                         w.dpi);
-    std::string path = temp_dir() + "/worn" + std::to_string(k) + ".png";
+    std::string path =
+        temp_dir() + "/worn" + std::to_string(static_cast<int>(w.dpi)) + "-" + std::to_string(k) + ".png";
     if (u(rng) < 0.5) p = half_turn(p);
     write_picture(p, path);
     return path;
@@ -81,6 +84,13 @@ void accuracy(benchmark::State& state, Worn w) {
             std::vector<std::string> paths{worn_picture(t, w, rng, k)};
             try {
                 ReadScore s = score_read(t, tape::scan_images(paths));
+                if (std::getenv("TAPE_SCAN_BENCH_VERBOSE") && s.right < s.frames) {  // kept to look at, with its tape
+                    std::ofstream(paths[0] + ".ptp", std::ios::binary)
+                        .write(reinterpret_cast<const char*>(t.data()), static_cast<std::streamsize>(t.size()));
+                    std::fprintf(stderr, "%s: %llu of %llu right, %llu silently wrong\n", paths[0].c_str(),
+                                 static_cast<unsigned long long>(s.right), static_cast<unsigned long long>(s.frames),
+                                 static_cast<unsigned long long>(s.silently_wrong));
+                }
                 total.frames += s.frames, total.right += s.right, total.doubtful += s.doubtful;
                 total.flagged_wrong += s.flagged_wrong, total.silently_wrong += s.silently_wrong;
             } catch (const tape::Error&) {

@@ -48,12 +48,30 @@ inline ReadScore score_read(const std::vector<tape::Frame>& tape_frames, const t
     tape::AlignOptions o;
     o.min_shared = 0;
     auto a = tape::align_reads(reads, o);
+    // A frame the read lacks counts as said when a frame next to the place is doubtful (a lost end, a gap).
+    std::vector<std::int32_t> next(a.columns() + 1, tape::ReadAlignment::none);
+    for (std::size_t c = a.columns(); c-- > 0;)
+        next[c] = a.frame(c, 1) != tape::ReadAlignment::none ? a.frame(c, 1) : next[c + 1];
+    std::int32_t before = tape::ReadAlignment::none;
+    // A run of equal frames (a leader) is said short when any frame of it is doubtful: where in the run
+    // the aligner puts the missing frame is its choice.
+    auto doubt_at = [&](std::int32_t g) {
+        if (g == tape::ReadAlignment::none) return false;
+        auto i = static_cast<std::size_t>(g), j = i;
+        while (i > 0 && r.frames[i - 1] == r.frames[j]) --i;
+        while (j + 1 < r.frames.size() && r.frames[j + 1] == r.frames[i]) ++j;
+        for (std::size_t k = i; k <= j; ++k)
+            if (doubtful_at(r, k + 1)) return true;
+        return false;
+    };
     for (std::size_t c = 0; c < a.columns(); ++c) {
         auto t = a.frame(c, 0), g = a.frame(c, 1);
-        bool doubt = g != tape::ReadAlignment::none && doubtful_at(r, static_cast<std::uint64_t>(g) + 1);
+        bool doubt = g != tape::ReadAlignment::none ? doubtful_at(r, static_cast<std::uint64_t>(g) + 1)
+                                                    : doubt_at(before) || doubt_at(next[c]);
         s.tally(t != tape::ReadAlignment::none && g != tape::ReadAlignment::none &&
                     tape_frames[static_cast<std::size_t>(t)] == r.frames[static_cast<std::size_t>(g)],
                 doubt);
+        if (g != tape::ReadAlignment::none) before = g;
     }
     return s;
 }

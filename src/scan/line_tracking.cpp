@@ -62,14 +62,14 @@ std::optional<Levels> levels_at_end(const GreyView& g, const FeedLine& line) {
     return l;
 }
 
-// Where near q (within a quarter pitch) a feed hole is, if one is: the most hole-like place with paper round it.
+// Where near q (within a fifth of a pitch) a feed hole is, if one is: the most hole-like place with paper round it.
 std::optional<ScanPoint> hole_near(const GreyView& g, ScanPoint q, double p, const Levels& l) {
     const float contrast = l.paper - l.hole;
     double best = 0.6;
     std::optional<ScanPoint> found;
     for (int dy = -2; dy <= 2; ++dy)
         for (int dx = -2; dx <= 2; ++dx) {
-            ScanPoint c{q.x + dx * 0.125 * p, q.y + dy * 0.125 * p};
+            ScanPoint c{q.x + dx * 0.1 * p, q.y + dy * 0.1 * p};
             double h = (l.paper - centre_at(g, c, p)) / contrast;
             if (h <= best) continue;
             double around = (l.paper - round_at(g, c, 0.45 * p)) / contrast;
@@ -90,9 +90,10 @@ void follow(const GreyView& g, FeedLine& line, bool at_start) {
     }
     int misses = 0;
     while (line.centre.size() >= 4 && misses < max_misses) {
-        const std::size_t n = line.centre.size();
-        ScanPoint last = line.centre[n - 1], back = line.centre[n - 4];
-        ScanPoint step{(last.x - back.x) / 3, (last.y - back.y) / 3};
+        // The step over the last 8 frames (3 at least): one hole misplaced does not turn the line.
+        const std::size_t n = line.centre.size(), k = std::min<std::size_t>(8, n - 1);
+        ScanPoint last = line.centre[n - 1], back = line.centre[n - 1 - k];
+        ScanPoint step{(last.x - back.x) / static_cast<double>(k), (last.y - back.y) / static_cast<double>(k)};
         double p = std::hypot(step.x, step.y);
         ScanPoint q{last.x + step.x, last.y + step.y};
         auto l = levels_at_end(g, line);
@@ -116,6 +117,33 @@ void extend_line(const GreyView& picture, FeedLine& line) {
     follow(picture, line, false);
     follow(picture, line, true);
     set_directions(line);
+}
+
+}  // namespace tape::scan
+
+namespace tape::scan {
+
+bool strip_goes_on(const GreyView& picture, const FeedLine& line, bool at_start) {
+    FeedLine l = line;
+    if (at_start) {
+        std::reverse(l.centre.begin(), l.centre.end());
+        std::reverse(l.seen.begin(), l.seen.end());
+    }
+    auto levels = levels_at_end(picture, l);
+    const std::size_t n = l.centre.size();
+    if (!levels || n < 4) return false;
+    ScanPoint last = l.centre[n - 1], back = l.centre[n - 4];
+    ScanPoint t{(last.x - back.x) / 3, (last.y - back.y) / 3}, across{t.y, -t.x};
+    // Between the rows, a frame on: paper there is another frame, the strip going on where its holes were
+    // lost (a tape ends half a frame past its last feed hole).
+    int paper = 0, looked = 0;
+    for (double v : {-2.5, -1.5, 1.5, 2.5}) {
+        ScanPoint q{last.x + t.x + across.x * v, last.y + t.y + across.y * v};
+        if (!inside(picture, q, 1)) return false;  // the picture ends first: said as cut there
+        ++looked;
+        paper += (levels->paper - picture.at(q.x, q.y)) / (levels->paper - levels->hole) < 0.5F;
+    }
+    return paper * 4 >= looked * 3;  // holes nearby may blur into one
 }
 
 }  // namespace tape::scan

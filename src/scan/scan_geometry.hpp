@@ -71,6 +71,10 @@ void set_directions(FeedLine& line);
 /// still darker (or lighter) than the paper round them; stops after 3 places in a row without one.
 void extend_line(const GreyView& picture, FeedLine& line);
 
+/// True when the paper goes on past the line's last frame (its first when at_start) inside the picture:
+/// the strip is longer than what was read, its feed holes lost there.
+bool strip_goes_on(const GreyView& picture, const FeedLine& line, bool at_start);
+
 /// Skew, bow and bend of a feed line, and whether it runs off a picture of width x height.
 struct LineShape {
     double skew_deg = 0, bow_px = 0, bend_deg = 0, pitch = 0;

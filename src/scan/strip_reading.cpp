@@ -87,6 +87,22 @@ std::size_t pick_strip(std::span<const FeedChain> chains) {
     return pick;
 }
 
+// Ends where the paper goes on but its feed holes were lost: the frame there is doubtful, the rest unread.
+void mark_unread_ends(const GreyView& picture, const FeedLine& line, std::vector<ScannedFrame>& frames,
+                      ImageScan& image) {
+    for (bool at_start : {true, false}) {
+        if (frames.empty() || !strip_goes_on(picture, line, at_start)) continue;
+        ScannedFrame& f = at_start ? frames.front() : frames.back();
+        f.confidence = 0;
+        f.doubt = "the strip goes on past this frame, its feed holes lost: the rest of it is not read";
+        image.notes.push_back("the strip goes on past its " + std::string(at_start ? "first" : "last") +
+                              " frame in the picture, at " +
+                              where(Blob{static_cast<float>(f.feed.x), static_cast<float>(f.feed.y), 0}) +
+                              ", where its feed holes are lost: not read");
+        ++image.parts_unread;
+    }
+}
+
 bool any_hole(std::span<const FrameSamples> samples) {
     for (const auto& s : samples)
         for (int o = 0; o < 5; ++o)
@@ -127,6 +143,7 @@ std::optional<Piece> read_strip(const GreyView& picture, std::span<const Blob> b
         return std::nullopt;
     }
     strip.frames = read_frames(*line, samples, options.tracks, side.track1_left, across);
+    mark_unread_ends(picture, *line, strip.frames, image);
     strip.pitch_px = shape.pitch;
     strip.dpi = shape.pitch / 2.54 * 25.4;
     strip.skew_deg = shape.skew_deg;
