@@ -1,10 +1,13 @@
 // tape scan against the figures of its issue, on tapes drawn by tape render as scanners and cameras show
 // them (random frames: every hole pattern, no text to lean on):
-//   Accuracy300  300 dpi, skew up to 3°, bow, stains, dust, blur, noise, uneven light, JPEG: >= 99.99 % right, 0
-//   silently wrong Accuracy200  the same at 200 dpi: >= 99.9 % Phone        a flat photo at 6 px a code hole: >= 99 %,
-//   the rest doubtful Faces        either face, either direction: the same read Segments     30 overlapping segments,
-//   shuffled and turned: one exact read Speed        frames a CPU second at 300 dpi (>= 394: a metre of tape) Memory
-//   the peak memory a scan adds over the decoded picture (<= 3)
+// - Accuracy300: 300 dpi, skew up to 3 degrees, bow, stains, dust, blur, noise, uneven light, JPEG:
+//   >= 99.99 % right, 0 silently wrong;
+// - Accuracy200: the same at 200 dpi: >= 99.9 %;
+// - Phone6pxPerHole: a flat photo at 6 px a code hole: >= 99 %, the rest doubtful;
+// - FacesAndDirections: either face, either direction: the same read;
+// - ThirtySegmentsShuffled: 30 overlapping segments, shuffled and turned: one exact read;
+// - Speed300Dpi: frames a CPU second at 300 dpi (>= 394: a metre of tape);
+// - MemoryOverDecodedPicture: the peak memory a scan adds over the decoded picture (<= 3).
 // Run: build/bin/scan_bench (TAPE_SCAN_BENCH_PICTURES=N: pictures per accuracy figure, default 25;
 // TAPE_SCAN_BENCH_VERBOSE=1: each picture not read right is named, and kept in the bench's folder).
 #include <benchmark/benchmark.h>

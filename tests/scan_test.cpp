@@ -146,6 +146,23 @@ TEST(Scan, SkewBowStainsDustBlurNoiseAndJpegLeaveNoFrameSilentlyWrong) {
     }
 }
 
+// A phone's photo of a tape lying flat, at 6 px a code hole (8 px a frame): orange paper on a light mat,
+// holes light. A feed hole's centre off by a fraction of a pixel must not put track 8 beside its hole.
+TEST(Scan, APhonePhotoAtSixPixelsAHoleLeavesNoFrameSilentlyWrong) {
+    TempDir dir;
+    auto tape = sample_tape();
+    const double dpi = 6 / 1.83 * 25.4;
+    RasterOptions ro{.dpi = dpi, .skew_deg = 2.5, .bow_mm = 1.8, .stains = 4, .seed = 18};
+    ro.paper = 0xE8B060, ro.backing = 0xD0D0D0;
+    Picture p = render_picture(tape, ro);
+    apply_effects(
+        p, PictureEffects{.light = 0.45, .dust = 10, .blur_px = 0.8, .noise = 7, .jpeg_quality = 78, .seed = 18}, dpi);
+    ScanResult r = scan_one(dir, p, "phone.png");
+    ReadScore s = score_read(tape, r);
+    EXPECT_EQ(s.silently_wrong, 0U);
+    EXPECT_GE(s.right_share(), 0.99) << s.right << " of " << s.frames << " right, " << s.doubtful << " doubtful";
+}
+
 TEST(Scan, EitherFaceAndEitherDirectionGiveTheSameRead) {
     TempDir dir;
     auto tape = sample_tape();

@@ -70,7 +70,9 @@ FeedLine feed_line(std::span<const Blob> blobs, const FeedChain& chain) {
 }
 
 void set_directions(FeedLine& line) {
-    constexpr std::size_t w = 2;
+    // Over 9 frames: at a phone's 8 px a frame, a feed hole's centre off by half a pixel turns a line
+    // over 5 frames enough to miss track 8; a bow bends a tape far more slowly than that.
+    constexpr std::size_t w = 4;
     const std::size_t n = line.centre.size();
     line.along.clear();
     line.pitch.clear();
