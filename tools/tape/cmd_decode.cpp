@@ -14,8 +14,19 @@ namespace {
 struct DecodeArgs {
     std::string input = "-", output = "-", format;
     CodeChoice choice;
-    bool keep_going = false, force = false;
+    bool keep_going = false, force = false, strict = false;
 };
+
+// A bad frame as decode says it; blank tape inside a block as a warning (an error with --strict).
+// True for the latter.
+bool say_decoded(const std::string& name, const tape::Diagnostic& d, bool raw, bool strict) {
+    if (d.code != tape::Errc::blank_frame) {
+        say_diagnostic(name, d, raw);
+        return false;
+    }
+    say(name, d.where.describe() + (strict ? ": " : ": warning: ") + d.message);
+    return true;
+}
 
 void run(const DecodeArgs& a) {
     std::string name = display_name(a.input);
@@ -34,8 +45,9 @@ void run(const DecodeArgs& a) {
     };
     try {
         tape::DecodeResult piece;
+        bool blank_in_block = false;
         while (in->next_text(piece)) {
-            for (const auto& d : piece.diagnostics) say_diagnostic(name, d, raw);
+            for (const auto& d : piece.diagnostics) blank_in_block |= say_decoded(name, d, raw, a.strict);
             piece.diagnostics.clear();
             if (!piece.complete) {  // nothing written: the program would be cut short
                 say_other_reading(*in, name);
@@ -61,6 +73,7 @@ void run(const DecodeArgs& a) {
             say_other_reading(*in, name);
             throw Exit{bad_data};
         }
+        if (blank_in_block && a.strict) throw Exit{bad_data};
     } catch (const tape::Error& e) {
         fail(name, e, raw);
     }
@@ -80,6 +93,8 @@ void add_decode(CLI::App& app) {
     sub->add_flag("--keep-going,-k", a->keep_going,
                   "Report every bad frame, write the program with each marked U+FFFD, still exit 1");
     sub->add_flag("--force", a->force, "Replace an existing OUT");
+    sub->add_flag("--strict", a->strict,
+                  "Blank tape inside a block (a character that lost its holes?) is an error: exit 1");
     sub->callback([a] { run(*a); });
 }
 
