@@ -1,6 +1,7 @@
 // tape decode: a tape image -> the text program, every bad frame reported; streamed a chunk at a time.
 #include <memory>
 
+#include "cli/files.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
@@ -34,6 +35,7 @@ void run(const DecodeArgs& a) {
     io.decode.keep_going = a.keep_going;
     auto in = open_input(a.input, io);
     bool raw = in->format()->bytes_are_frames;
+    claim_output(a.output);
     decide_code(*in, name);
     std::unique_ptr<tape::OutputFile> out;
     auto open_output = [&] {

@@ -25,8 +25,7 @@ struct EncodeArgs {
     bool force = false;
 };
 
-void run(const EncodeArgs& a) {
-    std::string in_name = display_name(a.input);
+tape::EncodeOptions encode_options(const EncodeArgs& a, const std::string& in_name) {
     tape::EncodeOptions o;
     o.code = *tape::parse_code(a.choice.code);
     o.parity = *tape::parse_parity(a.choice.parity);
@@ -39,51 +38,57 @@ void run(const EncodeArgs& a) {
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
     if (tape::is_five_track(o.code) && o.parity != tape::Parity::even)
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; 5-track codes carry none");
-    const tape::ImageFormat& format = output_format(a.format, a.output);
-    refuse_binary_terminal(a.output, format.binary, a.force);
-    tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
-    std::unique_ptr<tape::Encoder> made;
-    try {
-        made = std::make_unique<tape::Encoder>(o);  // a label the font or the leader cannot take fails here
-    } catch (const tape::Error& e) {
-        fail(a.label.empty() ? in_name : "--label", e);
-    }
-    auto writer = format.make_writer(tape::ImageWriteOptions{&code});
-    std::string picture;
-    std::unique_ptr<tape::FileSource> source;
-    try {
-        source = std::make_unique<tape::FileSource>(a.input);
-    } catch (const tape::Error& e) {
-        fail(in_name, e);
-    }
-    // The text is read, encoded and written a chunk at a time; the output is created once the first
-    // chunk has encoded, so that a text the code cannot carry leaves nothing behind.
-    std::unique_ptr<tape::OutputFile> out;
-    std::uint64_t written = 0;
-    auto emit = [&](const std::vector<tape::Frame>& frames, bool last) {
-        written += frames.size();
-        if (!out) {
-            try {
-                out = std::make_unique<tape::OutputFile>(a.output, a.force);
-            } catch (const tape::Error& e) {
-                fail(a.output == "-" ? "stdout" : a.output, e);
-            }
-        }
+    return o;
+}
+
+// OUT, written a chunk of frames at a time. It is created once the first chunk has encoded, so that a
+// text the code cannot carry leaves nothing behind.
+class EncodedOutput {
+public:
+    EncodedOutput(const EncodeArgs& a, const tape::ImageFormat& format, const tape::FrameCode& code)
+        : a_(a), format_(format), writer_(format.make_writer(tape::ImageWriteOptions{&code})) {}
+
+    void write(const std::vector<tape::Frame>& frames, bool last) {
+        written_ += frames.size();
+        if (!out_) out_ = open_output(a_.output, a_.force);
         try {
-            if (format.bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
-                out->write(std::string_view(reinterpret_cast<const char*>(frames.data()), frames.size()));
+            if (format_.bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
+                out_->write(std::string_view(reinterpret_cast<const char*>(frames.data()), frames.size()));
                 return;
             }
-            picture.clear();
-            writer->write(frames, picture);
-            if (last) writer->finish(picture);
-            out->write(picture);
+            picture_.clear();
+            writer_->write(frames, picture_);
+            if (last) writer_->finish(picture_);
+            out_->write(picture_);
         } catch (const tape::Error& e) {
-            fail(a.output == "-" ? "stdout" : a.output, e);
+            fail(name(), e);
         }
-    };
+    }
+    void discard() {
+        if (out_) out_->discard();
+    }
+    void commit() {
+        try {
+            out_->commit();
+        } catch (const tape::Error& e) {
+            fail(name(), e);
+        }
+    }
+    std::uint64_t written() const { return written_; }
+
+private:
+    std::string name() const { return a_.output == "-" ? "stdout" : a_.output; }
+    const EncodeArgs& a_;
+    const tape::ImageFormat& format_;
+    std::unique_ptr<tape::ImageWriter> writer_;
+    std::unique_ptr<tape::OutputFile> out_;
+    std::string picture_;
+    std::uint64_t written_ = 0;
+};
+
+// IN read, encoded and written a chunk at a time; a text the code cannot carry ends the program.
+void encode_chunks(tape::FileSource& source, tape::Encoder& encoder, EncodedOutput& out, const std::string& in_name) {
     std::vector<tape::Frame> frames;
-    tape::Encoder& encoder = *made;
     bool noted = false;
     auto note_bom = [&] {
         if (noted || !encoder.skipped_byte_order_mark()) return;
@@ -97,25 +102,39 @@ void run(const EncodeArgs& a) {
             static_cast<std::uint8_t*>(std::aligned_alloc(4096, chunk)), &std::free);
         if (!storage) throw std::bad_alloc();
         std::span<std::uint8_t> buffer(storage.get(), chunk);
-        for (std::size_t n; (n = source->read(buffer)) > 0;) {
+        for (std::size_t n; (n = source.read(buffer)) > 0;) {
             encoder.feed(std::string_view(reinterpret_cast<const char*>(buffer.data()), n), frames);
             note_bom();
-            if (!frames.empty()) emit(frames, false);
+            if (!frames.empty()) out.write(frames, false);
             frames.clear();
         }
         encoder.finish(frames);
     } catch (const tape::Error& e) {
-        if (out) out->discard();
+        out.discard();
         note_bom();
         fail(in_name, e);
     }
-    emit(frames, true);
+    out.write(frames, true);
+}
+
+void run(const EncodeArgs& a) {
+    std::string in_name = display_name(a.input);
+    tape::EncodeOptions o = encode_options(a, in_name);
+    const tape::ImageFormat& format = output_format(a.format, a.output);
+    refuse_binary_terminal(a.output, format.binary, a.force);
+    tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
+    std::unique_ptr<tape::Encoder> encoder;
     try {
-        out->commit();
+        encoder = std::make_unique<tape::Encoder>(o);  // a label the font or the leader cannot take fails here
     } catch (const tape::Error& e) {
-        fail(a.output == "-" ? "stdout" : a.output, e);
+        fail(a.label.empty() ? in_name : "--label", e);
     }
-    if (globals().verbosity > 0) say(in_name, std::to_string(written) + " frames written as " + std::string(format.id));
+    EncodedOutput out(a, format, code);
+    auto source = open_source(a.input);
+    encode_chunks(*source, *encoder, out, in_name);
+    out.commit();
+    if (globals().verbosity > 0)
+        say(in_name, std::to_string(out.written()) + " frames written as " + std::string(format.id));
 }
 
 }  // namespace
