@@ -75,13 +75,12 @@ std::optional<tape::FrameCode> code_of(const RenderArgs& a, const Drawn& d, cons
 }
 
 void write_svg(const RenderArgs& a, const Drawn& d, const tape::RenderOptions& o, const std::string& name) {
-    std::optional<tape::OutputFile> out;
+    std::unique_ptr<tape::OutputFile> out = open_output(a.output, a.force);
     try {
-        out.emplace(a.output, a.force);
         tape::render_svg(d.frames, o, [&out](std::string_view piece) { out->write(piece); });
         out->commit();
     } catch (const tape::Error& e) {
-        fail(e.code() == tape::Errc::usage && out ? name : display_name(a.output), e);
+        fail(e.code() == tape::Errc::usage ? name : display_name(a.output), e);
     }
 }
 

@@ -1,5 +1,6 @@
 // tape scan: pictures of a tape (flatbed scans, photos of a tape lying flat) read as a tape image, with
 // a report of what was seen and which frames are doubtful (tape/scan.hpp).
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
@@ -41,6 +42,8 @@ void refuse_existing(const std::string& path, bool force) {
 
 void run(const ScanArgs& a) {
     if (!tape::scan_available()) fail("", tape::Errc::io, std::string(tape::scan_unavailable_message()));
+    check_outputs({{"-o", a.output}, {"--report", a.report}, {"--debug-svg", a.debug_svg}});
+    for (const auto& image : a.images) note_input(image);  // no output may be written over a picture read
     for (const auto* path : {&a.output, &a.report}) refuse_existing(*path, a.force);
     if (a.images.size() == 1) refuse_existing(a.debug_svg, a.force);
     const tape::ImageFormat& out_format = output_format(a.format, a.output);

@@ -1,6 +1,7 @@
 // Pictures of a tape as reads (picture_reads.hpp).
 #include "picture_reads.hpp"
 
+#include "cli/files.hpp"
 #include "cli/messages.hpp"
 #include "scan_report.hpp"
 #include "tape/image.hpp"
@@ -13,6 +14,7 @@ bool is_picture(const std::string& path) { return !tape::picture_format_for_path
 
 PictureRead read_picture(const std::string& path) {
     if (!tape::scan_available()) fail(path, tape::Errc::io, std::string(tape::scan_unavailable_message()));
+    note_input(path);
     std::vector<std::string> paths{path};
     tape::ScanResult r;
     try {

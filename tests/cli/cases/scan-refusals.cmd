@@ -9,3 +9,12 @@ $TAPE scan text.png -o r.ptp; echo "exit $?"
 $TAPE scan short.png -o r.ptp --tracks 6; echo "exit $?"
 touch exists.ptp
 $TAPE scan short.png -o exists.ptp; echo "exit $?"
+# No output over a picture read, and no two outputs in one file, nothing written either way.
+$TAPE encode tapes/circle-examples.txt -o circle.ptp
+$TAPE render circle.ptp -o circle.png
+cp circle.png kept.png
+$TAPE scan circle.png -o circle.png --force; echo "exit $?"
+$TAPE scan circle.png -o r2.ptp --report r2.ptp; echo "exit $?"
+$TAPE restore circle.png circle.ptp -o circle.png --force; echo "exit $?"
+cmp circle.png kept.png && test ! -e r2.ptp && echo "nothing written"
+$TAPE render circle.ptp -o circle.ptp --force; echo "exit $?"
