@@ -81,6 +81,7 @@ void add_scan(CLI::App& app) {
         "--debug-svg", a->debug_svg,
         "Also draw what was found over each picture, as SVG (several pictures: FILE-1.svg, FILE-2.svg, ...)");
     sub->add_option("--tracks", a->tracks, "Tracks of the tape: 8, or 5 (telegraph tape)")
+        ->check(whole_number(5, 8))  // a whole number first, said as such; then one of the two
         ->check(CLI::IsMember({5, 8}))
         ->capture_default_str();
     sub->add_option("--dpi", a->dpi, "The resolution, if known: only checked against the 2.54 mm between feed holes")
