@@ -340,7 +340,9 @@ void add_unit_options(CLI::App& app, SimArgs& a) {
                    "The control stops the reader N times at random frames (1 to 2000 frames apart) and starts it "
                    "again after a random 2 to 30 ms")
         ->check(whole_number(0, 1'000'000'000));
-    app.add_option("--control-seed", a.control_seed, "Seed of the control's random stops")->capture_default_str();
+    app.add_option("--control-seed", a.control_seed, "Seed of the control's random stops")
+        ->check(whole_number(0, 4'294'967'295))
+        ->capture_default_str();
     app.add_option("--control-rewind-after", a.control_rewind_after,
                    "Once, after taking N frames, the control stops, rewinds (its rewind line on and off) and starts "
                    "again")
