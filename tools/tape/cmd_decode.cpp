@@ -75,6 +75,10 @@ void run(const DecodeArgs& a) {
             say_other_reading(*in, name);
             throw Exit{bad_data};
         }
+        if (std::uint64_t doubts = in->doubtful_frames()) {
+            say(name, std::to_string(doubts) + " frame(s) restored in doubt (" + tape::doubts_file_for(a.input) + ")");
+            throw Exit{bad_data};
+        }
         if (blank_in_block && a.strict) throw Exit{bad_data};
     } catch (const tape::Error& e) {
         fail(name, e, raw);
