@@ -23,13 +23,15 @@ struct RestoreArgs {
     bool json = false, force = false, guess = false, drop_unrelated = false, no_doubts_file = false;
 };
 
-tape::RestoreResult run_restore(const RestoreArgs& a, const std::vector<TapeInput>& reads,
-                                const RestoreReportInput& report, const tape::FormatSpec* spec) {
+tape::RestoreResult run_restore(const RestoreArgs& a, const ReadsAndDoubts& in, const RestoreReportInput& report,
+                                const tape::FormatSpec* spec) {
+    const std::vector<TapeInput>& reads = in.reads;
     std::vector<std::span<const tape::Frame>> spans;
     for (const auto& r : reads) spans.emplace_back(r.frames);
     tape::RestoreOptions o{.code = report.code, .dialect = *tape::parse_dialect(a.dialect), .spec = spec};
     o.guess = a.guess;
     o.align.drop_unrelated = a.drop_unrelated;
+    o.doubts = in.doubts;  // a picture's faint holes weigh less than a sure reading
     try {
         return tape::restore(spans, o);
     } catch (const tape::UnrelatedRead& e) {
@@ -56,15 +58,15 @@ void run(const RestoreArgs& a) {
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     const tape::ImageFormat& out_format = output_format(a.format, a.output);
     refuse_binary_terminal(a.output, out_format.binary, a.force);
-    std::vector<TapeInput> reads;
-    for (const auto& path : a.reads) reads.push_back(is_picture(path) ? read_picture(path).read : read_tape(path, ""));
+    ReadsAndDoubts in = read_tapes_or_pictures(a.reads);
+    const std::vector<TapeInput>& reads = in.reads;
     RestoreReportInput report;
     report.code = code_for_reads(a.code, a.parity, reads, report.code_text);
     for (const auto& r : reads) {
         report.names.push_back(r.name);
         report.sizes.push_back(r.frames.size());
     }
-    tape::RestoreResult result = run_restore(a, reads, report, spec ? &*spec : nullptr);
+    tape::RestoreResult result = run_restore(a, in, report, spec ? &*spec : nullptr);
     report.result = &result;
     say_about_reads(report, result);
     // The image first: it is what the run is for, and it is written even when not every frame was restored.
