@@ -48,6 +48,31 @@ std::string location_json(const tape::Location& l) {
     return "{\"frame\": " + json_number(l.frame) + ", \"line\": " + std::to_string(l.line) + "}";
 }
 
+// One block for --json: where it is, its source and what the loader made of it.
+Json block_value(const tape::Block& b) {
+    Json words = Json::array(), flagged = Json::array(), comments = Json::array(), statements = Json::array();
+    for (const auto& w : b.words) {
+        words.push_back(w.text);
+        if (!w.known) flagged.push_back(w.text);
+    }
+    for (const auto& c : b.comments) comments.push_back(c.text);
+    for (const auto& st : b.statements)
+        statements.push_back(Json{{"kind", statement_kind(st.kind)}, {"text", st.text}});
+    return Json{{"frame", b.where.frame ? Json(*b.where.frame) : Json(nullptr)},
+                {"line", b.where.line},
+                {"column", b.where.column},
+                {"source", b.source},
+                {"number", b.number ? Json(b.number->text) : Json(nullptr)},
+                {"main", b.main},
+                {"skip", b.skip},
+                {"skip_level", b.skip_level},
+                {"ends_program", b.ends},
+                {"words", words},
+                {"flagged", flagged},
+                {"comments", comments},
+                {"statements", statements}};
+}
+
 // Blocks are written as the loader gives them, so that a tape of any length lists in bounded memory:
 // only the label, the text after a program's end and the findings are held.
 class Lister : public tape::ProgramVisitor {
@@ -84,26 +109,7 @@ public:
     void block(const tape::Block& b) override {
         if (b.ends_program()) ended_ = true;
         if (a_.json) {
-            out_ += std::string(blocks_ ? ", " : "") + "{\"frame\": " + json_number(b.where.frame) +
-                    ", \"line\": " + std::to_string(b.where.line) + ", \"column\": " + std::to_string(b.where.column) +
-                    ", \"source\": " + json_string(b.source) +
-                    ", \"number\": " + (b.number ? json_string(b.number->text) : "null") +
-                    ", \"main\": " + (b.main ? "true" : "false") + ", \"skip\": " + (b.skip ? "true" : "false") +
-                    ", \"skip_level\": " + std::to_string(b.skip_level) +
-                    ", \"ends_program\": " + (b.ends ? "true" : "false") + ", \"words\": [";
-            std::string flagged;
-            for (std::size_t w = 0; w < b.words.size(); ++w) {
-                out_ += (w ? ", " : "") + json_string(b.words[w].text);
-                if (!b.words[w].known) flagged += (flagged.empty() ? "" : ", ") + json_string(b.words[w].text);
-            }
-            out_ += "], \"flagged\": [" + flagged + "], \"comments\": [";
-            for (std::size_t c = 0; c < b.comments.size(); ++c)
-                out_ += (c ? ", " : "") + json_string(b.comments[c].text);
-            out_ += "], \"statements\": [";
-            for (std::size_t s = 0; s < b.statements.size(); ++s)
-                out_ += std::string(s ? ", " : "") + "{\"kind\": " + json_string(statement_kind(b.statements[s].kind)) +
-                        ", \"text\": " + json_string(b.statements[s].text) + "}";
-            out_ += "]}";
+            out_ += std::string(blocks_ ? ", " : "") + json_text(block_value(b));
         } else {
             std::string pos = position_text(b.where, from_tape_);
             out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + tape::visible(b.text());

@@ -70,15 +70,15 @@ std::string summary_text(const tape::LintVisitor& linter) {
     return s;
 }
 
-std::string summary_json(const tape::LintVisitor& linter, std::uint64_t unlisted) {
-    std::string rules;
-    for (const auto& [rule, count] : linter.by_rule())
-        rules += (rules.empty() ? "" : ", ") + json_string(std::string(rule)) + ": " + std::to_string(count);
-    return "{\"errors\": " + std::to_string(linter.count(tape::Severity::error)) +
-           ", \"warnings\": " + std::to_string(linter.count(tape::Severity::warning)) +
-           ", \"notes\": " + std::to_string(linter.count(tape::Severity::note)) +
-           ", \"programs\": " + std::to_string(linter.programs()) + ", \"by_rule\": {" + rules +
-           "}, \"not_listed\": " + std::to_string(unlisted) + "}";
+Json summary_value(const tape::LintVisitor& linter, std::uint64_t unlisted) {
+    Json rules = Json::object();
+    for (const auto& [rule, count] : linter.by_rule()) rules[std::string(rule)] = count;
+    return Json{{"errors", linter.count(tape::Severity::error)},
+                {"warnings", linter.count(tape::Severity::warning)},
+                {"notes", linter.count(tape::Severity::note)},
+                {"programs", linter.programs()},
+                {"by_rule", rules},
+                {"not_listed", unlisted}};
 }
 
 void list_rules() {
@@ -114,12 +114,15 @@ void run(const LintArgs& a) {
     }
     std::string out;
     if (a.json) {
-        out = "{\"file\": " + json_string(in.name) +
-              ", \"dialect\": " + json_string(std::string(tape::dialect_name(linter.dialect()))) + ", \"close\": " +
-              (linter.close() ? json_string(std::string(tape::dialect_name(*linter.close()))) : "null") +
-              ", \"findings\": [";
-        for (std::size_t i = 0; i < findings.size(); ++i) out += (i ? ", " : "") + finding_json(findings[i]);
-        out += "], \"summary\": " + summary_json(linter, unlisted) + "}\n";
+        Json listed = Json::array();
+        for (const auto& f : findings) listed.push_back(finding_value(f));
+        Json close = linter.close() ? Json(std::string(tape::dialect_name(*linter.close()))) : Json(nullptr);
+        out = json_text(Json{{"file", in.name},
+                             {"dialect", std::string(tape::dialect_name(linter.dialect()))},
+                             {"close", close},
+                             {"findings", listed},
+                             {"summary", summary_value(linter, unlisted)}}) +
+              "\n";
     } else {
         for (const auto& f : findings) out += finding_line(in, f);
     }
