@@ -43,7 +43,7 @@ void ProgressLine::operator()(const tape::LineProgress& p) {
 }
 
 void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
-    add_code_options(sub, p.choice, true);
+    add_code_options(sub, p.choice, true, true);  // a text program may be sent in ITA2 or МТК-2
     sub->add_option("--leader", p.leader, "Blank frames (NUL) before the program")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str()
@@ -71,7 +71,7 @@ std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfi
     io.detect_code = false;  // an image is sent as it is
     auto input = open_input(path, io);
     tape::FeedOptions o;
-    o.encode.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
+    o.encode.code = tape::parse_code(p.choice.code).value_or(tape::Code::iso);  // auto: a text program in ISO
     o.encode.parity = io.decode.parity;
     o.encode.charset = io.decode.charset;
     o.encode.leader = p.leader;

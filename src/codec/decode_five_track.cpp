@@ -67,10 +67,12 @@ bool Decoder::feed_five_track(std::span<const Frame> frames, DecodeResult& out) 
                 else
                     put_held_cr(out);
                 put(m.text, index);
+                if (options_.unshift_on_space && m.text == " ") register_ = 0;  // back to letters
                 break;
         }
     }
     next_index_ += frames.size();
+    if (!out.text.empty()) last_char_ = out.text.back();
     if (stopped_) out.complete = false;
     return !stopped_;
 }
