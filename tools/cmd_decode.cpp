@@ -61,7 +61,13 @@ void commit_or_fail(tape::OutputFile& out, const std::string& name) {
 // A binary loader tape decoded as text would be noise: say what it is and how to get its memory.
 void refuse_binary(tape::Input& in, const std::string& name) {
     if (!in.is_image()) return;
-    const tape::CodeDetection& d = in.detect();
+    const tape::CodeDetection* detected = nullptr;
+    try {
+        detected = &in.detect();
+    } catch (const tape::Error& e) {
+        fail(name, e, in.format()->bytes_are_frames);
+    }
+    const tape::CodeDetection& d = *detected;
     if (d.kind != tape::TapeKind::binary || !d.evidence.binary) return;
     fail(name, tape::Errc::unknown_code,
          d.evidence.binary->summary() +
@@ -128,8 +134,8 @@ void decode_memory(const DecodeArgs& a, tape::Input& in, const std::string& name
     const tape::BinaryTape* t = binary.tape();
     if (!t)
         fail(name, tape::Errc::unknown_code,
-             "no binary loader format (PDP-8 RIM or BIN, PDP-11 absolute loader) explains this tape: " +
-                 in.detect().reason);
+             "no binary loader format (PDP-8 RIM or BIN, PDP-11 absolute loader) explains this tape; `tape info` "
+             "tells what it is");
     if (globals().verbosity > 0) say(name, t->summary());
     bool bad = false;
     for (const auto& b : t->blocks)

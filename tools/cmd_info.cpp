@@ -78,15 +78,15 @@ InfoFacts scan(const InfoArgs& a) {
     if (!a.parity.empty()) given_rule = *tape::parse_parity(a.parity);
     f.given_code = a.code != "auto";
     if (f.given_code) f.code = *tape::parse_code(a.code);
-    if (auto named = in->declared_code(); !f.given_code && named && *named != tape::Code::iso) {
-        f.code = named;
-        f.declared = true;
-    }
     std::optional<tape::Surveyor> extra;
-    if (f.given_code || f.declared || given_rule)
-        extra.emplace(tape::FrameCode::make(f.code.value_or(tape::Code::iso), given_rule.value_or(tape::Parity::even),
-                                            globals().table()));
     try {
+        if (auto named = in->declared_code(); !f.given_code && named && *named != tape::Code::iso) {
+            f.code = named;
+            f.declared = true;
+        }
+        if (f.given_code || f.declared || given_rule)
+            extra.emplace(tape::FrameCode::make(f.code.value_or(tape::Code::iso),
+                                                given_rule.value_or(tape::Parity::even), globals().table()));
         // A leader label is holes, but no data: counted as the blank leader it is punched into.
         f.label = in->label();
         std::uint64_t at = 0;

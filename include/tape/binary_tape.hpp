@@ -1,5 +1,6 @@
 // Binary loader tapes of minicomputers: the frames are no characters but words for a loader program.
-//   PDP-8 RIM   leader of 0200 frames; pairs of words, each two 6-bit frames: an address (bit 7 of the
+//   PDP-8 RIM   leader of 0200 frames (eight at least are asked for, so that EIA's single ends of block
+//               are no leader); pairs of words, each two 6-bit frames: an address (bit 7 of the
 //               first frame's 7 bits, 0100, set) then the word stored there; trailer 0200. No checksum.
 //   PDP-8 BIN   leader 0200; an origin word (0100 set), then data words stored one after another; a frame
 //               0300-0370 sets the field (memory bank) for what follows; the last word before the 0200
@@ -112,8 +113,9 @@ struct BinaryTape {
     std::uint64_t punched = 0;           ///< punched frames looked at
     bool mixed = false;                  ///< PDP-8: both RIM and BIN sections
 
-    /// True when the tape is in this format beyond doubt: blocks explain nearly every punched frame and
-    /// most checksums hold (RIM, which has none, by its strict address-word pairs).
+    /// True when the tape is in this format beyond doubt: blocks explain four fifths of the punched frames,
+    /// and for the PDP-11 a third of the checksums at least hold; a PDP-8 tape is known by its sections
+    /// (leader, origin, 6-bit frames, trailer) even when its checksums fail, so that damage is named.
     bool recognised() const;
     /// "PDP-11 absolute loader: 20 blocks, every checksum holds, start address 000001 (halt)".
     std::string summary() const;

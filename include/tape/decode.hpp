@@ -67,9 +67,9 @@ public:
     /// The tape has ended: appends what was held back (a 5-track CR that an LF might have followed).
     void finish(DecodeResult& out);
 
-    /// How the tape ended, after finish(): a warning when its last character is no line or block end
+    /// How the tape ended, after finish(): one warning when its last character is no line or block end
     /// (LF, CR, another control, '%', a telecode's halt), so that it may have been cut inside a block,
-    /// and one when its last frame is punched (no blank trailer). Empty for a tape that ends well.
+    /// or when its last frame is punched (no blank trailer), or both. Empty for a tape that ends well.
     std::vector<Diagnostic> ending() const;
 
     std::uint64_t frames_seen() const { return next_index_; }
@@ -83,6 +83,8 @@ private:
     void finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from);
     bool feed_five_track(std::span<const Frame> frames, DecodeResult& out);  // decode_five_track.cpp
     void put_held_cr(DecodeResult& out);
+    void put_text(std::string_view text, std::uint64_t index, DecodeResult& out);
+    void five_track_bad(Frame f, std::uint64_t index, const std::string& what, DecodeResult& out);
     void note_trailer(std::span<const Frame> frames);  // decode_ending.cpp
 
     DecodeOptions options_;
@@ -95,6 +97,7 @@ private:
     std::uint64_t trailer_ = 0;                  // blank frames since the last punched one
     std::optional<std::uint64_t> last_punched_;  // 0-based index of the last punched frame
     std::optional<char> last_char_;              // the last character decoded
+    std::optional<std::uint64_t> last_bad_;      // 0-based index of the last bad frame
     int register_ = 0;                           // 5-track: the register the last shift chose
     std::vector<std::uint64_t> held_cr_;         // 5-track: frames of CRs not yet known to end a line
 };

@@ -9,6 +9,9 @@ namespace {
 
 constexpr Frame leader_frame = 0200, rubout = 0377;
 constexpr Frame origin_bit = 0100;
+// A section follows a leader of at least this many 0200 frames. So the single 0200 of EIA's end of block,
+// with EIA characters between, is no PDP-8 tape.
+constexpr std::uint64_t leader_needed = 8;
 
 bool field_setting(Frame f) { return (f & 0300) == 0300 && f != rubout; }
 
@@ -62,13 +65,19 @@ private:
                 flush_blanks();
                 end_section(true);
             }
+            ++leader_run_;
             return;
         }
         if (f == blank_frame) {
             if (section_) ++blanks_;  // words of 0000, unless only runout follows
             return;
         }
+        if (!section_ && leader_run_ < leader_needed) {  // no leader before it: no loader would take it
+            add_stray(1, at_);
+            return;
+        }
         if (!section_) section_ = Section{.first = at_};
+        leader_run_ = 0;
         flush_blanks();
         note_punched();
         if (f == rubout) {
@@ -130,9 +139,10 @@ private:
     void end_section(bool trailer);
 
     std::optional<Section> section_;
-    std::uint64_t at_ = 0;      // 0-based index of the frame being taken
-    std::uint64_t blanks_ = 0;  // blank frames inside a section not yet taken as words
-    std::uint64_t loaded_ = 0;  // data words of the section loaded so far
+    std::uint64_t at_ = 0;          // 0-based index of the frame being taken
+    std::uint64_t blanks_ = 0;      // blank frames inside a section not yet taken as words
+    std::uint64_t leader_run_ = 0;  // 0200 frames since the last section (blank tape among them)
+    std::uint64_t loaded_ = 0;      // data words of the section loaded so far
     std::uint32_t field_ = 0, next_field_ = 0, origin_ = 0;
     bool comment_ = false;
 };

@@ -107,11 +107,13 @@ void BinaryReader::Parser::add_stray(std::uint64_t count, std::uint64_t first) {
 
 bool BinaryTape::recognised() const {
     if (!format || block_count == 0 || stray_frames * 5 > punched) return false;
-    if (checksums_held + checksums_failed > 0) return checksums_held >= checksums_failed;
-    // No checksum to go by: RIM's strict address-word pairs, enough of them not to be chance.
-    std::uint64_t rim_words = 0;
-    for (const auto& b : blocks) rim_words += b.format == BinaryFormat::pdp8_rim ? b.words : 0;
-    return rim_words >= 4;
+    // A PDP-11 block is any 001 000 with a count: chance makes them of noise, but never their checksums.
+    if (*format == BinaryFormat::pdp11_absolute) return checksums_held > 0 && checksums_held * 3 >= checksums_failed;
+    // A PDP-8 section is leader, an origin, words of two 6-bit frames and a trailer, no other frame: noise and
+    // text have frames with track 8. So a damaged tape whose checksums fail is still named (and its damage).
+    std::uint64_t words = 0;
+    for (const auto& b : blocks) words += b.words;
+    return checksums_held + checksums_failed > 0 || words >= 4;
 }
 
 std::string BinaryTape::summary() const {

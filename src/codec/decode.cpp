@@ -151,6 +151,7 @@ std::map<Errc, std::uint64_t> Decoder::unlisted() const {
 void Decoder::note_bad(Frame f, std::uint64_t index, std::uint64_t line, DecodeResult& out) {
     std::uint64_t& seen = code_.kind(f) == FrameKind::parity_error ? parity_seen_ : other_seen_;
     ++seen;
+    last_bad_ = index;
     if (options_.max_diagnostics == 0 || seen <= options_.max_diagnostics)
         out.diagnostics.push_back(bad_frame_diagnostic(code_, f, index, line));
 }

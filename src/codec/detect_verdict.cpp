@@ -7,12 +7,16 @@
 namespace tape {
 namespace {
 
-// A reading fits when at most one frame in ten fails it and at most one in fifty decodes to a control
-// no text holds (a damaged tape still fits: decoding then names each bad frame; a tape of another code
-// read as ISO is full of stray controls); it is clean when decoding that way finds no bad frame, or one
-// in a thousand, and almost no stray controls.
+// A reading fits when at most one frame in ten fails it and there are not many stray controls (more than
+// one in fifty, and ten at least): a damaged tape still fits, decoding then names each bad frame, but a
+// tape of another code read as ISO is full of controls no text holds. It is clean when decoding that way
+// finds no bad frame, or one in a thousand, and almost no stray controls.
+constexpr std::uint64_t many_controls = 10;
+bool too_many_controls(const ReadingFit& f, std::uint64_t frames) {
+    return f.controls >= many_controls && f.controls * 50 > frames;
+}
 bool fits(const ReadingFit& f, std::uint64_t frames) {
-    return (f.bad_frames + f.controls) * 10 <= frames && f.controls * 50 <= frames;
+    return (f.bad_frames + f.controls) * 10 <= frames && !too_many_controls(f, frames);
 }
 bool clean(const ReadingFit& f, std::uint64_t frames) {
     return f.bad_frames * 1000 <= frames && f.controls * 20 <= frames;
@@ -134,7 +138,7 @@ CodeDetection no_code_verdict(CodeDetection d, const ReadingFit& best, std::uint
     const TapeEvidence& e = d.evidence;
     std::string closest = "no character code fits; the closest, " + reading_name(best.reading) + ", fails " +
                           n(score(best)) + " of " + frames_text(frames);
-    if (best.controls * 50 > frames && best.bad_frames * 10 <= frames)
+    if (too_many_controls(best, frames) && best.bad_frames * 10 <= frames)
         closest = "not " + reading_name(best.reading) + ": too many control characters (" + n(best.controls) + " of " +
                   frames_text(frames) + " are controls no text holds, such as BEL or ESC)";
     if (score(best) * 2 > frames || e.longest_0x80_run >= leader_run) {

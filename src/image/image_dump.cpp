@@ -11,7 +11,7 @@
 namespace tape {
 namespace {
 
-constexpr std::string_view dump_extensions[] = {".xxd", ".dump"};
+constexpr std::string_view dump_extensions[] = {".xxd"};  // else the content says it is a dump
 constexpr std::size_t longest_line = 4096;
 
 enum class Style { none, xxd, hexdump, od, words };
