@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 cxx=${ARM_CXX:-arm-none-eabi-g++}
 if ! command -v "$cxx" >/dev/null; then
-  echo "firmware-build: skipped: no $cxx (apt-get install gcc-arm-none-eabi picolibc-arm-none-eabi libstdc++-arm-none-eabi-picolibc)" >&2
+  echo "firmware-build: skipped: no $cxx (bash scripts/install-deps.sh firmware installs it)" >&2
   exit 77
 fi
 out=${1:-build-firmware}

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh test
 # The one list of targets, shared with CMake.
 targets=$(sed -n 's/^set(TAPE_FUZZ_TARGETS \(.*\))$/\1/p' tests/fuzz/targets.cmake)
 [ -n "$targets" ] || { echo "fuzz: no targets in tests/fuzz/targets.cmake" >&2; exit 1; }

@@ -1,11 +1,80 @@
 #!/usr/bin/env bash
-# Installs the Debian packages the build and the tests need, when they are missing: as root directly,
-# else through sudo. Without either it says what to run as root, and fails.
+# Installs the Debian packages a purpose needs, when they are missing: as root directly, else through
+# sudo. Without either it says what to run as root, and fails. apt's own output is shown.
+#
+# Usage: install-deps.sh [PURPOSE...]   (no purpose: all)
+#   run       build and run the tape CLI (scripts/demo.sh)
+#   features  the libraries of optional features (see below)
+#   test      run and features, and what the tests need (scripts/test.sh, scripts/build.sh, scripts/fuzz.sh)
+#   firmware  the Cortex-M0+ cross toolchain (scripts/firmware-build.sh)
+#   all       all of these
+#
+# Where a new package goes: `run` when the CLI cannot be built without it; `features` when only one
+# optional feature uses it, and CMake builds that feature only when the library is found, the command
+# answering "built without LIBRARY" otherwise (so the demo stays small); `test` when only tests, the
+# sanitizers, the fuzzers or the package checks use it. One package a line.
 set -euo pipefail
-packages=(cmake ninja-build g++ pkg-config libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
-          libusb-1.0-0-dev libhidapi-dev clang-14 libclang-rt-14-dev clang-format-14 python3
-          gcc-arm-none-eabi picolibc-arm-none-eabi libstdc++-arm-none-eabi-picolibc libxml2-utils chromium
-          umockdev libumockdev-dev)
+
+run=(
+  cmake
+  ninja-build
+  g++
+  pkg-config
+  libcli11-dev
+  nlohmann-json3-dev
+  libusb-1.0-0-dev
+  libhidapi-dev
+)
+features=(
+  libtomlplusplus-dev
+)
+test=(
+  libgtest-dev
+  libgmock-dev
+  libbenchmark-dev
+  python3
+  libxml2-utils
+  chromium
+  umockdev
+  libumockdev-dev
+  clang-14
+  libclang-rt-14-dev
+  clang-format-14
+  dpkg-dev
+  file
+  man-db
+)
+firmware=(
+  gcc-arm-none-eabi
+  picolibc-arm-none-eabi
+  libstdc++-arm-none-eabi-picolibc
+)
+
+usage() {
+  sed -n '5,10s/^# \{0,1\}//p' "$0"
+}
+
+packages=()
+[ $# -eq 0 ] && set -- all
+for purpose in "$@"; do
+  case $purpose in
+    run) packages+=("${run[@]}") ;;
+    features) packages+=("${features[@]}") ;;
+    test) packages+=("${run[@]}" "${features[@]}" "${test[@]}") ;;
+    firmware) packages+=("${firmware[@]}") ;;
+    all) packages+=("${run[@]}" "${features[@]}" "${test[@]}" "${firmware[@]}") ;;
+    -h | --help)
+      usage
+      exit 0
+      ;;
+    *)
+      echo "install-deps: no purpose '$purpose'" >&2
+      usage >&2
+      exit 2
+      ;;
+  esac
+done
+
 command -v dpkg-query >/dev/null || {
   echo "install-deps: no dpkg-query: this is not a Debian-like system; install the equivalents of" >&2
   echo "  ${packages[*]}" >&2
@@ -14,6 +83,7 @@ command -v dpkg-query >/dev/null || {
 }
 missing=()
 for p in "${packages[@]}"; do
+  [[ " ${missing[*]} " == *" $p "* ]] && continue
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
@@ -28,6 +98,8 @@ if [ "$(id -u)" -ne 0 ]; then
   sudo=(sudo)
 fi
 echo "install-deps: installing ${missing[*]}" >&2
-"${sudo[@]}" apt-get update -qq
-# Through env: sudo drops the caller's environment.
-"${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+"${sudo[@]}" apt-get update
+# Through env: sudo drops the caller's environment. The downloaded .deb files are not kept: they would
+# take as much disk again as the packages they hold.
+"${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
+  -o APT::Keep-Downloaded-Packages=false "${missing[@]}"

@@ -277,7 +277,7 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
     TempDir dir;
     auto tape = pattern(5000, 6);
     // The child sees the umockdev devices through the same preload library.
-    ::setenv("LD_PRELOAD", "libumockdev-preload.so.0", 1);
+    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
     struct Unset {
         ~Unset() { ::unsetenv("LD_PRELOAD"); }
     } unset;
@@ -313,7 +313,7 @@ TEST(AdapterDevices, TapeDevicesListsUsbAndHidAdaptersBySerialAndProbesThem) {
     TempDir dir;
     fake::Adapter bulk(fake::Options{.link = Link::usb, .serial = "TP-BULK-7"});
     fake::Adapter hid(fake::Options{.link = Link::hid, .serial = "TP-HID-9"});
-    ::setenv("LD_PRELOAD", "libumockdev-preload.so.0", 1);
+    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
     struct Unset {
         ~Unset() { ::unsetenv("LD_PRELOAD"); }
     } unset;

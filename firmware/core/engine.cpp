@@ -74,45 +74,8 @@ void Engine::poll() {
         send_rows(true);
         send_status(status::watchdog, was_reading ? head_ : punched_);
     }
-
-    if (reading_) {
-        std::uint32_t read = head_ - start_frame_;
-        if (lines & (status::tape_out | status::motor_fault | status::offline)) {
-            end_read(0);
-            last_status_ = lines;
-        } else if (max_rows_ && read >= max_rows_) {
-            end_read(status::read_done);
-        } else if (driving_ &&
-                   elapsed(now, last_row_us_, static_cast<std::uint32_t>(config_.sprocket_timeout_ms) * 1000)) {
-            end_read(status::torn);
-        } else {
-            if (elapsed(now, window_start_us_, 1000000)) {
-                window_start_us_ = now;
-                window_rows_ = 0;
-            }
-            bool room = read_free() > (paused_ ? read_ring / 2 : stop_margin);
-            paused_ = !room;
-            bool rate_held = rate_ && window_rows_ >= rate_;
-            set_drive(room && !rate_held);
-        }
-    }
-
-    if (punch_queued() || feed_left_) {
-        if (lines & punch_faults) {
-            punch_tail_ = punch_next_;
-            feed_left_ = 0;
-            send_status(0, punched_);
-            last_status_ = lines;
-        } else if (hw_.punch_ready()) {
-            if (punch_queued())
-                hw_.punch(punch_rows_[punch_tail_++ % punch_ring]);
-            else {
-                hw_.punch(0);
-                --feed_left_;
-            }
-            ++punched_;
-        }
-    }
+    if (reading_) watch_reading(now, lines);
+    if (punch_queued() || feed_left_) drive_punch(lines);
     if (punched_ != credited_punched_ &&
         (elapsed(now, last_credit_us_, credit_every_us) || (!punch_queued() && !feed_left_)))
         send_credit(seq_++);
@@ -128,108 +91,166 @@ void Engine::poll() {
     }
 }
 
+void Engine::watch_reading(std::uint32_t now, std::uint16_t lines) {
+    std::uint32_t read = head_ - start_frame_;
+    if (lines & (status::tape_out | status::motor_fault | status::offline)) {
+        end_read(0);
+        last_status_ = lines;
+    } else if (max_rows_ && read >= max_rows_) {
+        end_read(status::read_done);
+    } else if (driving_ && elapsed(now, last_row_us_, static_cast<std::uint32_t>(config_.sprocket_timeout_ms) * 1000)) {
+        end_read(status::torn);
+    } else {
+        if (elapsed(now, window_start_us_, 1000000)) {
+            window_start_us_ = now;
+            window_rows_ = 0;
+        }
+        bool room = read_free() > (paused_ ? read_ring / 2 : stop_margin);
+        paused_ = !room;
+        bool rate_held = rate_ && window_rows_ >= rate_;
+        set_drive(room && !rate_held);
+    }
+}
+
+void Engine::drive_punch(std::uint16_t lines) {
+    if (lines & punch_faults) {
+        punch_tail_ = punch_next_;
+        feed_left_ = 0;
+        send_status(0, punched_);
+        last_status_ = lines;
+    } else if (hw_.punch_ready()) {
+        if (punch_queued())
+            hw_.punch(punch_rows_[punch_tail_++ % punch_ring]);
+        else {
+            hw_.punch(0);
+            --feed_left_;
+        }
+        ++punched_;
+    }
+}
+
 void Engine::handle(const Packet& p) {
     last_host_us_ = hw_.now_us();
     host_seen_ = true;
     switch (static_cast<Msg>(p.type)) {
-        case Msg::get_info: {
-            Info info;
-            for (int i = 0; i < 3; ++i) info.firmware[i] = id_.firmware[i];
-            info.capabilities = id_.capabilities;
-            info.tracks = id_.tracks;
-            info.max_read_rate = id_.max_read_rate;
-            info.max_punch_rate = id_.max_punch_rate;
-            info.read_buffer = read_ring;
-            info.punch_buffer = punch_ring;
-            for (std::size_t i = 0; i < sizeof info.serial - 1 && id_.serial[i]; ++i) info.serial[i] = id_.serial[i];
-            Packet out;
-            info.encode(out);
-            out.seq = p.seq;
-            post(out);
-            return;
-        }
-        case Msg::config: {
-            if (reading_ || punch_queued() || feed_left_) return reply_error(p, ErrorCode::busy, 0);
-            Config c;
-            if (!c.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
-            config_ = c;
-            hw_.configure(config_);
-            return reply_ok(p);
-        }
-        case Msg::read_start: {
-            if (!(id_.capabilities & caps::reader)) return reply_error(p, ErrorCode::no_reader, 0);
-            if (reading_) return reply_error(p, ErrorCode::busy, head_);
-            ReadStart r;
-            if (!r.decode(p) || (r.reverse && !(id_.capabilities & caps::reverse)))
-                return reply_error(p, ErrorCode::bad_payload, 0);
-            head_ = 0;
-            base_ = sent_ = start_frame_ = 0;
-            last_event_ = Status{};
-            overrun_ = paused_ = false;
-            reverse_ = r.reverse;
-            max_rows_ = r.max_rows;
-            rate_ = r.rate;
-            window_start_us_ = last_row_us_ = last_rows_sent_us_ = hw_.now_us();
-            window_rows_ = 0;
-            reading_ = true;
-            reply_ok(p);
-            set_drive(true);
-            return;
-        }
+        case Msg::get_info:
+            return send_info(p);
+        case Msg::config:
+            return configure(p);
+        case Msg::read_start:
+            return start_reading(p);
         case Msg::read_stop:
             reading_ = false;
             set_drive(false);
             return reply_ok(p);
-        case Msg::punch: {
-            if (!(id_.capabilities & caps::punch)) return reply_error(p, ErrorCode::no_punch, 0);
-            Punch r;
-            if (!r.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
-            if (r.first > punch_next_) return reply_error(p, ErrorCode::out_of_order, punch_next_);
-            // Rows already queued (a resend after a lost CREDIT) are taken once.
-            for (std::uint32_t i = punch_next_ - r.first; i < r.count && punch_queued() < punch_ring; ++i)
-                punch_rows_[punch_next_++ % punch_ring] = r.rows[i];
-            return send_credit(p.seq);
-        }
-        case Msg::feed: {
-            if (!(id_.capabilities & caps::punch)) return reply_error(p, ErrorCode::no_punch, 0);
-            Feed f;
-            if (!f.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
-            feed_left_ += f.count;
-            return reply_ok(p);
-        }
-        case Msg::ack: {
-            FrameNumber f;
-            if (!f.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
-            if (f.frame > base_) base_ = f.frame < sent_ ? f.frame : sent_;
-            return;
-        }
-        case Msg::resend: {
-            FrameNumber f;
-            if (!f.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
-            if (f.frame < base_ || f.frame > head_) return reply_error(p, ErrorCode::resend_gone, base_);
-            sent_ = f.frame;
-            send_rows(true);
-            // A run that ended: its STATUS may be what the host lost, so it comes again.
-            if (!reading_ && last_event_.bits) send_packet_status(last_event_);
-            return;
-        }
+        case Msg::punch:
+            return queue_punch(p);
+        case Msg::feed:
+            return queue_feed(p);
+        case Msg::ack:
+            return take_ack(p);
+        case Msg::resend:
+            return resend(p);
         case Msg::reset:
-            stop_all();
-            head_ = 0;
-            base_ = sent_ = 0;
-            punch_next_ = punch_tail_ = punched_ = credited_punched_ = 0;
-            overrun_ = false;
-            last_event_ = Status{};
-            return reply_ok(p);
+            return reset(p);
         case Msg::echo: {
             Packet out = p;
             out.type = static_cast<std::uint8_t>(Msg::echo_reply);
-            post(out);
-            return;
+            return post(out);
         }
         default:
             return reply_error(p, ErrorCode::unknown_message, 0);
     }
+}
+
+void Engine::send_info(const Packet& request) {
+    Info info;
+    for (int i = 0; i < 3; ++i) info.firmware[i] = id_.firmware[i];
+    info.capabilities = id_.capabilities;
+    info.tracks = id_.tracks;
+    info.max_read_rate = id_.max_read_rate;
+    info.max_punch_rate = id_.max_punch_rate;
+    info.read_buffer = read_ring;
+    info.punch_buffer = punch_ring;
+    for (std::size_t i = 0; i < sizeof info.serial - 1 && id_.serial[i]; ++i) info.serial[i] = id_.serial[i];
+    Packet out;
+    info.encode(out);
+    out.seq = request.seq;
+    post(out);
+}
+
+void Engine::configure(const Packet& p) {
+    if (reading_ || punch_queued() || feed_left_) return reply_error(p, ErrorCode::busy, 0);
+    Config c;
+    if (!c.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
+    config_ = c;
+    hw_.configure(config_);
+    reply_ok(p);
+}
+
+void Engine::start_reading(const Packet& p) {
+    if (!(id_.capabilities & caps::reader)) return reply_error(p, ErrorCode::no_reader, 0);
+    if (reading_) return reply_error(p, ErrorCode::busy, head_);
+    ReadStart r;
+    if (!r.decode(p) || (r.reverse && !(id_.capabilities & caps::reverse)))
+        return reply_error(p, ErrorCode::bad_payload, 0);
+    head_ = 0;
+    base_ = sent_ = start_frame_ = 0;
+    last_event_ = Status{};
+    overrun_ = paused_ = false;
+    reverse_ = r.reverse;
+    max_rows_ = r.max_rows;
+    rate_ = r.rate;
+    window_start_us_ = last_row_us_ = last_rows_sent_us_ = hw_.now_us();
+    window_rows_ = 0;
+    reading_ = true;
+    reply_ok(p);
+    set_drive(true);
+}
+
+void Engine::queue_punch(const Packet& p) {
+    if (!(id_.capabilities & caps::punch)) return reply_error(p, ErrorCode::no_punch, 0);
+    Punch r;
+    if (!r.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
+    if (r.first > punch_next_) return reply_error(p, ErrorCode::out_of_order, punch_next_);
+    // Rows already queued (a resend after a lost CREDIT) are taken once.
+    for (std::uint32_t i = punch_next_ - r.first; i < r.count && punch_queued() < punch_ring; ++i)
+        punch_rows_[punch_next_++ % punch_ring] = r.rows[i];
+    send_credit(p.seq);
+}
+
+void Engine::queue_feed(const Packet& p) {
+    if (!(id_.capabilities & caps::punch)) return reply_error(p, ErrorCode::no_punch, 0);
+    Feed f;
+    if (!f.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
+    feed_left_ += f.count;
+    reply_ok(p);
+}
+
+void Engine::take_ack(const Packet& p) {
+    FrameNumber f;
+    if (!f.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
+    if (f.frame > base_) base_ = f.frame < sent_ ? f.frame : sent_;
+}
+
+void Engine::resend(const Packet& p) {
+    FrameNumber f;
+    if (!f.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
+    if (f.frame < base_ || f.frame > head_) return reply_error(p, ErrorCode::resend_gone, base_);
+    sent_ = f.frame;
+    send_rows(true);
+    // A run that ended: its STATUS may be what the host lost, so it comes again.
+    if (!reading_ && last_event_.bits) send_packet_status(last_event_);
+}
+
+void Engine::reset(const Packet& p) {
+    stop_all();
+    head_ = 0;
+    base_ = sent_ = 0;
+    punch_next_ = punch_tail_ = punched_ = credited_punched_ = 0;
+    overrun_ = false;
+    last_event_ = Status{};
+    reply_ok(p);
 }
 
 bool Engine::send_packet(const Packet& p) {

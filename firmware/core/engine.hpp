@@ -99,7 +99,18 @@ private:
     std::uint16_t last_status_ = 0;
     Status last_event_{};  ///< the last STATUS sent, sent again on a RESEND after the run ended
 
+    void watch_reading(std::uint32_t now, std::uint16_t lines);
+    void drive_punch(std::uint16_t lines);
     void handle(const Packet& p);
+    // The host's requests, one function each.
+    void send_info(const Packet& request);
+    void configure(const Packet& p);
+    void start_reading(const Packet& p);
+    void queue_punch(const Packet& p);
+    void queue_feed(const Packet& p);
+    void take_ack(const Packet& p);
+    void resend(const Packet& p);
+    void reset(const Packet& p);
     bool send_packet(const Packet& p);
     /// Replies and STATUS: sent now, or from the outbox as soon as the endpoint takes them.
     void post(const Packet& p);

@@ -44,6 +44,13 @@ struct SendOptions {
     std::uint8_t xon = dc1, xoff = dc3;        ///< the flow characters (Fanuc-style DC1/DC3 by default), bit 8 ignored
     const std::atomic<bool>* stop = nullptr;   ///< set (e.g. by SIGINT) to stop after the current frame
     std::function<void(const LineProgress&)> progress{};  ///< called a few times a second
+    /// Frames handed to the line at one wake-up, the later ones ahead of their paced time by less than
+    /// the burst (the rate on average stays exact): fewer wake-ups at line speed, where the UART paces. The line is
+    /// looked at before each burst, so after DC3 at most one burst more goes out (Fanuc takes up to 10 characters after
+    /// DC3).
+    std::size_t burst = 1;
+    std::chrono::milliseconds block_delay{0};  ///< a pause after each block_end frame, for controls that need it
+    Frame block_end = 0x0A;                    ///< the end-of-block frame (ISO LF; EIA's is 0x80)
 };
 
 struct SendResult {
@@ -70,6 +77,13 @@ struct ReceiveOptions {
     const std::atomic<bool>* stop = nullptr;
     std::function<void(std::span<const Frame>)> sink{};  ///< every frame, as it arrives
     std::function<void(const LineProgress&)> progress{};
+    /// Asked of each frame kept: true ends the run once the frames of this read are kept
+    /// (End::program_end), for callers that know the end of what they receive better (a DNC request
+    /// ends at its closing '%'). Nothing that came is dropped.
+    std::function<bool(Frame)> ends_after{};
+    /// After each read that brought frames, wait this long before the next, so that one read takes
+    /// what a slow line brought meanwhile: fewer wake-ups for many lines at once (the kernel keeps it).
+    std::chrono::milliseconds gather{0};
 };
 
 struct ReceiveResult {

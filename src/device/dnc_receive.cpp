@@ -78,6 +78,7 @@ public:
                     r_.end = ReceiveResult::End::program_end;
                     return r_;
                 }
+                if (o_.gather.count() > 0 && !got.end) clock_.sleep_until(clock_.now() + o_.gather);
             }
             if (got.end) {
                 r_.end = ReceiveResult::End::hangup;
@@ -107,18 +108,19 @@ private:
     // Keeps the frames of one read, by the same rules before and after a stop. True at the program's end.
     bool take(std::size_t count) {
         kept_.clear();
-        bool done = false;
+        bool done = false, ended = false;
         for (std::size_t i = 0; i < count && !done; ++i) {
             Frame f = seven_bit_ ? with_track_8(buf_[i], code_) : buf_[i];
             if (o_.drop_flow_codes && is_flow_code(f, code_)) continue;
             kept_.push_back(f);
+            if (o_.ends_after && o_.ends_after(f)) ended = true;
             if (o_.until_program_end && code_.kind(f) == FrameKind::character &&
                 watch_.feed(code_.character(f)) == ProgramEndWatch::Event::next_percent)
                 done = true;
         }
         if (o_.sink && !kept_.empty()) o_.sink(kept_);
         r_.frames += kept_.size();
-        return done;
+        return done || ended;
     }
 
     // Asks the other side to stop, in band and by RTS, and still takes what it sends on in the next moments.

@@ -1,5 +1,6 @@
 // Sending frames over a line: pacing, XON/XOFF or RTS/CTS, exactly once each, in order.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -20,21 +21,24 @@ public:
         SendResult r;
         double rate = o_.rate > 0 ? o_.rate : line_.line_rate();
         auto period = rate > 0 ? frame_period(rate) : Clock::time_point::duration::zero();
+        bool paced = period.count() > 0 || o_.block_delay.count() > 0;
         if (o_.wait_xon) wait_for_xon();
         auto start = clock_.now(), next = start, last_report = start;
-        for (std::size_t i = 0; i < frames.size(); ++i) {
+        for (std::size_t i = 0; i < frames.size();) {
             if (stopped()) {
                 r.stopped = true;
                 break;
             }
-            if (period.count() > 0) {
-                if (clock_.now() > next + 100 * period) next = clock_.now();  // after a pause: no burst to catch up
+            if (paced) {
+                // After a pause: no burst to catch up.
+                if (clock_.now() > next + 100 * period + o_.block_delay) next = clock_.now();
                 clock_.sleep_until(next);
-                next += period;
             }
             // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
             if (flow_ == Flow::xonxoff) take_input(0ms, i);
+            bool waited = false;
             while (blocked() && !stopped()) {
+                waited = true;
                 report(i, frames.size(), start, true);
                 if (flow_ == Flow::xonxoff)
                     take_input(50ms, i);
@@ -45,17 +49,15 @@ public:
                 r.stopped = true;
                 break;
             }
-            std::uint8_t byte = line_.seven_bit() ? frames[i] & 0x7F : frames[i];
-            try {
-                line_.write({&byte, 1});
-            } catch (const Error& e) {
-                throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(i + 1) + " of " +
-                                          std::to_string(frames.size()) + ")");
-            }
-            r.sent = i + 1;
+            if (waited) next = clock_.now();  // resumed: paced from now, no burst to catch up the pause
+            std::size_t n = write_burst(frames, i);
+            i += n;
+            r.sent = i;
+            next += static_cast<long>(n) * period;
+            if (o_.block_delay.count() > 0 && frames[i - 1] == o_.block_end) next += o_.block_delay;
             if (o_.progress && clock_.now() - last_report > 250ms) {
                 last_report = clock_.now();
-                report(i + 1, frames.size(), start, false);
+                report(i, frames.size(), start, false);
             }
         }
         line_.drain();
@@ -72,6 +74,25 @@ private:
     XonXoff xonxoff_;
 
     bool stopped() const { return o_.stop && o_.stop->load(); }
+
+    // Writes up to a burst of frames from `from`, ending early after an end of block that has a delay
+    // after it. How many went.
+    std::size_t write_burst(std::span<const Frame> frames, std::size_t from) {
+        std::uint8_t bytes[256];
+        std::size_t n = 0, most = std::min({std::max<std::size_t>(o_.burst, 1), sizeof bytes, frames.size() - from});
+        while (n < most) {
+            Frame f = frames[from + n++];
+            bytes[n - 1] = line_.seven_bit() ? f & 0x7F : f;
+            if (o_.block_delay.count() > 0 && f == o_.block_end) break;
+        }
+        try {
+            line_.write({bytes, n});
+        } catch (const Error& e) {
+            throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(from + 1) + " of " +
+                                      std::to_string(frames.size()) + ")");
+        }
+        return n;
+    }
     bool blocked() {
         if (flow_ == Flow::xonxoff) return xonxoff_.paused();
         if (flow_ == Flow::rtscts && line_.modem()) return !line_.modem()->cts();

@@ -66,10 +66,15 @@ std::string descriptors(Link link) {
     return hex(d.data(), d.size());
 }
 
-// The testbed is the process's: one sysfs and /dev for every fake adapter.
+// The testbed is the process's: one sysfs and /dev for every fake adapter, in a folder of the temporary
+// directory ($TMPDIR) that releasing it removes.
 struct Testbed {
     UMockdevTestbed* bed = umockdev_testbed_new();
     std::mutex m;
+    Testbed() = default;
+    Testbed(const Testbed&) = delete;
+    Testbed& operator=(const Testbed&) = delete;
+    ~Testbed() { g_object_unref(bed); }
     int next_devnum = 2, next_hidraw = 0;
     std::pair<int, int> numbers() {
         std::lock_guard l(m);
@@ -98,15 +103,35 @@ const char* link_name(Link link) {
     return "?";
 }
 
+namespace {
+// The path of the loaded library whose name holds `part`, or empty.
+std::string loaded_library(const char* part) {
+    struct Search {
+        const char* part;
+        std::string path;
+    } search{part, {}};
+    ::dl_iterate_phdr(
+        [](dl_phdr_info* info, std::size_t, void* data) {
+            auto* s = static_cast<Search*>(data);
+            if (!info->dlpi_name || !std::strstr(info->dlpi_name, s->part)) return 0;
+            s->path = info->dlpi_name;
+            return 1;
+        },
+        &search);
+    return search.path;
+}
+}  // namespace
+
 std::string umockdev_unavailable() {
     // Loaded when the program was linked with it (or started with it in LD_PRELOAD).
-    bool loaded = ::dl_iterate_phdr(
-                      [](dl_phdr_info* info, std::size_t, void*) {
-                          return info->dlpi_name && std::strstr(info->dlpi_name, "libumockdev-preload") ? 1 : 0;
-                      },
-                      nullptr) != 0;
-    if (!loaded) return "umockdev's preload library is not loaded (link with -Wl,--no-as-needed -lumockdev-preload)";
+    if (loaded_library("libumockdev-preload").empty())
+        return "umockdev's preload library is not loaded (link with -Wl,--no-as-needed -lumockdev-preload)";
     return {};
+}
+
+std::string child_preload() {
+    std::string asan = loaded_library("libasan.so");
+    return (asan.empty() ? "" : asan + " ") + "libumockdev-preload.so.0";
 }
 
 struct Adapter::Impl {

@@ -60,4 +60,8 @@ private:
 /// Empty when umockdev's devices can be used in this process; else why not.
 std::string umockdev_unavailable();
 
+/// LD_PRELOAD for a child process that is to see the fake adapters: umockdev's preload library, after
+/// AddressSanitizer's runtime when this program has one (that runtime must be the first library loaded).
+std::string child_preload();
+
 }  // namespace fake

@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Installs the built tree into a temporary prefix, then checks what a user of the library gets there:
-# tape_core.pc naming that prefix, every public header compiling on its own, and the consumer
-# program in consumer/ built and run twice, through
-# find_package(tape_core) and through `pkg-config --cflags --libs tape_core`.
+# Installs the built tree into a temporary prefix, then checks what a user gets there: the programs, their
+# man pages (man finds them from PATH), bash completion, the udev rule and the code tables where the
+# distribution expects them, under the prefix and nowhere else; and for the library: tape_core.pc naming
+# that prefix, every public header compiling on its own, and the consumer program in consumer/ built and
+# run twice, through find_package(tape_core) and through `pkg-config --cflags --libs tape_core`.
 # Usage: run.sh BUILD_DIR LIBDIR INCLUDEDIR VERSION CXX GENERATOR [MAKE_PROGRAM]
-# (LIBDIR and INCLUDEDIR as GNUInstallDirs gives them, relative to the prefix.)
+# (LIBDIR and INCLUDEDIR as GNUInstallDirs gives them, relative to the prefix); the environment gives
+# TAPE_BINDIR, TAPE_MANDIR, TAPE_DATADIR the same way, and TAPE_UDEV_RULES_DIR (relative, or absolute for
+# a system install).
 set -euo pipefail
 build=$1 libdir=$2 includedir=$3 version=$4 cxx=$5 generator=$6 make_program=${7:-}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -19,7 +22,36 @@ step() {
   "$@" >"$work/step.log" 2>&1 || { cat "$work/step.log" >&2; fail "$name failed"; }
 }
 
-step "cmake --install" cmake --install "$build" --prefix "$prefix"
+# Staged (DESTDIR), as a distribution installs: what lands outside the prefix shows, and stays in $work.
+stage=$work/stage
+step "cmake --install" env DESTDIR="$stage" cmake --install "$build" --prefix "$prefix"
+mkdir -p "$(dirname "$prefix")"
+mv "$stage$prefix" "$prefix"
+udev_rule=$prefix/$TAPE_UDEV_RULES_DIR/70-tape-adapter.rules
+[[ $TAPE_UDEV_RULES_DIR == /* ]] && udev_rule=$stage$TAPE_UDEV_RULES_DIR/70-tape-adapter.rules
+[ -f "$udev_rule" ] || fail "no udev rule at ${udev_rule#"$stage"}"
+[ -z "$(find "$stage" -type f -not -path "$(dirname "$udev_rule")/*")" ] ||
+  fail "installed outside the prefix: $(find "$stage" -type f | sed "s|^$stage||" | tr '\n' ' ')"
+
+# The programs, as a user with the prefix's bin on PATH has them.
+export PATH=$prefix/$TAPE_BINDIR:$PATH
+for program in tape tape-damage tape-adapter-sim; do
+  [ "$(command -v "$program")" = "$prefix/$TAPE_BINDIR/$program" ] || fail "$program is not in $prefix/$TAPE_BINDIR"
+done
+[ "$(tape --version)" = "tape $version" ] || fail "tape --version says '$(tape --version)'"
+step "tape decode of a bundled tape" tape decode "$here/../../tapes/16k20f3s5-turning.iso.ptp"
+for page in man1/tape.1 man1/tape-damage.1 man5/tape-image.5 man7/tape-devices.7 man7/tape-usb.7; do
+  [ -f "$prefix/$TAPE_MANDIR/$page.gz" ] || fail "no $TAPE_MANDIR/$page.gz"
+done
+command -v man >/dev/null || fail "man is not installed (bash scripts/install-deps.sh test installs man-db)"
+found=$(env -u MANPATH man -w tape 2>&1) || true
+[ "$found" = "$prefix/$TAPE_MANDIR/man1/tape.1.gz" ] || fail "man -w tape finds '$found', not the installed page"
+completion=$prefix/$TAPE_DATADIR/bash-completion/completions/tape
+[ -f "$completion" ] || fail "no $TAPE_DATADIR/bash-completion/completions/tape"
+bash -c "source '$completion' && complete -p tape" >/dev/null 2>&1 || fail "$completion sets no completion for tape"
+for table in eia-rs244.tab ita2.tab mtk2.tab; do
+  [ -f "$prefix/$TAPE_DATADIR/tape/$table" ] || fail "no $TAPE_DATADIR/tape/$table"
+done
 
 command -v pkg-config >/dev/null || fail "pkg-config is not installed (bash scripts/install-deps.sh installs it)"
 export PKG_CONFIG_PATH=$prefix/$libdir/pkgconfig
@@ -37,12 +69,14 @@ check_variable includedir "$prefix/$includedir"
 
 headers=("$prefix/$includedir"/tape/*.hpp)
 [ -f "${headers[0]}" ] || fail "no headers in $prefix/$includedir/tape"
-# shellcheck disable=SC2046 # the flags are words
+# Each header alone in a file of its own, two compilers at a time; a failure names the file.
+mkdir "$work/headers"
 for header in "${headers[@]}"; do
-  echo "#include \"tape/${header##*/}\"" >"$work/one.cpp"
-  step "${header##*/} on its own" "$cxx" -fsyntax-only -Wall -Wextra -Wpedantic -Werror \
-    $(pkg-config --cflags tape_core) "$work/one.cpp"
+  echo "#include \"tape/${header##*/}\"" >"$work/headers/${header##*/}.cpp"
 done
+# shellcheck disable=SC2046 # the flags are words
+step "every public header on its own" xargs -0 -n 1 -P 2 "$cxx" -fsyntax-only -Wall -Wextra -Wpedantic -Werror \
+  $(pkg-config --cflags tape_core) < <(printf '%s\0' "$work/headers"/*.cpp)
 
 # The library's users get none of the system headers it uses privately (termios macros such as B9600).
 if grep -l '#include <termios.h>' "${headers[@]}" >"$work/termios.txt"; then
@@ -69,4 +103,5 @@ fi
 step "building the consumer (pkg-config)" "$cxx" -Wall -Wextra -Wpedantic -Werror "$here/consumer/main.cpp" \
   $(pkg-config --cflags --libs tape_core) -o "$work/consumer-pc"
 step "running the consumer (pkg-config)" "$work/consumer-pc"
-echo "package: installed into a temporary prefix; found by CMake and by pkg-config; the consumer ran"
+echo "package: installed into a temporary prefix and nowhere else; the programs, man pages, completion, udev rule"
+echo "package: and tables in place; the library found by CMake and by pkg-config; the consumer ran"

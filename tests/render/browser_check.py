@@ -83,6 +83,16 @@ def find_chromium():
     return None
 
 
+def browser_env(profile):
+    """The environment for Chromium: its home, configuration and cache in the profile's folder, which is
+    removed after, since even with --user-data-dir it writes crash-report settings and a dconf cache
+    under the user's home."""
+    env = dict(os.environ)
+    env.update(HOME=profile, XDG_CONFIG_HOME=os.path.join(profile, "config"),
+               XDG_CACHE_HOME=os.path.join(profile, "cache"))
+    return env
+
+
 def screenshot(chromium, page, png, width, height, extra=()):
     """Chromium's picture of page; returns (exit status, stderr) or raises on its time limit."""
     profile = tempfile.mkdtemp(prefix="tape-chromium-")
@@ -91,7 +101,7 @@ def screenshot(chromium, page, png, width, height, extra=()):
                 "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync",
                 "--force-device-scale-factor=1", "--hide-scrollbars", f"--user-data-dir={profile}",
                 f"--screenshot={png}", f"--window-size={width},{height}", *extra, "file://" + page]
-        r = subprocess.run(args, capture_output=True, text=True, timeout=90)
+        r = subprocess.run(args, capture_output=True, text=True, timeout=90, env=browser_env(profile))
         return r.returncode, r.stderr
     finally:
         shutil.rmtree(profile, ignore_errors=True)
@@ -115,7 +125,7 @@ def console_messages(chromium, page):
         args = ["timeout", "60", chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
                 "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync",
                 "--enable-logging=stderr", "--v=0", f"--user-data-dir={profile}", "--dump-dom", "file://" + page]
-        r = subprocess.run(args, capture_output=True, text=True, timeout=90)
+        r = subprocess.run(args, capture_output=True, text=True, timeout=90, env=browser_env(profile))
         return r.stdout, [line for line in r.stderr.splitlines() if "CONSOLE" in line]
     finally:
         shutil.rmtree(profile, ignore_errors=True)

@@ -1,0 +1,229 @@
+// A machine's thread: the line opened (again after a hang-up or an unplug), punch-outs received as
+// they arrive and filed, requests answered (machine_send.cpp).
+#include "machine.hpp"
+
+#include <cstdio>
+
+#include "punch_out.hpp"
+#include "tape/error.hpp"
+#include "tape/file_io.hpp"
+
+namespace tape::dnc {
+namespace {
+
+using namespace std::chrono_literals;
+
+// Between reads while a punch-out comes: one read then takes what 40 ms brought (38 characters at
+// 9600 baud), instead of waking for every character.
+constexpr auto gather = 40ms;
+constexpr auto reopen_after = 2s;
+// How long the LF after a closing '%' may take: a character at 300 baud, and a read's gathering.
+constexpr auto line_end_wait = 60ms;
+
+std::string seconds_text(double s) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f s", s);
+    return text;
+}
+
+const char* cut_reason(ReceiveResult::End end, bool flood) {
+    if (flood) return "longer than max_punch_out: a flood";
+    switch (end) {
+        case ReceiveResult::End::idle:
+            return "no frame for receive_timeout before the program's end";
+        case ReceiveResult::End::hangup:
+            return "the other side hung up";
+        case ReceiveResult::End::stopped:
+            return "the service stopped";
+        default:
+            return "cut";
+    }
+}
+
+}  // namespace
+
+Machine::Machine(MachineSettings settings, std::shared_ptr<Shared> shared)
+    : s_(std::move(settings)), shared_(std::move(shared)) {
+    status_.name = s_.name;
+    status_.device = s_.device;
+}
+
+Machine::~Machine() {
+    if (thread_.joinable()) thread_.join();
+}
+
+void Machine::start() {
+    thread_ = std::thread([this] { run(); });
+}
+
+void Machine::abandon() {
+    if (thread_.joinable()) thread_.detach();
+}
+
+MachineStatus Machine::status() const {
+    std::lock_guard lock(status_mutex_);
+    return status_;
+}
+
+void Machine::set_state(LineState state, const std::string& program, std::uint64_t total) {
+    std::lock_guard lock(status_mutex_);
+    status_.state = state;
+    status_.program = program;
+    status_.frames = 0;
+    status_.total = total;
+}
+
+void Machine::set_frames(std::uint64_t frames) {
+    std::lock_guard lock(status_mutex_);
+    status_.frames = frames;
+}
+
+void Machine::count(std::uint64_t MachineStatus::*counter, const std::string& line) {
+    std::lock_guard lock(status_mutex_);
+    ++(status_.*counter);
+    status_.last = line;
+}
+
+double Machine::since(Clock::time_point start) const {
+    return std::chrono::duration<double>(shared_->clock->now() - start).count();
+}
+
+void Machine::pause(std::chrono::milliseconds how_long) {
+    auto end = shared_->clock->now() + how_long;
+    while (!stop_ && shared_->clock->now() < end) shared_->clock->sleep_until(shared_->clock->now() + 50ms);
+}
+
+void Machine::run() {
+    bool said_gone = false;
+    while (!stop_) {
+        set_state(LineState::opening);
+        std::unique_ptr<Transport> line;
+        try {
+            line = open_device(s_.device, DeviceUse::both);
+        } catch (const Error& e) {
+            if (!said_gone) log(Priority::err, std::string(e.what()) + " (trying again every 2 s)");
+            said_gone = true;
+            set_state(LineState::waiting);
+            pause(reopen_after);
+            continue;
+        }
+        if (said_gone) log(Priority::notice, "the line is open again");
+        said_gone = false;
+        try {
+            serve(*line);
+        } catch (const Error& e) {
+            log(Priority::warning, e.what());
+        }
+        line.reset();
+        if (!stop_) {
+            set_state(LineState::waiting);
+            pause(reopen_after);
+        }
+    }
+    set_state(LineState::stopped);
+    finished_ = true;
+}
+
+void Machine::serve(Transport& line) {
+    while (!stop_)
+        if (!listen(line)) return;
+}
+
+// Receives one punch-out, or waits receive_timeout for one. False when the line hung up.
+bool Machine::listen(Transport& line) {
+    set_state(LineState::listening);
+    auto library = shared_->library();
+    FrameCode code = FrameCode::make(s_.code, s_.parity);
+    PunchOutWatch watch(code);
+    PunchOutFile file(library->received, s_.name,
+                      DecodeOptions{.code = s_.code, .parity = s_.parity, .keep_going = true, .max_diagnostics = 1});
+    std::uint64_t frames = 0;
+    bool flood = false;
+    Clock::time_point start{};
+    ReceiveOptions o{.idle_timeout = s_.receive_timeout, .code = s_.code, .parity = s_.parity, .drop_flow_codes = true};
+    o.stop = &stop_;
+    o.gather = gather;
+    bool began = false;
+    o.sink = [&](std::span<const Frame> f) {
+        file.append(f);
+        frames += f.size();
+        if (!file.started()) return;  // blank leader so far
+        if (!began) {
+            began = true;
+            start = shared_->clock->now();
+            set_state(LineState::receiving, "punch-out");
+        }
+        set_frames(frames);
+    };
+    o.ends_after = [&](Frame f) { return watch.feed(f) || (flood = file.bytes() > s_.max_punch_out); };
+    ReceiveResult r = receive_frames(line, o, *shared_->clock);
+    if (r.end == ReceiveResult::End::program_end && !flood && watch.line_open()) {
+        // The closing '%' came without its line's end: it follows at once when it comes at all.
+        o.idle_timeout = line_end_wait;
+        o.ends_after = [&](Frame f) { return code.kind(f) == FrameKind::character && code.character(f) == '\n'; };
+        ReceiveResult more = receive_frames(line, o, *shared_->clock);
+        r.frames += more.frames;
+        if (more.end == ReceiveResult::End::hangup || more.end == ReceiveResult::End::stopped) r.end = more.end;
+    }
+    if (file.started()) finish_punch_out(line, file, watch, r, flood, since(start));
+    return r.end != ReceiveResult::End::hangup;
+}
+
+void Machine::finish_punch_out(Transport& line, PunchOutFile& file, const PunchOutWatch& watch, ReceiveResult r,
+                               bool flood, double seconds) {
+    std::uint64_t frames = r.frames;
+    if (flood || (r.end != ReceiveResult::End::program_end && !watch.complete())) {
+        std::string kept = file.keep_failed();
+        std::string message = "received: " + std::to_string(frames) + " frames, " + seconds_text(seconds) + ": cut (" +
+                              cut_reason(r.end, flood) + "): kept as " + kept;
+        log(Priority::warning, message);
+        count(&MachineStatus::failed, message);
+        if (flood) discard_flood(line);
+        return;
+    }
+    if (auto request = parse_request(file.head())) {
+        file.discard();
+        answer(line, *request);
+        return;
+    }
+    file_program(file, frames, seconds);
+}
+
+void Machine::file_program(PunchOutFile& file, std::uint64_t frames, double seconds) {
+    auto library = shared_->library();
+    auto stem = program_file_stem(file.head());
+    std::string name = stem.value_or("UNNUMBERED-" + s_.name);
+    std::string path = file.file_as(name);
+    std::string message =
+        "received " + name + ": " + std::to_string(frames) + " frames, " + seconds_text(seconds) + ": filed as " + path;
+    if (stem) {
+        Found copy = find_program(library->programs, *stem);
+        if (!copy.path.empty()) {
+            auto bytes = read_file(path);
+            message += ", " + compare_with(std::string(bytes.begin(), bytes.end()), copy.path);
+        } else {
+            message += ", no copy in the library (" + copy.problem + ")";
+        }
+    } else {
+        message += " (it has no program number)";
+    }
+    Priority p = Priority::info;
+    if (file.bad_frames()) {
+        message += "; " + std::to_string(file.bad_frames()) + " bad frame(s) marked U+FFFD in the text";
+        p = Priority::warning;
+    }
+    log(p, message);
+    count(&MachineStatus::filed, message);
+}
+
+void Machine::discard_flood(Transport& line) {
+    std::uint64_t dropped = 0;
+    ReceiveOptions o{.idle_timeout = s_.receive_timeout};
+    o.stop = &stop_;
+    o.gather = gather;
+    o.sink = [&dropped](std::span<const Frame> f) { dropped += f.size(); };
+    receive_frames(line, o, *shared_->clock);
+    log(Priority::warning, std::to_string(dropped) + " more frames of the flood dropped until the line was quiet");
+}
+
+}  // namespace tape::dnc

@@ -1,0 +1,77 @@
+#include "cli/inputs.hpp"
+
+#include "cli/globals.hpp"
+#include "cli/messages.hpp"
+#include "tape/detect.hpp"
+
+namespace cli {
+
+std::string display_name(const std::string& path) { return path.empty() || path == "-" ? "stdin" : path; }
+
+tape::InputOptions input_options(const CodeChoice& choice, const std::string& format_id, const std::string& kind) {
+    tape::InputOptions o;
+    o.kind = kind == "text"    ? tape::InputKind::text
+             : kind == "image" ? tape::InputKind::image
+                               : tape::InputKind::automatic;
+    o.format = format_id.empty() ? nullptr : tape::find_image_format(format_id);
+    o.detect_code = choice.code == "auto";
+    o.decode.code = tape::parse_code(choice.code).value_or(tape::Code::iso);
+    o.decode.parity = *tape::parse_parity(choice.parity);
+    o.decode.charset = *tape::parse_charset(choice.charset);
+    o.decode.eia_table = globals().table();
+    o.decode.max_diagnostics = globals().max_errors;
+    return o;
+}
+
+std::unique_ptr<tape::Input> open_input(const std::string& path, const tape::InputOptions& options) {
+    if (!options.detect_code && options.decode.code == tape::Code::eia && options.decode.parity != tape::Parity::even)
+        fail(display_name(path), tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
+    std::unique_ptr<tape::Input> input;
+    try {
+        input = std::make_unique<tape::Input>(path.empty() ? "-" : path, options);
+    } catch (const tape::Error& e) {
+        fail(display_name(path), e);
+    }
+    for (const auto& note : input->notes()) say_note(display_name(path), note);
+    return input;
+}
+
+const tape::DecodeOptions& decide_code(tape::Input& input, const std::string& name) {
+    try {
+        const tape::DecodeOptions& o = input.decode_options();
+        if (globals().verbosity > 0 && input.detection()) say(name, "code " + input.detection()->reason);
+        // A code or parity given by hand is taken as given; the verdict is still drawn (from the
+        // read-ahead), so that a tape failing the given code can be said to read cleanly another way.
+        if (!input.detection()) input.detect();
+        return o;
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+}
+
+void say_other_reading(tape::Input& input, const std::string& name) {
+    if (!input.is_image() || !input.detection()) return;
+    const tape::DecodeOptions& o = input.decode_options();
+    // The verdict weighs 8-track readings only: a 5-track code given by hand is not second-guessed.
+    if (o.code == tape::Code::ita2 || o.code == tape::Code::mtk2) return;
+    tape::Reading forced{o.code, o.code == tape::Code::eia ? tape::Parity::odd : o.parity};
+    if (auto note = tape::other_reading(*input.detection(), forced)) say(name, with_hint(note->message, note->hint));
+}
+
+TapeInput read_tape(const std::string& path, const std::string& format_id) {
+    TapeInput in;
+    in.name = path.empty() ? "-" : path;
+    tape::InputOptions o = input_options(CodeChoice{}, format_id, "image");
+    o.detect_code = false;
+    auto input = open_input(in.name, o);
+    in.format = input->format();
+    try {
+        for (auto frames = input->next_frames(); !frames.empty(); frames = input->next_frames())
+            in.frames.insert(in.frames.end(), frames.begin(), frames.end());
+    } catch (const tape::Error& e) {
+        fail(display_name(in.name), e);
+    }
+    return in;
+}
+
+}  // namespace cli

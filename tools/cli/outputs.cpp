@@ -1,0 +1,44 @@
+#include "cli/outputs.hpp"
+
+#include <unistd.h>
+
+#include <iostream>
+
+#include "cli/messages.hpp"
+#include "cli/options.hpp"
+#include "tape/file_io.hpp"
+
+namespace cli {
+
+const tape::ImageFormat& output_format(const std::string& format_id, const std::string& path) {
+    const tape::ImageFormat* format = format_id.empty() ? nullptr : tape::find_image_format(format_id);
+    if (!format && path != "-") format = tape::image_format_for_path(path);
+    if (!format) format = &tape::default_image_format();
+    if (!format->can_write())
+        fail(path, tape::Errc::usage,
+             std::string(format->id) + " images can only be read; write " + format_choices(true));
+    return *format;
+}
+
+void refuse_binary_terminal(const std::string& path, bool binary, bool force) {
+    if ((path.empty() || path == "-") && binary && ::isatty(STDOUT_FILENO) && !force)
+        fail("", tape::Errc::usage,
+             "refusing to write a binary tape image to a terminal (use -o FILE, --format holes, or --force)");
+}
+
+void write_output(const std::string& path, const std::string& data, bool binary, bool force) {
+    if (path.empty() || path == "-") {
+        refuse_binary_terminal(path, binary, force);
+        std::cout.write(data.data(), static_cast<std::streamsize>(data.size()));
+        std::cout.flush();
+        if (!std::cout) fail("stdout", tape::Errc::io, "cannot write");
+        return;
+    }
+    try {
+        tape::write_file_atomic(path, data, force);
+    } catch (const tape::Error& e) {
+        fail(path, e);
+    }
+}
+
+}  // namespace cli

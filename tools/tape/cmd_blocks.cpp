@@ -1,0 +1,243 @@
+// tape blocks: the programs on a tape, one line per block (кадр), or JSON for other programs.
+
+#include "cli/json.hpp"
+#include "cli/messages.hpp"
+#include "cli/outputs.hpp"
+#include "cli/programs.hpp"
+#include "commands.hpp"
+#include "tape/functions.hpp"
+#include "tape/utf8_text.hpp"
+
+namespace cli {
+namespace {
+
+struct BlocksArgs {
+    std::string input = "-";
+    ProgramSource source;
+    bool json = false, explain = false;
+    std::string lang = "en";
+};
+
+std::string explanation(const tape::Block& b, bool russian) {
+    std::string out;
+    for (const auto& w : b.words) {
+        if (w.address != 'G' && w.address != 'M') continue;
+        auto v = w.integer();
+        const tape::NcFunction* f = v ? tape::find_nc_function(w.address, *v) : nullptr;
+        if (!f) continue;
+        out += (out.empty() ? "" : ", ") + w.text + " " + std::string(russian ? f->ru : f->en);
+    }
+    return out;
+}
+
+std::string statement_kind(tape::Statement::Kind k) {
+    using K = tape::Statement::Kind;
+    switch (k) {
+        case K::assignment:
+            return "assignment";
+        case K::if_goto:
+            return "if-goto";
+        case K::if_then:
+            return "if-then";
+        case K::go_to:
+            return "goto";
+        case K::while_do:
+            return "while-do";
+        case K::loop_do:
+            return "do";
+        case K::loop_end:
+            return "end";
+        case K::output:
+            return "output";
+        case K::o_word:
+            return "o-word";
+    }
+    return "";
+}
+
+std::string location_json(const tape::Location& l) {
+    return "{\"frame\": " + json_number(l.frame) + ", \"line\": " + std::to_string(l.line) + "}";
+}
+
+// Blocks are written as the loader gives them, so that a tape of any length lists in bounded memory:
+// only the label, the text after a program's end and the findings are held.
+class Lister : public tape::ProgramVisitor {
+public:
+    Lister(const BlocksArgs& a, const std::string& name, bool from_tape, std::optional<tape::LeaderLabel> leader)
+        : a_(a), name_(name), from_tape_(from_tape), leader_(std::move(leader)) {
+        if (a_.json) out_ += "{\"programs\": [";
+        if (!a_.json && leader_) out_ += "leader label: " + label_text(*leader_) + "\n";
+    }
+
+    void label(std::string_view text) override { label_ += text; }
+    void physical_start() override {
+        physical_start_ = true;
+        flush_label();
+        if (!a_.json) out_ += "%% physical start of the tape\n";
+    }
+    void program_start(const tape::Program& p) override {
+        close_program();
+        flush_label();
+        in_program_ = true;
+        ended_ = false;
+        blocks_ = 0;
+        if (a_.json)
+            out_ += std::string(programs_ ? ", " : "") +
+                    "{\"number\": " + (p.number ? json_string(*p.number) : "null") +
+                    ", \"first_frame\": " + json_number(p.start.frame) + ", \"line\": " + std::to_string(p.start.line) +
+                    ", \"blocks\": [";
+        else
+            out_ += "program " + (p.number ? *p.number : "(no number)") + " at " + position_text(p.start, from_tape_) +
+                    "\n";
+        ++programs_;
+    }
+    void block(const tape::Block& b) override {
+        if (b.ends_program()) ended_ = true;
+        if (a_.json) {
+            out_ += std::string(blocks_ ? ", " : "") + "{\"frame\": " + json_number(b.where.frame) +
+                    ", \"line\": " + std::to_string(b.where.line) + ", \"column\": " + std::to_string(b.where.column) +
+                    ", \"source\": " + json_string(b.source) +
+                    ", \"number\": " + (b.number ? json_string(b.number->text) : "null") +
+                    ", \"main\": " + (b.main ? "true" : "false") + ", \"skip\": " + (b.skip ? "true" : "false") +
+                    ", \"skip_level\": " + std::to_string(b.skip_level) +
+                    ", \"ends_program\": " + (b.ends ? "true" : "false") + ", \"words\": [";
+            std::string flagged;
+            for (std::size_t w = 0; w < b.words.size(); ++w) {
+                out_ += (w ? ", " : "") + json_string(b.words[w].text);
+                if (!b.words[w].known) flagged += (flagged.empty() ? "" : ", ") + json_string(b.words[w].text);
+            }
+            out_ += "], \"flagged\": [" + flagged + "], \"comments\": [";
+            for (std::size_t c = 0; c < b.comments.size(); ++c)
+                out_ += (c ? ", " : "") + json_string(b.comments[c].text);
+            out_ += "], \"statements\": [";
+            for (std::size_t s = 0; s < b.statements.size(); ++s)
+                out_ += std::string(s ? ", " : "") + "{\"kind\": " + json_string(statement_kind(b.statements[s].kind)) +
+                        ", \"text\": " + json_string(b.statements[s].text) + "}";
+            out_ += "]}";
+        } else {
+            std::string pos = position_text(b.where, from_tape_);
+            out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + b.text();
+            std::string flagged;
+            for (const auto& w : b.words)
+                if (!w.known) flagged += (flagged.empty() ? "" : " ") + tape::visible(w.text);
+            if (!flagged.empty()) out_ += "    ! not read: " + flagged;
+            if (a_.explain) {
+                std::string e = explanation(b, a_.lang == "ru");
+                if (!e.empty()) out_ += "    ; " + e;
+            }
+            out_ += "\n";
+        }
+        ++blocks_;
+        if (out_.size() >= 64 << 10) flush();
+    }
+    void after_end(std::string_view text, const tape::Location&) override {
+        (in_program_ ? after_end_ : after_record_) += text;  // after the end of record, nothing is read
+    }
+    void dialect(const tape::DialectChoice& choice) override { dialect_ = tape::dialect_name(choice.dialect); }
+    void record_end(const tape::Location& where, bool closes_program) override {
+        if (closes_program) ended_ = true;
+        close_program();
+        record_end_ = where;
+        if (!a_.json) out_ += "% end of record (rewind stop) at " + position_text(where, from_tape_) + "\n";
+    }
+    void finding(const tape::Finding& f) override {
+        say(name_, position_text(f.where, from_tape_) + ": " + std::string(tape::severity_name(f.severity)) + ": " +
+                       f.message);
+        if (a_.json) findings_ += std::string(findings_.empty() ? "" : ", ") + finding_json(f);
+    }
+
+    void finish() {
+        close_program();
+        flush_label();
+        if (!a_.json && has_text(after_record_)) out_ += "after the end of record, not read:\n" + shown(after_record_);
+        if (a_.json)
+            out_ += "], \"dialect\": " + json_string(std::string(dialect_)) +
+                    ", \"record_end\": " + (record_end_ ? location_json(*record_end_) : "null") +
+                    ", \"after_record_end\": " + json_string(after_record_) + ", \"label\": " + json_string(label_) +
+                    ", \"leader_label\": " + label_json(leader_) +
+                    ", \"physical_start\": " + (physical_start_ ? "true" : "false") + ", \"diagnostics\": [" +
+                    findings_ + "]}\n";
+        flush();
+    }
+
+private:
+    void flush() {
+        write_output("-", out_, false, false);
+        out_.clear();
+    }
+    void flush_label() {
+        if (a_.json || label_done_) return;
+        label_done_ = true;
+        if (has_text(label_)) out_ += "label: " + shown(label_);
+    }
+    // Text that is more than blanks and reader on/off controls (DC1-DC4).
+    static bool has_text(const std::string& s) {
+        return s.find_first_not_of(" \t\r\n\x11\x12\x13\x14") != std::string::npos;
+    }
+    // Lines of text from the tape as the terminal should show them: controls by name, one LF at the end.
+    static std::string shown(const std::string& s) {
+        std::string out;
+        std::size_t b = 0;
+        while (b < s.size()) {
+            std::size_t e = std::min(s.find('\n', b), s.size());
+            std::string_view line(s.data() + b, e - b);
+            if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+            out += tape::visible(line) + "\n";
+            b = e + 1;
+        }
+        return out;
+    }
+    void close_program() {
+        if (!in_program_) return;
+        in_program_ = false;
+        if (a_.json) {
+            out_ += std::string("], \"ended\": ") + (ended_ ? "true" : "false") +
+                    ", \"after_end\": " + json_string(after_end_) + "}";
+        } else {
+            out_ += ended_ ? "  end of program\n" : "  no end (M02/M30)\n";
+            if (has_text(after_end_)) out_ += "after the end, not part of the program:\n" + shown(after_end_);
+        }
+        after_end_.clear();
+    }
+
+    const BlocksArgs& a_;
+    const std::string& name_;
+    bool from_tape_;
+    std::string out_, label_, after_end_, after_record_, findings_;
+    std::string_view dialect_ = "gost";
+    std::optional<tape::Location> record_end_;
+    std::optional<tape::LeaderLabel> leader_;  // letters of holes in the leader, not read as text
+    bool label_done_ = false, physical_start_ = false, in_program_ = false, ended_ = false;
+    std::uint64_t programs_ = 0, blocks_ = 0;
+};
+
+void run(const BlocksArgs& a) {
+    ProgramInput in = open_program(a.input, a.source);
+    std::optional<tape::LeaderLabel> leader;
+    try {
+        if (in.from_tape) leader = in.input->label();
+    } catch (const tape::Error& e) {
+        fail(in.name, e);
+    }
+    Lister lister(a, in.name, in.from_tape, leader);
+    load_program(in, lister);
+    lister.finish();
+    end_program(in);
+}
+
+}  // namespace
+
+void add_blocks(CLI::App& app) {
+    auto a = std::make_shared<BlocksArgs>();
+    auto* sub = app.add_subcommand("blocks", "List the programs and blocks (кадры) on a tape or in a text program");
+    sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
+    add_program_source_options(sub, a->source, true);
+    sub->add_flag("--json", a->json, "JSON for other programs (schema in tape(1))");
+    sub->add_flag("--explain", a->explain, "Name the G and M functions of each block (ГОСТ 20999-83 tables 4-8)");
+    sub->add_option("--lang", a->lang, "Language of --explain: en or ru")
+        ->check(CLI::IsMember({"en", "ru"}))
+        ->capture_default_str();
+    sub->callback([a] { run(*a); });
+}
+
+}  // namespace cli

@@ -1,0 +1,135 @@
+#include "send.hpp"
+
+#include "cli/globals.hpp"
+#include "cli/inputs.hpp"
+#include "cli/messages.hpp"
+#include "cli/numbers.hpp"
+#include "cli/options.hpp"
+#include "cli/programs.hpp"
+#include "cli/run.hpp"
+#include "cli/signals.hpp"
+#include "device_options.hpp"
+#include "tape/detect.hpp"
+#include "tape/feed.hpp"
+#include "tape/file_io.hpp"
+
+namespace cli {
+
+void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
+    add_code_options(sub, p.choice, true, true);  // a text program may be sent in ITA2 or МТК-2
+    sub->add_option("--leader", p.leader, "Blank frames (NUL) before the program")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str()
+        ->each([&p](const std::string&) { p.leader_given = true; });
+    sub->add_option("--trailer", p.trailer, "Blank frames after the program")
+        ->check(whole_number(0, tape::max_blank_frames))
+        ->capture_default_str()
+        ->each([&p](const std::string&) { p.trailer_given = true; });
+    sub->add_flag("--crlf", p.crlf, "End blocks with CR LF instead of LF (text programs, ISO)");
+    sub->add_flag("--percent", p.percent,
+                  "Text programs: put a '%' block first when the program has none, and a '%' after it when it does "
+                  "not end with one (never doubled); by default the program is sent exactly as written");
+    add_dialect_option(sub, p.dialect);
+    sub->add_option("--format,-f", p.format,
+                    "Image format of IN (IN is then a tape image), and of a file: device: " + format_choices(false))
+        ->check(format_check(false));
+    sub->add_option("--input", p.kind, "What IN is: auto, text or image")
+        ->check(CLI::IsMember({"auto", "text", "image"}))
+        ->capture_default_str();
+}
+
+tape::InputOptions feed_input_options(const FeedProfile& p) {
+    tape::InputOptions io = input_options(p.choice, p.format, p.kind);
+    io.detect_code = false;  // an image is sent as it is
+    return io;
+}
+
+std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
+    auto input = open_input(path, feed_input_options(p));
+    return frames_to_send(*input, display_name(path), p);
+}
+
+std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& name, const FeedProfile& p) {
+    tape::InputOptions io = feed_input_options(p);
+    tape::FeedOptions o;
+    o.encode.code = tape::parse_code(p.choice.code).value_or(tape::Code::iso);  // auto: a text program in ISO
+    o.encode.parity = io.decode.parity;
+    o.encode.charset = io.decode.charset;
+    o.encode.leader = p.leader;
+    o.encode.trailer = p.trailer;
+    o.encode.crlf = p.crlf;
+    o.encode.eia_table = globals().table();
+    o.replace_leader = p.leader_given;
+    o.replace_trailer = p.trailer_given;
+    o.percent = p.percent;
+    o.dialect = tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic);
+    try {
+        tape::DialectChoice chosen;
+        auto frames = tape::frames_to_send(input, o, &chosen);
+        if (!input.is_image()) say_dialect(name, chosen);
+        return frames;
+    } catch (const tape::Error& e) {
+        fail(name, e);
+    }
+}
+
+namespace {
+
+void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o,
+                  const std::string& verb, bool progress_forced) {
+    o.stop = &interrupted();
+    ProgressLine progress(verb, progress_forced);
+    o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
+    tape::SendResult r;
+    try {
+        r = tape::send_frames(line, frames, o);
+    } catch (const tape::Error& e) {
+        fail("", e);
+    }
+    if (r.stopped) {
+        say(line.name(),
+            "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
+        throw Exit{interrupted_status};
+    }
+    if (globals().verbosity > 0)
+        say(line.name(),
+            verb + " " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
+}
+
+// Holes pictures are annotated with the characters of the code the frames are in, when one fits.
+std::string image_text(const tape::ImageFormat& format, std::span<const tape::Frame> frames) {
+    std::optional<tape::FrameCode> code;
+    if (auto detected = tape::detect_code(frames).code)
+        code = tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
+    return format.write(frames, tape::ImageWriteOptions{code ? &*code : nullptr});
+}
+
+}  // namespace
+
+void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, tape::SendOptions o,
+                     const std::string& verb) {
+    if (auto path = file_device_path(to.device)) {
+        // The messages match the file backend's own, as a device string would get them.
+        if (o.flow == tape::Flow::rtscts)
+            fail(to.device, tape::Errc::usage, "flow=rtscts, but this device has no modem lines");
+        if (o.wait_xon) fail(to.device, tape::Errc::usage, "a file sends no DC1 (XON): --wait-xon needs a line");
+        const tape::ImageFormat* format =
+            to.format.empty() ? tape::image_format_for_path(*path) : tape::find_image_format(to.format);
+        if (!format) format = &tape::default_image_format();
+        // The default Ctrl-C handling stays: it removes the temporary, so the file is whole or absent.
+        try {
+            tape::write_file_atomic(*path, image_text(*format, frames), to.force);
+        } catch (const tape::Error& e) {
+            fail(to.device, e);
+        }
+        if (globals().verbosity > 0)
+            say(to.device,
+                verb + " " + std::to_string(frames.size()) + " frames as a " + std::string(format->id) + " image");
+        return;
+    }
+    install_interrupt_handler();
+    auto line = open_device_or_fail(to.device, to.use, to.force);
+    send_or_fail(*line, frames, o, verb, to.progress);
+}
+
+}  // namespace cli
