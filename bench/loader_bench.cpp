@@ -1,5 +1,5 @@
 // Loader throughput: characters -> programs, blocks and words, on a 100 MB generated program.
-// Run: build/bin/loader_bench
+// Run: build/bin/loader_bench (--benchmark_filter=LongNonAscii for the long-line figures alone)
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -68,8 +68,38 @@ void BM_LoadWholeTape(benchmark::State& state) {
     state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
 }
 
+// One long line that is not ASCII (a Cyrillic comment, then words): each word's column is counted in
+// characters. The loader must stay linear in the line's length (issue 24: a 160 KB line took 2.1 s when
+// every word counted its column from the line's start); the complexity fit says oN.
+void BM_LongNonAsciiLine(benchmark::State& state) {
+    std::string text = "%\nN1 (ДЕТАЛЬ \xD0\x96)";
+    while (text.size() < static_cast<std::size_t>(state.range(0))) text += " X1.5 Y-2";
+    text += "\nN2 M02\n";
+    struct Words : tape::ProgramVisitor {
+        std::uint64_t last_column = 0;
+        void block(const tape::Block& b) override {
+            if (!b.words.empty()) last_column = b.words.back().where.column;
+        }
+    };
+    Words words;
+    for (auto _ : state) {
+        tape::load_each(text, {}, words);
+        benchmark::DoNotOptimize(words.last_column);
+    }
+    state.SetComplexityN(state.range(0));
+    state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * text.size()));
+}
+
 }  // namespace
 
+BENCHMARK(BM_LongNonAsciiLine)
+    ->Arg(20 << 10)
+    ->Arg(40 << 10)
+    ->Arg(80 << 10)
+    ->Arg(160 << 10)
+    ->Arg(320 << 10)
+    ->Arg(640 << 10)
+    ->Complexity(benchmark::oN);
 BENCHMARK(BM_LoadEach)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK(BM_LoadWholeTape)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK_MAIN();

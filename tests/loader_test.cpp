@@ -123,7 +123,7 @@ TEST(Loader, SeedPrograms) {
     ASSERT_EQ(turning.programs.size(), 1U);
     const auto& blocks = turning.programs[0].blocks;
     ASSERT_EQ(blocks.size(), 11U);
-    EXPECT_EQ(blocks[0].text(), "N001 G27 F2000 S64 T102 M102");
+    EXPECT_EQ(blocks[0].text(), "N001 G27 F2000 S64 T102 M104");
     EXPECT_EQ(blocks[9].text(), "N010 X+002000 Z-001000 F10000");
     auto circles = load(read_text(sample_path("circle-examples.txt")));
     EXPECT_EQ(circles.programs.at(0).blocks.at(6).text(), "N21 G03 G90 X250.0 Z140.0 I-100.0 J-50.0 F100");
@@ -138,4 +138,20 @@ TEST(Loader, LocateAgreesWithTheLoader) {
     EXPECT_EQ(l.column, x.where.column);
     EXPECT_EQ(l.line, 3U);
     EXPECT_EQ(l.column, 4U);
+}
+
+// Columns count characters on a line that is not ASCII, whichever order the loader asks for them in:
+// a word after the Cyrillic, a finding back at the start of a run, words far along a long line.
+TEST(Loader, ColumnsOnANonAsciiLineCountCharacters) {
+    std::string line = "N1 (ДЕТАЛЬ) X1 Ж2 Y3";
+    for (int i = 0; i < 2000; ++i) line += " Z4";
+    auto t = load("%\n" + line + "\nM02\n");
+    const Block& b = t.programs.at(0).blocks.at(0);
+    ASSERT_GE(b.words.size(), 2003U);
+    EXPECT_EQ(b.words[0].where.column, 13U);  // X1: after "N1 (ДЕТАЛЬ) ", 12 characters
+    EXPECT_EQ(b.words[1].where.column, 16U);  // the flagged Ж2
+    EXPECT_EQ(b.words[2].where.column, 19U);  // Y3
+    EXPECT_EQ(b.words.back().where.column, 19U + 3U * 2000U);
+    ASSERT_EQ(t.findings.size(), 1U);
+    EXPECT_EQ(t.findings[0].where.column, 16U);
 }

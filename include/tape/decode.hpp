@@ -1,6 +1,7 @@
 // Decoding: frames -> characters, with every bad frame reported by its frame number.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -34,14 +35,20 @@ struct DecodeOptions {
 struct DecodeResult {
     std::string text;                        ///< the characters, UTF-8; LF ends a block
     std::vector<std::uint64_t> frame_of;     ///< with positions: 0-based frame index of each byte of text
-    std::vector<Diagnostic> diagnostics;     ///< one per bad frame, in tape order, up to max_diagnostics a kind
+    std::vector<Diagnostic> diagnostics;     ///< one per bad frame, and a warning (Errc::blank_frame) per run of
+                                             ///< blank frames inside a block, in tape order, up to
+                                             ///< max_diagnostics a kind
     std::map<Errc, std::uint64_t> unlisted;  ///< bad frames beyond max_diagnostics, by kind
     bool complete = true;                    ///< false when decoding stopped at the first bad frame
 
     bool ok() const { return diagnostics.empty(); }
 };
 
-/// Decodes a whole tape. Blank frames and DEL are skipped; each frame that fails the parity rule
+/// Decodes a whole tape. Blank frames and DEL are skipped; blank frames between a printable character
+/// and the next character of the same block (not after a control), and more blank frames at a block's
+/// start than the tape's habit after its ends of block (when 9 in 10 of at least 8 agree), give a
+/// warning Diagnostic (Errc::blank_frame) at the first of them: a character whose holes were all lost
+/// reads as blank tape (EIA's one-hole 0 1 2 4 8 - and space). Each frame that fails the parity rule
 /// or is no character of the code gives a Diagnostic (Errc::parity / Errc::not_in_code) with its
 /// frame and its line (= block: LFs decoded before it, plus one) and stops
 /// the decoding unless keep_going, in which case the frame is marked in the text.
@@ -86,11 +93,26 @@ private:
     void put_text(std::string_view text, std::uint64_t index, DecodeResult& out);
     void five_track_bad(Frame f, std::uint64_t index, const std::string& what, DecodeResult& out);
     void note_trailer(std::span<const Frame> frames);  // decode_ending.cpp
+    std::size_t note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out);
+    void after_blanks(Frame f, FrameKind kind, DecodeResult& out);
+    void block_start_blanks(DecodeResult& out);
+    void blank_run(std::uint64_t from, std::uint64_t n, const std::string& where, DecodeResult& out);
 
     DecodeOptions options_;
     FrameCode code_;
     std::uint64_t next_index_ = 0;
-    std::uint64_t parity_seen_ = 0, other_seen_ = 0;
+    std::uint64_t parity_seen_ = 0, other_seen_ = 0, blank_runs_seen_ = 0;
+    // Blank tape after a printable character or an end of block, waiting for the frame after it; the
+    // blank frames this tape put after its last 16 ends of block, its habit; and a run longer than the
+    // habit, waiting for two more blocks to keep it.
+    enum class Before { nothing, printable, end_of_block } before_blanks_ = Before::nothing;
+    std::uint64_t blank_from_ = 0, blank_frames_ = 0;
+    std::array<std::uint8_t, 16> habit_{};
+    std::size_t habit_seen_ = 0;
+    struct Suspect {
+        std::uint64_t from = 0, frames = 0, usual = 0;
+        int kept = 0;
+    } suspect_;
     std::uint64_t lines_ = 0;  // LFs decoded so far: a bad frame stands in line lines_ + 1
     bool cyrillic_ = false;
     bool stopped_ = false;

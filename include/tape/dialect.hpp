@@ -12,6 +12,7 @@ enum class Dialect {
     gost,       ///< ГОСТ 20999-83 / ISO 6983 as written: '%' starts every program, capitals only
     fanuc,      ///< Fanuc 0i/16i/18i/21i/30i: O numbers, closing '%', Custom Macro B, ';' as end of block
     linuxcnc,   ///< LinuxCNC RS274NGC: no '%' needed, any case, ';' comments, o-words, named parameters
+    none,       ///< no known dialect fits (Okuma, Sinumerik, ...): only what holds for every control is checked
     automatic,  ///< decided from the text before loading (guess_dialect)
 };
 
@@ -44,11 +45,19 @@ const DialectRules& dialect_rules(Dialect d);
 struct DialectChoice {
     Dialect dialect = Dialect::gost;
     std::string reason;
+    /// The runner-up, when it came within the margin: the text is read as dialect, and only what the
+    /// two readings both find is reported (lint keeps the rules they share).
+    std::optional<Dialect> close{};
 };
 
-/// Chooses a dialect from the start of a text program (a few tens of KB are enough): Fanuc by O
-/// numbers and Macro B, LinuxCNC by lowercase words, o-words, named parameters, ';' comments or the
-/// lack of any '%', else ГОСТ.
+/// Chooses a dialect from the start of a text program (a few tens of KB are enough) by weighing,
+/// for each dialect, the clues only its programs hold (O numbers and Custom Macro B for Fanuc;
+/// o-words, named parameters, lowercase and ';' comments for LinuxCNC; ':' main blocks and numbered
+/// '%' for ГОСТ) against the lines its reading cannot make sense of that another's can. Answers
+/// Dialect::none when the text holds the syntax of a control none of them reads (NAME= assignments,
+/// %MPF or $NAME% headers, DEF or CALL statements) or most of it reads in none; sets close when the
+/// runner-up came within the margin. A text with no clue is read as ГОСТ when it starts with '%',
+/// else as LinuxCNC (no ГОСТ tape program can have no '%' before it). The reason says what decided.
 DialectChoice guess_dialect(std::string_view text);
 
 }  // namespace tape

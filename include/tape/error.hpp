@@ -25,6 +25,7 @@ enum class Errc {
     exists,          ///< an output that already exists and may not be replaced
     doubtful_frame,  ///< a frame the reader itself doubts: read without a sprocket, mistimed, a level near its
                      ///< threshold
+    blank_frame,     ///< blank tape inside a block: a character whose holes were all lost reads so
 };
 
 /// Stable short name, e.g. "parity".

@@ -15,7 +15,8 @@ namespace tape {
 
 struct LintOptions {
     const FormatSpec* spec = nullptr;  ///< also check every word against this controller format
-    std::size_t max_per_rule = 0;      ///< keep at most this many findings of a rule, count the rest (0: all)
+    std::size_t max_per_rule = 0;  ///< list the first this many findings of a rule by position, count the rest (0: all)
+    bool strict = false;           ///< blank tape inside a block is an error, not a warning
 };
 
 /// Every finding: the loader's syntax findings and the rules of tape/rules.hpp that apply to the
@@ -35,7 +36,7 @@ public:
     void after_end(std::string_view text, const Location& where) override;
     void finding(const Finding& finding) override;
     void end(const Location& where) override;
-    /// Every finding so far (up to max_per_rule of each), sorted by position in the text.
+    /// Every finding so far (the first max_per_rule of each rule by position), sorted by position.
     std::vector<Finding> findings() const;
     /// Findings beyond max_per_rule, by rule; each severity's total, listed or not.
     const std::map<std::string_view, std::uint64_t>& unlisted() const { return unlisted_; }
@@ -43,6 +44,10 @@ public:
     /// Every finding made, listed or not, by rule.
     const std::map<std::string_view, std::uint64_t>& by_rule() const { return by_rule_; }
     Dialect dialect() const { return dialect_; }
+    /// The runner-up when two dialects were close (DialectChoice::close).
+    std::optional<Dialect> close() const { return close_; }
+    /// The programs seen.
+    std::uint64_t programs() const { return programs_; }
 
 private:
     void close_program();
@@ -55,9 +60,16 @@ private:
 
     LintOptions options_;
     std::function<void(Finding)> sink_;  // keep(), for the checks shared with lint()
-    std::vector<Finding> out_;
-    std::map<std::string_view, std::uint64_t> kept_, unlisted_, by_rule_;
+    struct Kept {                        // a finding listed, and when it came: equal positions keep their order
+        Finding finding;
+        std::uint64_t arrived;
+        bool operator<(const Kept& o) const;  // by position on the tape or in the text
+    };
+    std::map<std::string_view, std::vector<Kept>> kept_;  // by rule: a heap, the last by position on top
+    std::map<std::string_view, std::uint64_t> unlisted_, by_rule_;
+    std::uint64_t arrived_ = 0, programs_ = 0;
     Dialect dialect_ = Dialect::gost;
+    std::optional<Dialect> close_{};  // the runner-up: only the rules both have are checked
     std::uint64_t counts_[3] = {};
     bool any_program_ = false, in_program_ = false, program_points_ = false;
     bool quiet_ = false;  // checking a damaged block: its findings are not made
@@ -68,7 +80,9 @@ private:
     std::vector<Block> held_;                 // with a controller format: the program's blocks
     int motion_ = -1;                         // the G code of group a in effect (0-3), or -1
     bool feed_given_ = false, no_feed_said_ = false;
-    struct Open {  // a loop or o-word block waiting for its end
+    bool subprogram_ = false;           // the program ends with M99: it runs at its caller's feed
+    std::optional<Finding> no_feed_{};  // held to the program's end
+    struct Open {                       // a loop or o-word block waiting for its end
         std::string label;
         std::string keyword;
         Location where;

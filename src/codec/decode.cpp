@@ -2,6 +2,7 @@
 // Blank tape and DEL are skipped; bad frames are reported, never repaired.
 #include "tape/decode.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include "swar.hpp"
@@ -106,6 +107,19 @@ std::size_t table_run(const FrameCode& code, const Frame* in, std::size_t n, cha
 // Stage two, only when needed: КОИ-7 shifts to UTF-8 and bad-frame sentinels to the marker.
 constexpr char bad_sentinel = '\x80';
 
+// The blank runs of a chunk are found before its bad frames: both go in tape order, and none past the
+// bad frame decoding stopped at.
+void in_tape_order(std::vector<Diagnostic>& d, std::size_t from, bool stopped) {
+    auto frame = [](const Diagnostic& x) { return x.where.frame.value_or(0); };
+    std::stable_sort(d.begin() + static_cast<std::ptrdiff_t>(from), d.end(),
+                     [&](const Diagnostic& a, const Diagnostic& b) { return frame(a) < frame(b); });
+    if (!stopped) return;
+    auto last_bad = std::find_if(d.rbegin(), d.rend(), [](const Diagnostic& x) { return is_bad_frame(x.code); });
+    if (last_bad != d.rend())
+        std::erase_if(d,
+                      [&](const Diagnostic& x) { return x.code == Errc::blank_frame && frame(x) > frame(*last_bad); });
+}
+
 }  // namespace
 
 Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t index, std::uint64_t line) {
@@ -143,6 +157,7 @@ std::map<Errc, std::uint64_t> Decoder::unlisted() const {
     if (limit == 0) return m;
     if (parity_seen_ > limit) m[Errc::parity] = parity_seen_ - limit;
     if (other_seen_ > limit) m[Errc::not_in_code] = other_seen_ - limit;
+    if (blank_runs_seen_ > limit) m[Errc::blank_frame] = blank_runs_seen_ - limit;
     return m;
 }
 
@@ -191,10 +206,81 @@ void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t posit
     }
 }
 
+// Blank runs are found with memchr, so a clean tape pays one pass of it; the frame before a run and the
+// one after it decide whether the run stands inside a block. Returns where the chunk's diagnostics
+// begin in out.diagnostics.
+std::size_t Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out) {
+    std::size_t from = out.diagnostics.size(), i = 0, n = frames.size();
+    while (i < n) {
+        const void* z = std::memchr(frames.data() + i, 0, n - i);
+        std::size_t at = z ? static_cast<std::size_t>(static_cast<const Frame*>(z) - frames.data()) : n;
+        for (std::size_t k = i; k < at; ++k)
+            if (FrameKind kind = code_.kind(frames[k]); kind != FrameKind::rubout) after_blanks(frames[k], kind, out);
+        if (at == n) break;
+        std::size_t end = at;
+        while (end < n && frames[end] == 0) ++end;
+        if (before_blanks_ != Before::nothing && !blank_frames_) blank_from_ = base + at;
+        if (before_blanks_ != Before::nothing) blank_frames_ += end - at;
+        i = end;
+    }
+    return from;
+}
+
+// The frame after blank tape (or after none): inside a block any blank run is said; after an end of
+// block only one longer than the tape's habit there (Elliott tapes put one blank after each LF, so five
+// mean four characters lost), and only once the next two blocks keep the habit: a tape whose habit
+// changes (a section punched by another hand) is not damaged.
+void Decoder::after_blanks(Frame f, FrameKind kind, DecodeResult& out) {
+    char c = kind == FrameKind::character ? code_.character(f) : '\0';
+    bool printable = kind == FrameKind::character && static_cast<unsigned char>(c) >= 0x20;
+    if (before_blanks_ == Before::printable && blank_frames_)
+        blank_run(blank_from_, blank_frames_, "inside a block", out);
+    else if (before_blanks_ == Before::end_of_block && printable && c != '%')
+        block_start_blanks(out);
+    blank_frames_ = 0;
+    before_blanks_ = printable ? Before::printable : c == '\n' ? Before::end_of_block : Before::nothing;
+}
+
+void Decoder::block_start_blanks(DecodeResult& out) {
+    std::uint64_t run = std::min<std::uint64_t>(blank_frames_, 255);
+    if (suspect_.frames) {  // a run longer than the habit: said once two more blocks keep the habit
+        if (run != suspect_.usual) {
+            suspect_ = {};
+        } else if (++suspect_.kept == 2) {
+            blank_run(suspect_.from, suspect_.frames,
+                      "at the start of a block, where this tape has " + std::to_string(suspect_.usual) +
+                          " after each end of block",
+                      out);
+            suspect_ = {};
+        }
+    }
+    std::array<unsigned, 256> count{};
+    std::size_t usual = 0;
+    for (std::size_t k = 0; k < habit_seen_ && k < habit_.size(); ++k)
+        if (++count[habit_[k]] > count[usual]) usual = habit_[k];
+    if (habit_seen_ >= habit_.size() && count[usual] + 1 >= habit_.size() && run > usual && !suspect_.frames)
+        suspect_ = {blank_from_ + usual, run - usual, usual, 0};
+    habit_[habit_seen_++ % habit_.size()] = static_cast<std::uint8_t>(run);
+}
+
+// A run of blank frames that should hold characters: said once, at its first frame.
+void Decoder::blank_run(std::uint64_t from, std::uint64_t n, const std::string& where, DecodeResult& out) {
+    std::uint64_t first = from + 1;
+    if (++blank_runs_seen_ > options_.max_diagnostics && options_.max_diagnostics) return;
+    std::string frames = n == 1 ? "blank frame "
+                                : std::to_string(n) + " blank frames (frames " + std::to_string(first) + "-" +
+                                      std::to_string(first + n - 1) + ") ";
+    std::string message = frames + where + ": a character whose holes were all lost reads as blank tape" +
+                          (code_.code() == Code::eia ? " (EIA's 0 1 2 4 8 - and space have a single hole)" : "");
+    out.diagnostics.push_back(Diagnostic{
+        .code = Errc::blank_frame, .where = {.frame = first}, .message = message, .severity = Severity::warning});
+}
+
 bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     if (stopped_) return false;
     note_trailer(frames);
     if (code_.five_track_table()) return feed_five_track(frames, out);  // once a chunk: ISO and EIA pay nothing
+    std::size_t diagnostics_from = note_blanks(frames, next_index_, out);
     std::size_t from = out.text.size(), positions_from = out.frame_of.size();
     std::size_t w = from;
     bool marked = false;  // a bad_sentinel stored: known here, so no search of the text for one
@@ -248,6 +334,7 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     next_index_ += frames.size();
     if (stopped_) out.complete = false;
     if (w > from) last_char_ = out.text[w - 1];  // as decoded: a telecode's character is still its byte
+    if (out.diagnostics.size() > diagnostics_from) in_tape_order(out.diagnostics, diagnostics_from, stopped_);
     if (marked || options_.charset == Charset::koi7 || code_.telecode_table()) finish_text(out, from, positions_from);
     return !stopped_;
 }

@@ -22,6 +22,8 @@ std::string_view errc_name(Errc code) {
             return "exists";
         case Errc::doubtful_frame:
             return "doubtful-frame";
+        case Errc::blank_frame:
+            return "blank-frame";
         case Errc::io:
             return "io";
         case Errc::usage:

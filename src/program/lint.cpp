@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <functional>
+#include <tuple>
 #include <utility>
 
+#include "tape/code_tables.hpp"
 #include "tape/functions.hpp"
 #include "tape/rules.hpp"
 
@@ -46,6 +48,24 @@ bool is_end_point(char a) { return std::string_view("XYZUVWABC").find(a) != std:
 
 using Add = const std::function<void(Finding)>&;
 
+std::string unknown_code_reason(Dialect d, char letter) {
+    switch (d) {
+        case Dialect::gost:
+            return letter == 'G' ? "is no G function of ГОСТ 20999-83: they have two digits, G00-G99 (table 4)"
+                                 : "is no M function of ГОСТ 20999-83: they have two digits, M00-M99 (table 7), or "
+                                   "three with a first 1 for after the machine's acknowledgement";
+        case Dialect::fanuc:
+            return letter == 'G'
+                       ? "is no G code of Fanuc lathes, mills or the Haas controls that follow them"
+                       : "is not in the Fanuc table: its M codes, the machine builder's, have at most three digits";
+        case Dialect::linuxcnc:
+            return letter == 'G' ? "is no LinuxCNC G code (G-code reference)"
+                                 : "is no LinuxCNC M code (M-code reference; M100-M199 are the user's)";
+        default:
+            return "is not known";
+    }
+}
+
 void add(Add out, std::string_view rule, const Location& where, std::uint64_t block, std::string message) {
     out(program_finding(rule, where, block, std::move(message)));
 }
@@ -70,8 +90,24 @@ void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points) {
     for (const auto& w : b.words) check(w);
 }
 
-void word_checks(Add out, const Block& b, Dialect dialect) {
+// A G or M code outside the dialect's table (tape/code_tables.hpp); a macro value is not a code yet,
+// and the letters of a macro call (G65, G66) are its arguments (M0.070 is #13).
+void code_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close) {
+    if (has_g(b, {65, 66})) return;
+    for (const auto& w : b.words) {
+        if ((w.address != 'G' && w.address != 'M') || !w.known || w.macro || w.sign) continue;
+        std::string value = code_value(std::string_view(w.text).substr(1));
+        if (value.empty() || code_known(dialect, w.address, value) || (close && code_known(*close, w.address, value)))
+            continue;
+        add(out, "unknown-code", w.where, b.ordinal, w.text + " " + unknown_code_reason(dialect, w.address));
+    }
+}
+
+// With two dialects close, a word is held to what both readings ask: the looser of the two.
+void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close) {
     const DialectRules& rules = dialect_rules(dialect);
+    bool gost_dimensions = dialect == Dialect::gost && !close;
+    bool lathe_cycles = dialect == Dialect::fanuc || close == Dialect::fanuc;
     std::array<const Word*, 128> seen{};
     std::array<const Word*, 128> group{};
     int max_rank = -1;
@@ -85,7 +121,7 @@ void word_checks(Add out, const Block& b, Dialect dialect) {
     for (const auto& w : b.words) {
         if (!w.known) continue;
         auto a = static_cast<unsigned char>(w.address);
-        bool dimension = dialect == Dialect::gost ? is_dimension(w.address) : is_axis_or_center(w.address);
+        bool dimension = gost_dimensions ? is_dimension(w.address) : is_axis_or_center(w.address);
         if (dimension && dimensions) {
             if (seen[a])
                 add(out, "repeated-dimension", w.where, b.ordinal,
@@ -98,8 +134,7 @@ void word_checks(Add out, const Block& b, Dialect dialect) {
             if (const NcFunction* f = find_nc_function('G', *w.integer()); f && f->group) {
                 auto g = static_cast<unsigned char>(f->group);
                 // On a Fanuc lathe G90, G92 and G94 are turning cycles, not of the groups of table 4.
-                bool lathe_cycle =
-                    dialect == Dialect::fanuc && (*w.integer() == 90 || *w.integer() == 92 || *w.integer() == 94);
+                bool lathe_cycle = lathe_cycles && (*w.integer() == 90 || *w.integer() == 92 || *w.integer() == 94);
                 if (!lathe_cycle && group[g])
                     add(out, "g-group", w.where, b.ordinal,
                         w.text + " and " + group[g]->text + " are both of group " + f->group + " (§2.5, table 4)");
@@ -139,10 +174,14 @@ LintVisitor::LintVisitor(const LintOptions& options)
     : options_(options), sink_([this](Finding f) { keep(std::move(f)); }) {}
 LintVisitor::~LintVisitor() = default;
 
-void LintVisitor::dialect(const DialectChoice& choice) { dialect_ = choice.dialect; }
+void LintVisitor::dialect(const DialectChoice& choice) {
+    dialect_ = choice.dialect;
+    close_ = choice.close;
+}
 
 void LintVisitor::program_start(const Program& header) {
     close_program();
+    ++programs_;
     any_program_ = in_program_ = true;
     program_points_ = false;
     program_start_ = header.start;
@@ -150,7 +189,8 @@ void LintVisitor::program_start(const Program& header) {
     last_number_.reset();
     after_end_at_.reset();
     motion_ = -1;
-    feed_given_ = no_feed_said_ = false;
+    feed_given_ = no_feed_said_ = subprogram_ = false;
+    no_feed_.reset();
     open_.clear();
     numbers_.clear();
     gotos_.clear();
@@ -169,7 +209,9 @@ void LintVisitor::block(const Block& b) {
         if (n) last_number_ = n;
         if (n && dialect_ == Dialect::fanuc) numbers_.push_back(*n);
     }
-    word_checks(sink_, b, dialect_);
+    if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, "99");
+    word_checks(sink_, b, dialect_, close_);
+    code_checks(sink_, b, dialect_, close_);
     motion_checks(b);
     flow_checks(b);
     if (options_.spec) held_.push_back(b);
@@ -195,7 +237,8 @@ void LintVisitor::motion_checks(const Block& b) {
         if (*g >= 0 && *g <= 3)
             motion_ = static_cast<int>(*g);
         else if ((*g >= 70 && *g <= 89) || *g == 33 || *g == 34 || *g == 35 ||
-                 (dialect_ == Dialect::fanuc && (*g == 90 || *g == 92 || *g == 94) && !has_g(b, {0, 1, 2, 3})))
+                 ((dialect_ == Dialect::fanuc || close_ == Dialect::fanuc) && (*g == 90 || *g == 92 || *g == 94) &&
+                  !has_g(b, {0, 1, 2, 3})))
             motion_ = -1, other_g = true;  // cycles and threading: their own words
         else if (!(*g == 17 || *g == 18 || *g == 19 || *g == 20 || *g == 21 || (*g >= 40 && *g <= 44) || *g == 49 ||
                    (*g >= 53 && *g <= 59) || *g == 61 || *g == 64 || *g == 90 || *g == 91 || *g == 94 || *g == 95 ||
@@ -204,12 +247,17 @@ void LintVisitor::motion_checks(const Block& b) {
     }
     feed_given_ |= feed_here;
     if (other_g || !end_point || motion_ < 1) return;
-    if (!feed_given_ && !no_feed_said_) {
-        no_feed_said_ = true;  // one cause: the program gives no feed before its first feed move
-        add(sink_, "no-feed", b.where, b.ordinal,
-            "G0" + std::to_string(motion_) + " moves at a feed, but no F has been given in this program yet");
+    // One cause: the program gives no feed before its first feed move. A subroutine (LinuxCNC's o-sub,
+    // a Fanuc program that ends with M99) moves at its caller's feed: said at the program's end, if at all.
+    bool in_sub = std::any_of(open_.begin(), open_.end(), [](const Open& o) { return o.keyword == "sub"; });
+    if (!feed_given_ && !no_feed_said_ && !in_sub) {
+        no_feed_said_ = true;
+        if (!quiet_)
+            no_feed_ = program_finding(
+                "no-feed", b.where, b.ordinal,
+                "G0" + std::to_string(motion_) + " moves at a feed, but no F has been given in this program yet");
     }
-    bool radius_allowed = dialect_ != Dialect::gost;
+    bool radius_allowed = dialect_ != Dialect::gost || (close_ && *close_ != Dialect::gost);
     if ((motion_ == 2 || motion_ == 3) && !center && !(radius_allowed && radius))
         add(sink_, "arc-center", b.where, b.ordinal,
             "G0" + std::to_string(motion_) + " with an end point but no " +
@@ -278,18 +326,35 @@ void LintVisitor::after_end(std::string_view text, const Location& where) {
 
 void LintVisitor::finding(const Finding& f) { keep(f); }
 
-// A rule the dialect does not have is not checked; the rest are counted, and listed up to max_per_rule.
+// A rule the dialect does not have (nor, when two were close, the other) is not checked; the rest are
+// counted, and of each rule the first max_per_rule by position are listed, whatever order they came in.
 void LintVisitor::keep(Finding f) {
-    if (const Rule* r = find_rule(f.id()); r && !rule_applies(*r, dialect_)) return;
+    if (const Rule* r = find_rule(f.id()); r && (!rule_applies(*r, dialect_) || (close_ && !rule_applies(*r, *close_))))
+        return;
     if (quiet_ && !is_bad_frame(f.code)) return;
+    if (options_.strict && f.code == Errc::blank_frame) f.severity = Severity::error;
     ++counts_[static_cast<int>(f.severity)];
     ++by_rule_[f.id()];
-    if (options_.max_per_rule && kept_[f.id()] >= options_.max_per_rule) {
-        ++unlisted_[f.id()];
+    std::vector<Kept>& list = kept_[f.id()];
+    Kept k{std::move(f), arrived_++};
+    if (!options_.max_per_rule || list.size() < options_.max_per_rule) {
+        list.push_back(std::move(k));
+        std::push_heap(list.begin(), list.end());
         return;
     }
-    ++kept_[f.id()];
-    out_.push_back(std::move(f));
+    ++unlisted_[k.finding.id()];
+    if (!(k < list.front())) return;
+    std::pop_heap(list.begin(), list.end());  // the last by position makes room
+    list.back() = std::move(k);
+    std::push_heap(list.begin(), list.end());
+}
+
+// On a tape the frame orders: a bad frame's byte is in the image, a finding's in the decoded text.
+bool LintVisitor::Kept::operator<(const Kept& o) const {
+    auto key = [](const Kept& k) {
+        return std::tuple(k.finding.where.frame.value_or(0), k.finding.where.byte.value_or(0), k.arrived);
+    };
+    return key(*this) < key(o);
 }
 
 void LintVisitor::end(const Location& where) {
@@ -304,6 +369,8 @@ void LintVisitor::close_program() {
     if (!in_program_) return;
     in_program_ = false;
     if (program_blocks_ == 0) add(sink_, "program-start", program_start_, 0, "'%' is not followed by a block (§1.4)");
+    if (no_feed_ && !subprogram_) keep(*no_feed_);
+    no_feed_.reset();
     if (after_end_at_)
         add(sink_, "after-end", *after_end_at_, 0, "text after M02/M30 is not part of the program (§1.9)");
     for (const auto& o : open_) report_unclosed(o);
@@ -319,10 +386,12 @@ void LintVisitor::close_program() {
 }
 
 std::vector<Finding> LintVisitor::findings() const {
-    std::vector<Finding> sorted = out_;
-    // On a tape the frame orders: a bad frame's byte is in the image, a finding's in the decoded text.
-    auto key = [](const Finding& f) { return std::pair(f.where.frame.value_or(0), f.where.byte.value_or(0)); };
-    std::stable_sort(sorted.begin(), sorted.end(), [&](const Finding& a, const Finding& b) { return key(a) < key(b); });
+    std::vector<Kept> all;
+    for (const auto& [rule, list] : kept_) all.insert(all.end(), list.begin(), list.end());
+    std::sort(all.begin(), all.end());
+    std::vector<Finding> sorted;
+    sorted.reserve(all.size());
+    for (auto& k : all) sorted.push_back(std::move(k.finding));
     return sorted;
 }
 

@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "codec/utf8.hpp"
-#include "loader.hpp"
+#include "program/loader/loader.hpp"
 #include "tape/rules.hpp"
 
 namespace tape {

@@ -8,11 +8,14 @@ namespace {
 
 constexpr auto E = Severity::error, W = Severity::warning, N = Severity::note;
 constexpr std::string_view all = "gost fanuc linuxcnc";
+// What holds for every control, also when no known dialect fits (none): characters, parity, blocks, comments.
+constexpr std::string_view every = "gost fanuc linuxcnc none";
 
-constexpr std::array<Rule, 34> table = {{
+constexpr std::array<Rule, 37> table = {{
     // The loader: how characters become programs, blocks and words.
-    {"unexpected-character", E, all, "ГОСТ 20999-83 tables 1-3",
-     "a character, or a run of characters, that no program of the dialect may hold outside comments",
+    {"unexpected-character", E, every, "ГОСТ 20999-83 tables 1-3; ISO 646 (every control reads 7-bit code)",
+     "a character, or a run of characters, that no program of the dialect may hold outside comments (when no "
+     "dialect fits: a control character or one that is not 7-bit, which no control reads)",
      "a controller stops on it with a tape alarm; on a read tape it is often a misread frame"},
     {"unknown-word", E, all, "ГОСТ 20999-83 §3.1, table 1; the dialect's manual",
      "a word or statement this dialect does not know (lowercase letters in ГОСТ or Fanuc programs, a macro "
@@ -30,7 +33,7 @@ constexpr std::array<Rule, 34> table = {{
      "'%' is the program start and the rewind stop: a reader rewinding stops there"},
     {"comment-forbidden-char", E, "gost", "ГОСТ 20999-83 §1.5", "'%' or ':' inside a comment",
      "readers searching for '%' or ':' stop inside the comment"},
-    {"unclosed-comment", E, all, "ГОСТ 20999-83 §1.5", "'(' without ')' before the end of block",
+    {"unclosed-comment", E, every, "ГОСТ 20999-83 §1.5", "'(' without ')' before the end of block",
      "the controller reads the next blocks as comment, or stops"},
     {"program-start", E, all, "ГОСТ 20999-83 §1.4, §1.6, §1.8",
      "what stands between '%' and the end of that block: only a program number may; '%%' only before "
@@ -39,7 +42,7 @@ constexpr std::array<Rule, 34> table = {{
     {"program-end", W, all, "ГОСТ 20999-83 §1.9; Fanuc: M02, M30, M99; LinuxCNC: M2, M30 or the closing '%'",
      "a program that is not ended before the next program or the end of the tape",
      "without its end the controller runs on into what follows, or waits at the end of the tape"},
-    {"incomplete-block", W, all, "ГОСТ 20999-83 §2.1",
+    {"incomplete-block", W, every, "ГОСТ 20999-83 §2.1",
      "a tape that ends in the middle of a block, without its end of block",
      "a controller does not execute a block until its end of block: the tape was cut or read short"},
     {"no-program", E, "gost", "ГОСТ 20999-83 §1.4, §1.8",
@@ -65,6 +68,15 @@ constexpr std::array<Rule, 34> table = {{
      "two G codes of one group in a block (G00/G01/G02/G03, G17/G18/G19, G80-G89, G54-G59, G90/G91, "
      "G93-G95, G96/G97)",
      "only one can be in effect: LinuxCNC refuses the block, Fanuc silently takes the last"},
+    {"unknown-code", E, all,
+     "ГОСТ 20999-83 tables 4 and 7 (G00-G99, M00-M99); the Fanuc and LinuxCNC G- and M-code lists",
+     "a G or M code that is not in the dialect's table (src/program/code_tables.cpp): G890 or M930 in a ГОСТ "
+     "program, G38.2 in a Fanuc one",
+     "the controller stops with an alarm, or the code was misread or mistyped"},
+    {"console-command", W, "linuxcnc", "GRBL v1.1 commands ($$, $I, $G, ?); the LinuxCNC G-code reference",
+     "a line that is a GRBL console command ($I, $$, $G, ?) rather than G-code, in a file for the RS274NGC "
+     "family",
+     "GRBL runs it when a sender streams the file; LinuxCNC and other controls stop on it"},
     {"word-order", W, "gost", "ГОСТ 20999-83 §2.2",
      "a word out of the recommended order G, X Y Z U V W P Q R A B C, I J K, F, S, T, M (once a block)",
      "controllers of the ГОСТ family may expect this order"},
@@ -95,12 +107,16 @@ constexpr std::array<Rule, 34> table = {{
     {"spec-word", E, all, "ГОСТ 20999-83 §9", "tape format: a word that cannot be written in the controller format",
      "the value does not fit the digits the controller reads"},
     // The codec's bad frames, which lint lists among the findings of a damaged tape read with -k.
-    {"parity", E, all, "ГОСТ 13052-74 / ISO 646: even parity on track 8; EIA RS-244: odd parity on track 5",
+    {"parity", E, every, "ГОСТ 13052-74 / ISO 646: even parity on track 8; EIA RS-244: odd parity on track 5",
      "a frame whose holes fail the code's parity check",
      "a misread or damaged frame: which character it was is not known, and nothing guesses it"},
-    {"not_in_code", E, all, "ГОСТ 13052-74 / ISO 646; EIA RS-244",
+    {"not_in_code", E, every, "ГОСТ 13052-74 / ISO 646; EIA RS-244",
      "a frame with good parity that is no character of the code",
      "a misread or damaged frame, or a tape in another code"},
+    {"blank-frame", W, every, "ГОСТ 20999-83 §1.10 (blank tape only before '%' and after the end); EIA RS-244",
+     "blank tape inside a block, between two of its characters (an error with --strict)",
+     "a character whose holes were all lost reads as blank tape and vanishes: in EIA 0 1 2 4 8 - and space have "
+     "one hole, so Z-1 becomes Z1"},
     {"implied-point", W, all, "ГОСТ 20999-83 §3.1.4",
      "tape format: a program with no decimal point anywhere, whose numbers are taken as whole numbers",
      "with an implied point the same digits mean another size; give the source format with --from"},

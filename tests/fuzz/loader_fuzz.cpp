@@ -16,10 +16,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<std::uint64_t> frames(text.size());
     for (std::size_t i = 0; i < frames.size(); ++i) frames[i] = i * 2 + 100;  // a tape with gaps
     bool with_frames = size % 2 == 0;
-    // Every dialect, and the automatic choice, by the size.
+    // Every dialect, none, and the automatic choice, by the size.
     constexpr tape::Dialect dialects[] = {tape::Dialect::gost, tape::Dialect::fanuc, tape::Dialect::linuxcnc,
-                                          tape::Dialect::automatic};
-    tape::LoadOptions options{dialects[(size / 2) % 4]};
+                                          tape::Dialect::none, tape::Dialect::automatic};
+    tape::LoadOptions options{dialects[(size / 2) % 5]};
     tape::LoadedTape t = tape::load(text, with_frames ? frames : std::vector<std::uint64_t>{}, options);
     static const tape::FormatSpec spec =
         tape::parse_format_spec("% : / DS N03 G02 X+053 Y+053 Z+053 F031 S04 T04 M02*");

@@ -1,11 +1,12 @@
 // tape blocks: the programs on a tape, one line per block (кадр), or JSON for other programs.
 
+#include "cli/globals.hpp"
 #include "cli/json.hpp"
 #include "cli/messages.hpp"
 #include "cli/outputs.hpp"
 #include "cli/programs.hpp"
 #include "commands.hpp"
-#include "tape/functions.hpp"
+#include "tape/code_tables.hpp"
 #include "tape/utf8_text.hpp"
 
 namespace cli {
@@ -14,21 +15,9 @@ namespace {
 struct BlocksArgs {
     std::string input = "-";
     ProgramSource source;
-    bool json = false, explain = false;
+    bool json = false, explain = false, strict = false;
     std::string lang = "en";
 };
-
-std::string explanation(const tape::Block& b, bool russian) {
-    std::string out;
-    for (const auto& w : b.words) {
-        if (w.address != 'G' && w.address != 'M') continue;
-        auto v = w.integer();
-        const tape::NcFunction* f = v ? tape::find_nc_function(w.address, *v) : nullptr;
-        if (!f) continue;
-        out += (out.empty() ? "" : ", ") + w.text + " " + std::string(russian ? f->ru : f->en);
-    }
-    return out;
-}
 
 std::string statement_kind(tape::Statement::Kind k) {
     using K = tape::Statement::Kind;
@@ -77,6 +66,7 @@ public:
     }
     void program_start(const tape::Program& p) override {
         close_program();
+        machine_ = {};
         flush_label();
         in_program_ = true;
         ended_ = false;
@@ -87,8 +77,8 @@ public:
                     ", \"first_frame\": " + json_number(p.start.frame) + ", \"line\": " + std::to_string(p.start.line) +
                     ", \"blocks\": [";
         else
-            out_ += "program " + (p.number ? *p.number : "(no number)") + " at " + position_text(p.start, from_tape_) +
-                    "\n";
+            out_ += "program " + (p.number ? tape::visible(*p.number) : "(no number)") + " at " +
+                    position_text(p.start, from_tape_) + "\n";
         ++programs_;
     }
     void block(const tape::Block& b) override {
@@ -116,13 +106,14 @@ public:
             out_ += "]}";
         } else {
             std::string pos = position_text(b.where, from_tape_);
-            out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + b.text();
+            out_ += "  " + pos + std::string(pos.size() < 12 ? 12 - pos.size() : 1, ' ') + tape::visible(b.text());
             std::string flagged;
             for (const auto& w : b.words)
                 if (!w.known) flagged += (flagged.empty() ? "" : " ") + tape::visible(w.text);
             if (!flagged.empty()) out_ += "    ! not read: " + flagged;
             if (a_.explain) {
-                std::string e = explanation(b, a_.lang == "ru");
+                machine_.block(b);
+                std::string e = tape::explain_codes(b, dialect_, machine_.machine(), a_.lang == "ru");
                 if (!e.empty()) out_ += "    ; " + e;
             }
             out_ += "\n";
@@ -133,7 +124,17 @@ public:
     void after_end(std::string_view text, const tape::Location&) override {
         (in_program_ ? after_end_ : after_record_) += text;  // after the end of record, nothing is read
     }
-    void dialect(const tape::DialectChoice& choice) override { dialect_ = tape::dialect_name(choice.dialect); }
+    void dialect(const tape::DialectChoice& choice) override {
+        dialect_ = choice.dialect;
+        if (globals().verbosity == 0 && choice.dialect == tape::Dialect::none)  // -v says why, -q nothing
+            say(name_,
+                "no known dialect fits: the blocks are listed as written, and only what holds for every "
+                "control is checked (-v says why)");
+        if (globals().verbosity == 0 && choice.close)
+            say(name_, "read as " + std::string(tape::dialect_name(choice.dialect)) + ", close to " +
+                           std::string(tape::dialect_name(*choice.close)) +
+                           ": only what both readings find is reported (-v says why)");
+    }
     void record_end(const tape::Location& where, bool closes_program) override {
         if (closes_program) ended_ = true;
         close_program();
@@ -141,17 +142,23 @@ public:
         if (!a_.json) out_ += "% end of record (rewind stop) at " + position_text(where, from_tape_) + "\n";
     }
     void finding(const tape::Finding& f) override {
-        say(name_, position_text(f.where, from_tape_) + ": " + std::string(tape::severity_name(f.severity)) + ": " +
-                       f.message);
-        if (a_.json) findings_ += std::string(findings_.empty() ? "" : ", ") + finding_json(f);
+        tape::Finding shown = f;
+        if (f.code == tape::Errc::blank_frame && a_.strict) {  // --strict: a blank in a block is damage
+            shown.severity = tape::Severity::error;
+            blank_in_block_ = true;
+        }
+        say(name_, position_text(shown.where, from_tape_) + ": " + std::string(tape::severity_name(shown.severity)) +
+                       ": " + tape::visible(shown.message));
+        if (a_.json) findings_ += std::string(findings_.empty() ? "" : ", ") + finding_json(shown);
     }
+    bool blank_in_block() const { return blank_in_block_; }
 
     void finish() {
         close_program();
         flush_label();
         if (!a_.json && has_text(after_record_)) out_ += "after the end of record, not read:\n" + shown(after_record_);
         if (a_.json)
-            out_ += "], \"dialect\": " + json_string(std::string(dialect_)) +
+            out_ += "], \"dialect\": " + json_string(std::string(tape::dialect_name(dialect_))) +
                     ", \"record_end\": " + (record_end_ ? location_json(*record_end_) : "null") +
                     ", \"after_record_end\": " + json_string(after_record_) + ", \"label\": " + json_string(label_) +
                     ", \"leader_label\": " + label_json(leader_) +
@@ -204,10 +211,11 @@ private:
     const std::string& name_;
     bool from_tape_;
     std::string out_, label_, after_end_, after_record_, findings_;
-    std::string_view dialect_ = "gost";
+    tape::Dialect dialect_ = tape::Dialect::gost;
+    tape::MachineEvidence machine_;  // --explain: the program's machine, for the codes that differ
     std::optional<tape::Location> record_end_;
     std::optional<tape::LeaderLabel> leader_;  // letters of holes in the leader, not read as text
-    bool label_done_ = false, physical_start_ = false, in_program_ = false, ended_ = false;
+    bool label_done_ = false, physical_start_ = false, in_program_ = false, ended_ = false, blank_in_block_ = false;
     std::uint64_t programs_ = 0, blocks_ = 0;
 };
 
@@ -223,6 +231,7 @@ void run(const BlocksArgs& a) {
     load_program(in, lister);
     lister.finish();
     end_program(in);
+    if (lister.blank_in_block()) throw Exit{bad_data};
 }
 
 }  // namespace
@@ -233,7 +242,10 @@ void add_blocks(CLI::App& app) {
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
     add_program_source_options(sub, a->source, true);
     sub->add_flag("--json", a->json, "JSON for other programs (schema in tape(1))");
-    sub->add_flag("--explain", a->explain, "Name the G and M functions of each block (ГОСТ 20999-83 tables 4-8)");
+    sub->add_flag("--explain", a->explain,
+                  "Name the G and M functions of each block as the dialect's table does (ГОСТ 20999-83 tables 4-8, "
+                  "Fanuc lathe or mill, LinuxCNC)");
+    sub->add_flag("--strict", a->strict, "Blank tape inside a block is an error: exit 1");
     sub->add_option("--lang", a->lang, "Language of --explain: en or ru")
         ->check(CLI::IsMember({"en", "ru"}))
         ->capture_default_str();

@@ -20,7 +20,7 @@ namespace {
 struct DecodeArgs {
     std::string input = "-", output = "-", format, to = "text";
     CodeChoice choice;
-    bool keep_going = false, force = false, unshift_on_space = false;
+    bool keep_going = false, force = false, unshift_on_space = false, strict = false;
 };
 
 // What the text showed on the way, for the notes after it.
@@ -38,6 +38,17 @@ struct TextFacts {
         }
     }
 };
+
+// A bad frame as decode says it; blank tape inside a block as a warning (an error with --strict).
+// True for the latter.
+bool say_decoded(const std::string& name, const tape::Diagnostic& d, bool raw, bool strict) {
+    if (d.code != tape::Errc::blank_frame) {
+        say_diagnostic(name, d, raw);
+        return false;
+    }
+    say(name, d.where.describe() + (strict ? ": " : ": warning: ") + d.message);
+    return true;
+}
 
 std::unique_ptr<tape::OutputFile> open_output_or_fail(const std::string& path, bool force) {
     try {
@@ -101,8 +112,9 @@ void decode_text(const DecodeArgs& a, tape::Input& in, const std::string& name) 
     TextFacts facts;
     try {
         tape::DecodeResult piece;
+        bool blank_in_block = false;
         while (in.next_text(piece)) {
-            for (const auto& d : piece.diagnostics) say_diagnostic(name, d, raw);
+            for (const auto& d : piece.diagnostics) blank_in_block |= say_decoded(name, d, raw, a.strict);
             piece.diagnostics.clear();
             if (!piece.complete) {  // nothing written: the program would be cut short
                 say_other_reading(in, name);
@@ -122,6 +134,7 @@ void decode_text(const DecodeArgs& a, tape::Input& in, const std::string& name) 
             say_other_reading(in, name);
             throw Exit{bad_data};
         }
+        if (blank_in_block && a.strict) throw Exit{bad_data};
     } catch (const tape::Error& e) {
         fail(name, e, raw);
     }
@@ -201,6 +214,8 @@ void add_decode(CLI::App& app) {
                   "ITA2: a space returns to letters, as on teleprinters with unshift-on-space (a tape they punched "
                   "has no letters shift after a space)");
     sub->add_flag("--force", a->force, "Replace an existing OUT; write a binary image to a terminal");
+    sub->add_flag("--strict", a->strict,
+                  "Blank tape inside a block (a character that lost its holes?) is an error: exit 1");
     sub->callback([a] { run(*a); });
 }
 

@@ -20,7 +20,7 @@ namespace {
 struct LintArgs {
     std::string input = "-", spec, explain;
     ProgramSource source;
-    bool json = false, rules = false;
+    bool json = false, rules = false, strict = false;
     std::uint64_t max = 0;
 };
 
@@ -47,15 +47,27 @@ std::string finding_line(const ProgramInput& in, const tape::Finding& f) {
            tape::visible(f.message) + "\n";
 }
 
-// "3 error(s), 1 warning(s), 2 note(s): g-group 2, repeated-dimension 1, ..."
+std::string counted(std::uint64_t n, const std::string& what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+// "3 errors, 1 warning, 2 notes in 1 program: g-group 2, repeated-dimension 1, ...", and what the
+// dialect's choice left out.
 std::string summary_text(const tape::LintVisitor& linter) {
-    std::string s = std::to_string(linter.count(tape::Severity::error)) + " error(s), " +
-                    std::to_string(linter.count(tape::Severity::warning)) + " warning(s), " +
-                    std::to_string(linter.count(tape::Severity::note)) + " note(s)";
+    std::string s = counted(linter.count(tape::Severity::error), "error") + ", " +
+                    counted(linter.count(tape::Severity::warning), "warning");
+    if (std::uint64_t notes = linter.count(tape::Severity::note)) s += ", " + counted(notes, "note");
+    s += " in " + counted(linter.programs(), "program");
     std::string rules;
     for (const auto& [rule, count] : linter.by_rule())
         rules += (rules.empty() ? ": " : ", ") + std::string(rule) + " " + std::to_string(count);
-    return s + rules;
+    s += rules;
+    if (linter.dialect() == tape::Dialect::none)
+        s += "; no known dialect fits: only what holds for every control was checked";
+    if (auto close = linter.close())
+        s += "; " + std::string(tape::dialect_name(linter.dialect())) + " and " +
+             std::string(tape::dialect_name(*close)) + " were close: only what both readings find is listed";
+    return s;
 }
 
 std::string summary_json(const tape::LintVisitor& linter, std::uint64_t unlisted) {
@@ -64,7 +76,8 @@ std::string summary_json(const tape::LintVisitor& linter, std::uint64_t unlisted
         rules += (rules.empty() ? "" : ", ") + json_string(std::string(rule)) + ": " + std::to_string(count);
     return "{\"errors\": " + std::to_string(linter.count(tape::Severity::error)) +
            ", \"warnings\": " + std::to_string(linter.count(tape::Severity::warning)) +
-           ", \"notes\": " + std::to_string(linter.count(tape::Severity::note)) + ", \"by_rule\": {" + rules +
+           ", \"notes\": " + std::to_string(linter.count(tape::Severity::note)) +
+           ", \"programs\": " + std::to_string(linter.programs()) + ", \"by_rule\": {" + rules +
            "}, \"not_listed\": " + std::to_string(unlisted) + "}";
 }
 
@@ -90,7 +103,7 @@ void run(const LintArgs& a) {
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     // Streamed: a tape of any length is checked in bounded memory (--max-errors findings a rule).
     ProgramInput in = open_program(a.input, a.source);
-    tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors});
+    tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict});
     load_program(in, linter, true);
     std::vector<tape::Finding> findings = linter.findings();
     std::uint64_t unlisted = 0;
@@ -102,7 +115,9 @@ void run(const LintArgs& a) {
     std::string out;
     if (a.json) {
         out = "{\"file\": " + json_string(in.name) +
-              ", \"dialect\": " + json_string(std::string(tape::dialect_name(linter.dialect()))) + ", \"findings\": [";
+              ", \"dialect\": " + json_string(std::string(tape::dialect_name(linter.dialect()))) + ", \"close\": " +
+              (linter.close() ? json_string(std::string(tape::dialect_name(*linter.close()))) : "null") +
+              ", \"findings\": [";
         for (std::size_t i = 0; i < findings.size(); ++i) out += (i ? ", " : "") + finding_json(findings[i]);
         out += "], \"summary\": " + summary_json(linter, unlisted) + "}\n";
     } else {
@@ -114,7 +129,7 @@ void run(const LintArgs& a) {
             say(in.name, std::to_string(unlisted) + " more finding(s) not shown (" +
                              (a.max ? "--max " + std::to_string(a.max) + ", " : std::string()) + "--max-errors " +
                              std::to_string(globals().max_errors) + " a rule)");
-        if (globals().verbosity >= 0 && !linter.by_rule().empty()) say(in.name, summary_text(linter));
+        if (globals().verbosity >= 0) say(in.name, summary_text(linter));
     }
     end_program(in);
     if (linter.count(tape::Severity::error)) throw Exit{bad_data};
@@ -138,6 +153,7 @@ void add_lint(CLI::App& app) {
     sub->add_option("--explain", a->explain, "Print what RULE checks, why, and its reference; no input is read")
         ->option_text("RULE");
     sub->add_flag("--rules", a->rules, "List every rule: id, severity, the dialects it applies to; no input is read");
+    sub->add_flag("--strict", a->strict, "Blank tape inside a block (a character that lost its holes?) is an error");
     sub->callback([a] { run(*a); });
 }
 

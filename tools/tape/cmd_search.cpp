@@ -8,6 +8,7 @@
 #include "cli/programs.hpp"
 #include "commands.hpp"
 #include "tape/search.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 namespace {
@@ -24,7 +25,7 @@ struct SearchArgs {
 
 std::string hit(const ProgramInput& in, const tape::Location& where, const std::string& what) {
     return position_text(where, in.from_tape) + (in.from_tape ? " (line " + std::to_string(where.line) + ")" : "") +
-           ": " + what + "\n";
+           ": " + tape::visible(what) + "\n";
 }
 
 // Block numbers have at most 9 digits on any controller; more is a typing mistake, not a block.

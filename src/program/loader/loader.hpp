@@ -1,16 +1,37 @@
 // The loader behind ProgramLoader: characters -> label, programs, blocks, words, statements, in one
-// pass, a line at a time, in the dialect's reading (tape/dialect.hpp).
+// pass, a line at a time, in the dialect's reading (tape/dialect.hpp). Its stages are the files of
+// this folder: feed.cpp (pieces of text -> lines and positions), programs.cpp (lines -> label,
+// programs, the end of the record), block.cpp (a line -> blocks and their items), word.cpp (a word,
+// the hot loop) and statements.cpp (macro statements, o-words).
 #pragma once
 
+#include <algorithm>
+#include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "program/chars.hpp"
 #include "tape/program.hpp"
 
 namespace tape {
+
+namespace loading {
+using chars::is_blank, chars::is_digit, chars::is_letter, chars::is_lower, chars::is_upper, chars::upper;
+
+inline bool listed(std::string_view name, std::span<const std::string_view> list) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+inline std::string_view trim_right(std::string_view s) {
+    while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
+    return s;
+}
+}  // namespace loading
 
 class Loader {
 public:
@@ -21,7 +42,8 @@ public:
 private:
     enum class State { label, pending, program, after_end, record_ended };
 
-    void choose(Dialect d, std::string reason);
+    void choose(DialectChoice choice);
+    void report(Finding f);
     void feed_lines(std::string_view text, std::span<const std::uint64_t> frame_of);
     void keep(std::string_view text, std::span<const std::uint64_t> frame_of);
     void run(std::string_view text, std::span<const std::uint64_t> frame_of);
@@ -32,6 +54,8 @@ private:
     std::size_t skip_blanks(std::size_t i, std::size_t e) const;
 
     void line(std::size_t b, std::size_t e, bool has_lf);
+    void label_line(std::size_t b, std::size_t first, std::size_t e, std::string_view whole);
+    void after_end_line(std::size_t b, bool blank, std::string_view whole);
     void percent_line(std::size_t b, std::size_t pct, std::size_t e);
     void open_pending(std::size_t pct, std::size_t e, bool from_label);
     void close_pending_empty();
@@ -43,14 +67,26 @@ private:
     void blocks_in_line(std::size_t i, std::size_t e);
 
     std::size_t block(std::size_t i, std::size_t e);
+    std::size_t block_head(std::size_t i, std::size_t end);
+    bool stops_program(const Block& b) const;
+    std::size_t block_item(std::size_t i, std::size_t end);
+    std::size_t letters(std::size_t i, std::size_t end);
     std::size_t block_end(std::size_t i, std::size_t e) const;
     std::size_t statement_end(std::size_t i, std::size_t e) const;
     void word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t block_no, Word& w);
+    bool macro_word(std::size_t i, std::size_t e, std::size_t* next, Word& w);
     std::size_t flagged(std::size_t i, std::size_t e, std::size_t end, std::string message,
                         std::string_view rule = "unknown-word");
     std::size_t stray_close(std::size_t i, std::size_t e) const;
     Word& flagged_word(std::size_t i, std::string_view text);
     std::size_t macro_statement(std::size_t i, std::size_t e, const std::string& keyword);
+    struct MacroScan {  // a macro statement being read: its start, where reading is, its end
+        std::size_t start, at, end;
+    };
+    bool if_statement(MacroScan& m);
+    bool macro_condition(MacroScan& m, const char* what);
+    void loop_number(MacroScan& m, Statement& s, const char* what);
+    void goto_target(MacroScan& m, Statement& s);
     std::size_t assignment(std::size_t i, std::size_t e);
     std::size_t o_word(std::size_t i, std::size_t e);
     Statement& add_statement(Statement::Kind kind, std::size_t from, std::size_t to);
@@ -62,6 +98,14 @@ private:
 
     ProgramVisitor& v_;
     LoadOptions options_;
+    // Two dialects close: the runner-up reads the same text, and what it finds (rule, byte) is kept
+    // here until this reading has passed it; a finding of this reading stands only if it is there too.
+    struct SecondFindings : ProgramVisitor {
+        std::set<std::pair<std::string, std::uint64_t>> found;
+        void finding(const Finding& f) override { found.emplace(f.id(), f.where.byte.value_or(0)); }
+    };
+    std::unique_ptr<SecondFindings> second_found_;
+    std::unique_ptr<Loader> second_;
     const DialectRules* rules_ = nullptr;
     bool linuxcnc_ = false;
     std::string sniff_;  // automatic: the text held until the dialect is chosen, and its frames
@@ -79,10 +123,14 @@ private:
     std::uint64_t line_no_ = 0, ordinal_ = 0;
     std::size_t line_start_ = 0;
     bool line_ascii_ = true;
+    mutable std::size_t column_offset_ = 0;  // the last place of a non-ASCII line a column was counted for
+    mutable std::uint64_t column_ = 1;       // and that column
     bool any_program_ = false;
     bool after_end_started_ = false;
     bool last_line_was_block_ = false;
-    Program pending_header_;  // a '%' whose program starts with its first block
+    bool last_block_stops_ = false;   // the last block stops the program without an end code
+    bool local_subprograms_ = false;  // Haas: the program calls blocks after its M30 (M97 P)
+    Program pending_header_;          // a '%' whose program starts with its first block
     bool pending_from_label_ = false;
     Location program_start_, last_block_where_;
     std::uint64_t last_block_ordinal_ = 0;
