@@ -96,7 +96,7 @@ TEST(Telecode, A920TapeIsDetectedNotReadAsIso) {
     EXPECT_EQ(d.kind, TapeKind::telecode) << d.reason;
     ASSERT_TRUE(d.code);
     EXPECT_EQ(*d.code, Code::elliott920);
-    EXPECT_EQ(d.hint.action, Hint::Action::use_code);
+    EXPECT_EQ(d.hint.action, Hint::Action::none) << "auto decodes it so: no advice to give --code";
     EXPECT_EQ(d.evidence.fits[5].bad_frames, 0U);
     EXPECT_GT(d.evidence.fits[0].controls, 0U) << "as ISO it is full of controls";
 }

@@ -101,10 +101,10 @@ CodeDetection reading_verdict(CodeDetection d, const ReadingFit& best, std::uint
     } else if (is_telecode(r.code)) {
         d.kind = TapeKind::telecode;
         d.code = r.code;
-        d.reason = reading_name(r) + ", not ISO: every punched frame but " + n(best.bad_frames) + " of " +
-                   n(e.punched) + " is one of its characters, " + n(best.end_of_blocks) + " newlines; read as ISO " +
+        // Decoding with auto takes this code: no advice to give it.
+        d.reason = reading_name(r) + ", not ISO: " + n(e.punched - best.bad_frames) + " of " + n(e.punched) +
+                   " punched frames are its characters, " + n(best.end_of_blocks) + " newlines; read as ISO " +
                    n(e.fits[0].controls) + " of them would be control characters no text holds" + whole_text(e);
-        if (d.clean) d.hint = hint_for(r);
     } else if (r.parity == Parity::even) {
         d.kind = TapeKind::iso;
         d.code = Code::iso;
