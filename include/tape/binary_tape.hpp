@@ -172,5 +172,8 @@ std::string memory_image_bytes(const MemoryImage& image);
 /// The memory image as octal lines: "00200: 7300 1276 3274 ..." (PDP-8, 5-digit field and address) or
 /// "001000: 012706 001000 ..." (PDP-11, 16-bit words), eight to a line, only where something was loaded.
 std::string memory_image_octal(const MemoryImage& image);
+/// value in octal with leading zeros to digits places, as DEC wrote addresses and words: octal_text(0200, 5)
+/// is "00200".
+std::string octal_text(std::uint32_t value, int digits);
 
 }  // namespace tape

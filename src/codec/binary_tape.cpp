@@ -6,18 +6,12 @@
 namespace tape {
 namespace {
 
-std::string octal(std::uint32_t v, int digits) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%0*o", digits, v);
-    return buf;
-}
-
 std::string count_text(std::uint64_t n, const std::string& one, const std::string& many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
 std::string address_text(BinaryFormat f, std::uint32_t a) {
-    return f == BinaryFormat::pdp11_absolute ? octal(a, 6) : octal(a, 5);
+    return f == BinaryFormat::pdp11_absolute ? octal_text(a, 6) : octal_text(a, 5);
 }
 
 }  // namespace
@@ -212,11 +206,11 @@ std::string memory_image_octal(const MemoryImage& image) {
             continue;
         }
         if (on_line == 0) {
-            out += pdp11 ? octal(a, 6) : octal(a, 5);
+            out += pdp11 ? octal_text(a, 6) : octal_text(a, 5);
             out += ":";
         }
         std::uint32_t v = pdp11 ? image.at(a) | image.at(a + 1) << 8 : image.at(a);
-        out += " " + octal(v, pdp11 ? 6 : 4);
+        out += " " + octal_text(v, pdp11 ? 6 : 4);
         if (++on_line == 8) {
             out += "\n";
             on_line = 0;
@@ -245,6 +239,12 @@ bool checksum_holds(BinaryFormat format, std::span<const Frame> frames) {
     Frame high = words[words.size() - 2], low = words.back();
     std::uint16_t stored = static_cast<std::uint16_t>(((high & 077) << 6) + low) & 07777;
     return pdp8_bin_checksum(std::span(words).first(words.size() - 2)) == stored;
+}
+
+std::string octal_text(std::uint32_t value, int digits) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%0*o", digits, value);
+    return buf;
 }
 
 }  // namespace tape

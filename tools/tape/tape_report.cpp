@@ -1,19 +1,11 @@
 // What info and decode say about a tape beyond its characters: labels, binary formats.
 #include "tape_report.hpp"
 
-#include <cstdio>
-
 #include "cli/json.hpp"
 #include "cli/messages.hpp"
 
 namespace cli {
 namespace {
-
-std::string octal(std::uint32_t v, int digits) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%0*o", digits, v);
-    return buf;
-}
 
 std::string frames_range(std::uint64_t first, std::uint64_t count) {
     return std::to_string(first + 1) + "-" + std::to_string(first + count);
@@ -32,9 +24,9 @@ std::string leader_label_words(const tape::LeaderLabel& label) {
 
 std::string leader_label_json(const std::optional<tape::LeaderLabel>& label) {
     if (!label) return "null";
-    std::string json = label_json(label);
-    json.pop_back();
-    return json + ", \"kind\": " + (label->font == tape::LabelFont::title ? "\"title\"" : "\"letters\"") + "}";
+    Json json = label_value(label);
+    json["kind"] = label->font == tape::LabelFont::title ? "title" : "letters";
+    return json_text(json);
 }
 
 std::string binary_block_line(const tape::BinaryBlock& b) {
@@ -42,18 +34,18 @@ std::string binary_block_line(const tape::BinaryBlock& b) {
     std::string s = std::string(pdp11 ? (b.end ? "end block" : "block") : tape::binary_format_name(b.format)) +
                     ": frames " + frames_range(b.first, b.frames);
     if (pdp11 && b.end)
-        s += ", start address " + octal(b.origin, 6);
+        s += ", start address " + tape::octal_text(b.origin, 6);
     else if (pdp11)
-        s += ", load " + octal(b.origin, 6) + ", " + std::to_string(b.words) + " bytes";
+        s += ", load " + tape::octal_text(b.origin, 6) + ", " + std::to_string(b.words) + " bytes";
     else
-        s += ", " + std::to_string(b.origins) + " origin(s) from " + octal(b.origin, 5) + ", " +
+        s += ", " + std::to_string(b.origins) + " origin(s) from " + tape::octal_text(b.origin, 5) + ", " +
              std::to_string(b.words) + " words";
     if (b.checksum) {
         const auto& c = *b.checksum;
         s += ", checksum " + std::string(tape::checksum_state_name(c.state));
         if (c.state == tape::ChecksumSpan::State::fails)
-            s += " (punched " + octal(c.stored, pdp11 ? 3 : 4) + ", the frames give " +
-                 octal(c.computed, pdp11 ? 3 : 4) + ")";
+            s += " (punched " + tape::octal_text(c.stored, pdp11 ? 3 : 4) + ", the frames give " +
+                 tape::octal_text(c.computed, pdp11 ? 3 : 4) + ")";
         if (c.state == tape::ChecksumSpan::State::missing) s += ": the tape ends before it";
     }
     if (b.cut && (!b.checksum || b.checksum->state != tape::ChecksumSpan::State::missing))
@@ -77,28 +69,31 @@ std::string binary_block_lines(const tape::BinaryTape& t, bool every, const std:
 }
 
 std::string binary_json(const tape::BinaryTape& t) {
-    std::string s =
-        "{\"format\": " +
-        (t.format ? json_string(std::string(tape::binary_format_id(*t.format))) : std::string("null")) +
-        ", \"summary\": " + json_string(t.summary()) + ", \"block_count\": " + std::to_string(t.block_count) +
-        ", \"checksums\": {\"hold\": " + std::to_string(t.checksums_held) +
-        ", \"fail\": " + std::to_string(t.checksums_failed) + ", \"missing\": " + std::to_string(t.checksums_missing) +
-        "}, \"start\": " + json_number(t.start ? std::optional<std::uint64_t>(*t.start) : std::nullopt) +
-        ", \"stray_frames\": " + std::to_string(t.stray_frames) + ", \"blocks\": [";
-    for (std::size_t i = 0; i < t.blocks.size(); ++i) {
-        const auto& b = t.blocks[i];
-        s += std::string(i ? ", " : "") + "{\"format\": " + json_string(std::string(tape::binary_format_id(b.format))) +
-             ", \"first_frame\": " + std::to_string(b.first + 1) + ", \"frames\": " + std::to_string(b.frames) +
-             ", \"origin\": " + std::to_string(b.origin) + ", \"words\": " + std::to_string(b.words) +
-             ", \"end\": " + (b.end ? "true" : "false") + ", \"cut\": " + (b.cut ? "true" : "false") +
-             ", \"checksum\": " +
-             (b.checksum ? "{\"state\": " + json_string(std::string(tape::checksum_state_name(b.checksum->state))) +
-                               ", \"stored\": " + std::to_string(b.checksum->stored) +
-                               ", \"computed\": " + std::to_string(b.checksum->computed) + "}"
-                         : std::string("null")) +
-             "}";
+    Json blocks = Json::array();
+    for (const auto& b : t.blocks) {
+        Json checksum = nullptr;
+        if (b.checksum)
+            checksum = {{"state", tape::checksum_state_name(b.checksum->state)},
+                        {"stored", b.checksum->stored},
+                        {"computed", b.checksum->computed}};
+        blocks.push_back({{"format", tape::binary_format_id(b.format)},
+                          {"first_frame", b.first + 1},
+                          {"frames", b.frames},
+                          {"origin", b.origin},
+                          {"words", b.words},
+                          {"end", b.end},
+                          {"cut", b.cut},
+                          {"checksum", checksum}});
     }
-    return s + "]}";
+    Json json = {
+        {"format", t.format ? Json(tape::binary_format_id(*t.format)) : Json(nullptr)},
+        {"summary", t.summary()},
+        {"block_count", t.block_count},
+        {"checksums", {{"hold", t.checksums_held}, {"fail", t.checksums_failed}, {"missing", t.checksums_missing}}},
+        {"start", t.start ? Json(*t.start) : Json(nullptr)},
+        {"stray_frames", t.stray_frames},
+        {"blocks", blocks}};
+    return json_text(json);
 }
 
 }  // namespace cli
