@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "device/adapter_session.hpp"
@@ -14,6 +17,7 @@
 #include "process_util.hpp"
 #include "tape/adapter.hpp"
 #include "tape/device.hpp"
+#include "tape/encode.hpp"
 #include "tape/error.hpp"
 #include "test_util.hpp"
 
@@ -302,6 +306,107 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
                   std::vector<std::uint8_t>(tape.begin(), tape.begin() + static_cast<long>(got.size())));
         expect_clean(a);
     }
+}
+
+// tape emulate through the backend, a real process: the control reads the program, stops at its end
+// (M30), and reads it again from its '%' stop; its random stops see at most one frame more.
+TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsPercentStop) {
+    TempDir dir;
+    auto frames = tape::encode("%\nN1 G01 X10 F100\nN2 X20 Y-5\nN3 G00 Z50\nN4 M30\n", {});
+    std::ofstream(dir.file("p.ptp"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+    auto first = std::find_if(frames.begin(), frames.end(), [](tape::Frame f) { return f != tape::blank_frame; });
+    // Up to the line feed ending the M30 block, the fifth of the program (even parity: LF is 0x0A).
+    auto past_m30 = std::find(first, frames.end(), tape::Frame{0x0A});
+    for (int lf = 0; lf < 4; ++lf) past_m30 = std::find(past_m30 + 1, frames.end(), tape::Frame{0x0A});
+    std::vector<std::uint8_t> program(first, past_m30 + 1);
+    auto o = options();
+    o.sim.control = tapesim::ControlOptions{.stops = 4, .pause_min_us = 2000, .pause_max_us = 4000};
+    fake::Adapter a(o);
+    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
+    struct Unset {
+        ~Unset() { ::unsetenv("LD_PRELOAD"); }
+    } unset;
+    Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
+    auto end = std::chrono::steady_clock::now() + 30s;
+    while (a.control_taken().size() < 2 * program.size() && std::chrono::steady_clock::now() < end)
+        std::this_thread::sleep_for(20ms);
+    emulate.interrupt();
+    EXPECT_EQ(emulate.wait(20s), 0) << emulate.err();
+    auto taken = a.control_taken();
+    ASSERT_GE(taken.size(), 2 * program.size()) << emulate.err();
+    EXPECT_EQ(std::vector<std::uint8_t>(taken.begin(), taken.begin() + static_cast<long>(program.size())), program);
+    EXPECT_EQ(std::vector<std::uint8_t>(taken.begin() + static_cast<long>(program.size()),
+                                        taken.begin() + static_cast<long>(2 * program.size())),
+              program);
+    EXPECT_NE(emulate.err().find("end of program"), std::string::npos) << emulate.err();
+    EXPECT_NE(emulate.err().find("rewound to the '%' stop"), std::string::npos) << emulate.err();
+    auto stats = nlohmann::json::parse(a.control_stats());
+    for (unsigned after : stats["frames_after_stop"]) EXPECT_LE(after, 1u);
+    expect_clean(a);
+}
+
+// The control's own lines: its direction line reads backwards from where the tape stands, its rewind
+// line rewinds to the '%' stop.
+TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
+    TempDir dir;
+    auto frames = tape::encode("%\nN1 G01 X10 F100\nN2 X20 Y-5\nN3 G00 Z50\nN4 X0\nN5 Y0\n", {});
+    std::ofstream(dir.file("p.ptp"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+    std::vector<std::uint8_t> program(
+        std::find_if(frames.begin(), frames.end(), [](tape::Frame f) { return f != tape::blank_frame; }), frames.end());
+    auto o = options();
+    o.sim.control = tapesim::ControlOptions{.rewind_after = 70, .reverse_after = 40, .reverse_frames = 10};
+    fake::Adapter a(o);
+    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
+    struct Unset {
+        ~Unset() { ::unsetenv("LD_PRELOAD"); }
+    } unset;
+    Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
+    auto end = std::chrono::steady_clock::now() + 30s;
+    while (a.control_taken().size() < 100 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(20ms);
+    emulate.interrupt();
+    EXPECT_EQ(emulate.wait(20s), 0) << emulate.err();
+    auto taken = a.control_taken();
+    ASSERT_GE(taken.size(), 100u) << emulate.err();
+    // Each stop lets one frame more through (the braking distance): 40 forwards and one, 10 backwards
+    // and one (frames 40 down to 30), forwards again from frame 30 until 70 are taken and one, then
+    // from the '%' stop.
+    std::vector<std::uint8_t> expected(program.begin(), program.begin() + 41);
+    for (int i = 40; i >= 30; --i) expected.push_back(program[static_cast<std::size_t>(i)]);
+    expected.insert(expected.end(), program.begin() + 30, program.begin() + 49);
+    expected.insert(expected.end(), program.begin(), program.begin() + 29);
+    EXPECT_EQ(std::vector<std::uint8_t>(taken.begin(), taken.begin() + 100), expected);
+    EXPECT_NE(emulate.err().find("reading backwards"), std::string::npos) << emulate.err();
+    EXPECT_NE(emulate.err().find("the control's rewind line"), std::string::npos) << emulate.err();
+    expect_clean(a);
+}
+
+// A host gone while emulating: the adapter's watchdog stops the frames, and the next host hears of it.
+TEST_P(AdapterBackend, AnEmulationTheWatchdogEndedIsToldToTheNextHost) {
+    auto o = options();
+    o.sim.control = tapesim::ControlOptions{};
+    fake::Adapter a(o);
+    std::vector<std::uint8_t> frames(5000, 0x55);
+    {
+        tape::adapter::Session s(tape::adapter::open_pipe(a.device()));
+        s.start_emulation();
+        auto end = std::chrono::steady_clock::now() + 10s;
+        while (s.taken().taken < 100 && std::chrono::steady_clock::now() < end) {
+            s.offer(s.taken().taken, {frames.data(), frames.size() - s.taken().taken});
+            s.pump_emulation(10ms);
+        }
+        ASSERT_GE(s.taken().taken, 100u);
+        // Silent now for longer than the watchdog (500 ms on the adapter's clock, 20 times real time).
+        std::this_thread::sleep_for(1500ms);
+    }
+    std::size_t taken = a.control_taken().size();
+    tape::adapter::Session next(tape::adapter::open_pipe(a.device()));
+    ASSERT_TRUE(next.orphaned());
+    EXPECT_TRUE(next.orphaned()->bits & tapefw::status::watchdog);
+    EXPECT_EQ(next.orphaned()->frame, taken);
+    EXPECT_LT(taken, frames.size());
+    expect_clean(a);
 }
 
 // Two adapters at once, one on its vendor interface and one on HID: tape devices (a real process) finds

@@ -577,3 +577,44 @@ TEST(AdapterCdc, RowsTheReaderFlagsAreNamedAsDoubtful) {
         EXPECT_EQ(tape.err().find("not shown"), std::string::npos) << tape.err();
     }
 }
+
+TEST(AdapterCdc, CtrlCOnAPunchRunEndsItAsStoppedAndStopsThePunchNow) {
+    // The host stops answering the adapter once the user stops it; whatever the adapter says after (its
+    // watchdog), the run ends as stopped (130), and the punch stops then, not when its queue has run out.
+    TempDir dir;
+    std::vector<std::uint8_t> frames;
+    std::string in = write_tape(dir, 3000, &frames);
+    for (int sig : {SIGINT, SIGHUP}) {
+        SIM_OR_SKIP(sim, dir, {"--punch", dir.file("punched.ptp"), "--stats"});
+        Process tape({"punch", in, sim.device}, dir);
+        auto end = std::chrono::steady_clock::now() + 10s;
+        while (read_text(dir.file("punched.ptp")).size() < 100 && std::chrono::steady_clock::now() < end)
+            std::this_thread::sleep_for(10ms);
+        std::size_t at_stop = read_text(dir.file("punched.ptp")).size();
+        tape.signal(sig);
+        EXPECT_EQ(tape.wait(20s), 130) << "signal " << sig << ": " << tape.err();
+        EXPECT_NE(tape.err().find("stopped after "), std::string::npos) << tape.err();
+        EXPECT_EQ(tape.err().find("watchdog"), std::string::npos) << tape.err();
+        // A punch left running would punch its whole queue (256 rows at 150 a second) after the stop.
+        std::this_thread::sleep_for(1s);
+        EXPECT_LT(read_text(dir.file("punched.ptp")).size(), at_stop + 120) << "the punch went on after the stop";
+    }
+}
+
+TEST(AdapterCdc, AnAdapterWithoutAReaderOrAPunchIsRefusedBeforeAnOutputIsCreated) {
+    TempDir dir;
+    std::string in = write_tape(dir, 100);
+    {
+        SIM_OR_SKIP(sim, dir, {"--no-reader"});
+        Process tape({"read", sim.device, "-o", dir.file("out.ptp")}, dir);
+        EXPECT_EQ(tape.wait(20s), 3) << tape.err();
+        EXPECT_NE(tape.err().find("this adapter has no reader"), std::string::npos) << tape.err();
+        EXPECT_FALSE(std::filesystem::exists(dir.file("out.ptp")));
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--no-punch"});
+        Process tape({"punch", in, sim.device}, dir);
+        EXPECT_EQ(tape.wait(20s), 3) << tape.err();
+        EXPECT_NE(tape.err().find("this adapter has no punch"), std::string::npos) << tape.err();
+    }
+}

@@ -8,8 +8,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <thread>
 
+#include "device/adapter_session.hpp"
 #include "process_util.hpp"
 #include "pty_util.hpp"
 #include "tape/encode.hpp"
@@ -195,8 +197,8 @@ TEST(CliEmulate, RtsCtsOnALineWithoutModemLinesIsRefused) {
 }
 
 // The generic reader's normal end is the user stopping it: Ctrl-C or SIGTERM, exit 0, every frame kept.
-TEST(CliRead, InterruptedKeepsEveryFrameAndExitsZero) {
-    for (int sig : {SIGINT, SIGTERM}) {
+TEST(CliRead, InterruptedOrHungUpKeepsEveryFrameAndExitsZero) {
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
         TempDir dir;
         PTY_OR_SKIP(pty);
         Process tape({"read", pty.device("baud=9600&flow=none"), "-o", dir.file("in.ptp"), "--timeout", "0"}, dir);
@@ -328,4 +330,105 @@ TEST(CliEmulate, MarkParityTapeRewindsAtItsProgramEnd) {
     emulate.interrupt();
     EXPECT_EQ(emulate.wait(), 0) << emulate.err();
     EXPECT_NE(emulate.err().find("frame 11: rewound to the '%' stop"), std::string::npos) << emulate.err();
+}
+
+TEST(CliDevices, ALineOnARegularFileOrAFifoIsRefusedAndNothingWrittenIntoIt) {
+    TempDir dir;
+    std::string file = dir.file("image.ptp");
+    std::filesystem::copy_file(sample_path("circle-examples.iso.ptp"), file);
+    std::string before = read_text(file);
+    std::string fifo = dir.file("fifo");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const auto& path : {file, fifo}) {
+        for (const auto& device : {"adapter:" + path, "serial:" + path}) {
+            Process tape({"read", device, "-o", dir.file("out.ptp")}, dir);
+            EXPECT_EQ(tape.wait(), 2) << device << ": " << tape.err();
+            EXPECT_NE(tape.err().find("is no serial port or pseudo-terminal"), std::string::npos) << tape.err();
+            EXPECT_FALSE(std::filesystem::exists(dir.file("out.ptp"))) << device;
+        }
+        Process punch({"punch", sample_path("circle-examples.iso.ptp"), "adapter:" + path}, dir);
+        EXPECT_EQ(punch.wait(), 2) << punch.err();
+    }
+    EXPECT_EQ(read_text(file), before);
+}
+
+namespace {
+
+// A sysfs laid out as the kernel does for one USB serial port, with the USB device's attributes as given.
+std::filesystem::path fake_sysfs(const TempDir& dir,
+                                 const std::function<void(const std::filesystem::path&)>& usb_files) {
+    namespace fs = std::filesystem;
+    fs::path sys = dir.file("sys");
+    fs::path usb = sys / "devices/pci0/usb1/1-1", tty = usb / "1-1:1.0/tty/ttyUSB0";
+    fs::create_directories(tty);
+    fs::create_directories(sys / "class/tty");
+    std::ofstream(usb / "idVendor") << "0403\n";
+    std::ofstream(usb / "idProduct") << "6001\n";
+    usb_files(usb);
+    fs::create_directory_symlink("../../../1-1:1.0", tty / "device");
+    fs::create_directory_symlink(tty, sys / "class/tty/ttyUSB0");
+    return sys;
+}
+
+std::string devices_under(const std::filesystem::path& sys, const TempDir& dir, int& status) {
+    ::setenv("TAPE_SYSFS_ROOT", sys.c_str(), 1);
+    Process tape({"devices"}, dir);
+    ::unsetenv("TAPE_SYSFS_ROOT");
+    status = tape.wait(5s);
+    return read_text(dir.file("stdout"));
+}
+
+}  // namespace
+
+TEST(CliDevices, AFifoOrAnEndlessFileAmongTheSysfsAttributesNeitherBlocksNorGrows) {
+    TempDir dir;
+    auto sys = fake_sysfs(dir, [](const std::filesystem::path& usb) {
+        ASSERT_EQ(::mkfifo((usb / "serial").c_str(), 0600), 0);
+        std::filesystem::create_symlink("/dev/zero", usb / "manufacturer");
+        std::filesystem::create_symlink("/dev/urandom", usb / "product");
+    });
+    int status = -1;
+    std::string out = devices_under(sys, dir, status);
+    EXPECT_EQ(status, 0) << "within 5 s";
+    EXPECT_NE(out.find("0403:6001"), std::string::npos) << out;
+}
+
+TEST(CliDevices, UsbStringsAreShownWithTerminalEscapesSpelledOutAndSerialsQuotedInDeviceStrings) {
+    TempDir dir;
+    auto sys = fake_sysfs(dir, [](const std::filesystem::path& usb) {
+        std::ofstream(usb / "serial") << "A&B?\x1b[2J\n";
+        std::ofstream(usb / "manufacturer") << "Evil\x1b]0;owned\x07 Corp\n";
+    });
+    int status = -1;
+    std::string out = devices_under(sys, dir, status);
+    EXPECT_EQ(status, 0);
+    EXPECT_EQ(out.find('\x1b'), std::string::npos) << out;
+    EXPECT_EQ(out.find('\x07'), std::string::npos) << out;
+    EXPECT_NE(out.find("serial A&B?\\x1B[2J"), std::string::npos) << out;
+    EXPECT_NE(out.find("Evil\\x1B]0;owned\\x07 Corp"), std::string::npos) << out;
+    // An adapter's serial goes into its device string quoted: it selects that adapter and no other.
+    EXPECT_EQ(tape::adapter::device_string("usb", {0x1209, 0x0001}, "A&serial=B?x"),
+              "usb:1209:0001?serial=A%26serial%3DB%3Fx");
+}
+
+TEST(CliFeed, AnImageIsSentAsItIsReadNotOnceItIsWhole) {
+    TempDir dir;
+    PTY_OR_SKIP(pty);
+    std::string fifo = dir.file("tape.ptp");
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    Process tape({"feed", fifo, pty.device("baud=115200&flow=none"), "--input", "image"}, dir);
+    auto frames = image_frames(sample_path("16k20f3s5-turning.iso.ptp"));
+    std::ofstream in(fifo, std::ios::binary);
+    in.write(reinterpret_cast<const char*>(frames.data()), 200);
+    in.flush();
+    // The first frames reach the line while the rest of the tape has not been written yet.
+    std::vector<std::uint8_t> got;
+    pty.receive_until_size(got, 100, 3000ms);
+    EXPECT_GE(got.size(), 100u);
+    EXPECT_TRUE(std::equal(got.begin(), got.end(), frames.begin()));
+    in.write(reinterpret_cast<const char*>(frames.data()) + 200, static_cast<std::streamsize>(frames.size() - 200));
+    in.close();
+    pty.receive_until_size(got, frames.size(), 5000ms);
+    EXPECT_EQ(tape.wait(), 0) << tape.err();
+    EXPECT_EQ(got, frames);
 }

@@ -16,6 +16,7 @@ bool elapsed(std::uint32_t now, std::uint32_t since, std::uint32_t us) { return 
 Engine::Engine(Hardware& hw, const Identity& id, Framing framing, const Config& defaults)
     : hw_(hw), id_(id), framing_(framing), config_(defaults) {
     hw_.configure(config_);
+    hw_.configure_emulation(wiring_);
     hw_.drive(Drive::stop);
     last_status_ = static_cast<std::uint16_t>(hw_.status_lines() & line_faults);
 }
@@ -67,13 +68,15 @@ void Engine::poll() {
     std::uint32_t now = hw_.now_us();
     std::uint16_t lines = static_cast<std::uint16_t>(hw_.status_lines() & line_faults);
 
-    if (config_.watchdog_ms && host_seen_ && (reading_ || punch_queued() || feed_left_) &&
+    if (config_.watchdog_ms && host_seen_ && busy() &&
         elapsed(now, last_host_us_, static_cast<std::uint32_t>(config_.watchdog_ms) * 1000)) {
-        bool was_reading = reading_;
+        std::uint32_t frame = reading_ ? head_ : emulating_ ? emu_taken_ : punched_;
         stop_all();
         send_rows(true);
-        send_status(status::watchdog, was_reading ? head_ : punched_);
+        send_status(status::watchdog, frame);
+        orphan_ = last_event_;
     }
+    if (emulating_) report_taken(now);
     if (reading_) watch_reading(now, lines);
     if (punch_queued() || feed_left_) drive_punch(lines);
     if (punched_ != credited_punched_ &&
@@ -153,6 +156,14 @@ void Engine::handle(const Packet& p) {
             return resend(p);
         case Msg::reset:
             return reset(p);
+        case Msg::wiring:
+            return set_wiring(p);
+        case Msg::emulate:
+            return start_emulation(p);
+        case Msg::frames:
+            return queue_frames(p);
+        case Msg::discard:
+            return discard_frames(p);
         case Msg::echo: {
             Packet out = p;
             out.type = static_cast<std::uint8_t>(Msg::echo_reply);
@@ -180,7 +191,7 @@ void Engine::send_info(const Packet& request) {
 }
 
 void Engine::configure(const Packet& p) {
-    if (reading_ || punch_queued() || feed_left_) return reply_error(p, ErrorCode::busy, 0);
+    if (busy()) return reply_error(p, ErrorCode::busy, 0);
     Config c;
     if (!c.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
     config_ = c;
@@ -190,7 +201,7 @@ void Engine::configure(const Packet& p) {
 
 void Engine::start_reading(const Packet& p) {
     if (!(id_.capabilities & caps::reader)) return reply_error(p, ErrorCode::no_reader, 0);
-    if (reading_) return reply_error(p, ErrorCode::busy, head_);
+    if (busy()) return reply_error(p, ErrorCode::busy, reading_ ? head_ : 0);
     ReadStart r;
     if (!r.decode(p) || (r.reverse && !(id_.capabilities & caps::reverse)))
         return reply_error(p, ErrorCode::bad_payload, 0);
@@ -210,6 +221,7 @@ void Engine::start_reading(const Packet& p) {
 
 void Engine::queue_punch(const Packet& p) {
     if (!(id_.capabilities & caps::punch)) return reply_error(p, ErrorCode::no_punch, 0);
+    if (emulating_) return reply_error(p, ErrorCode::busy, 0);
     Punch r;
     if (!r.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
     if (r.first > punch_next_) return reply_error(p, ErrorCode::out_of_order, punch_next_);
@@ -221,6 +233,7 @@ void Engine::queue_punch(const Packet& p) {
 
 void Engine::queue_feed(const Packet& p) {
     if (!(id_.capabilities & caps::punch)) return reply_error(p, ErrorCode::no_punch, 0);
+    if (emulating_) return reply_error(p, ErrorCode::busy, 0);
     Feed f;
     if (!f.decode(p)) return reply_error(p, ErrorCode::bad_payload, 0);
     feed_left_ += f.count;
@@ -251,6 +264,9 @@ void Engine::reset(const Packet& p) {
     overrun_ = false;
     last_event_ = Status{};
     reply_ok(p);
+    // A host that was gone when the watchdog stopped its run hears of it now.
+    if (orphan_.bits) send_packet_status(orphan_);
+    orphan_ = Status{};
 }
 
 bool Engine::send_packet(const Packet& p) {
@@ -357,6 +373,7 @@ void Engine::end_read(std::uint16_t event_bits) {
 }
 
 void Engine::stop_all() {
+    emulating_ = false;
     reading_ = false;
     set_drive(false);
     punch_tail_ = punch_next_;
@@ -367,6 +384,7 @@ std::uint16_t Engine::status_bits() {
     std::uint16_t bits = static_cast<std::uint16_t>(hw_.status_lines() & line_faults);
     if (reading_) bits |= status::reading;
     if (punch_queued() || feed_left_) bits |= status::punching;
+    if (emulating_) bits |= status::emulating;
     return bits;
 }
 

@@ -6,8 +6,12 @@
 // bad or lost packet can send them again. When the ring is nearly full the reader is stopped (a
 // start-stop reader stops within a frame or two), and started again when the host has caught up.
 // Punching: PUNCH rows are queued and answered by CREDIT (the next row expected and the free space);
-// the queue drains one row per punch cycle. A watchdog stops the reader and the punch when the host
-// has been silent for Config::watchdog_ms.
+// the queue drains one row per punch cycle. Emulating (standing in for a reader toward a control):
+// FRAMES are queued by credit as for the punch, and the board's frame clock takes them one a slot
+// (next_frame) while the control's start line is on; its stop is obeyed here, within Wiring::braking
+// frames, and every frame taken is counted and reported (TAKEN). A watchdog stops the reader, the punch
+// and the emulated reader when the host has been silent for Config::watchdog_ms, and says so again
+// after the next RESET (the host that was gone hears it when it comes back).
 #pragma once
 
 #include <cstddef>
@@ -41,6 +45,9 @@ public:
     static constexpr std::size_t stop_margin = 128;           ///< free rows left when the reader is stopped
     static constexpr std::uint32_t rows_flush_us = 10000;     ///< a partial ROWS packet waits at most this
     static constexpr std::uint32_t credit_every_us = 100000;  ///< CREDIT while the punch drains
+    static constexpr std::size_t emulate_ring = 1024;         ///< frames queued for the control (a power of two)
+    static constexpr std::uint32_t taken_every_us = 20000;    ///< TAKEN while the control takes frames
+    static constexpr std::uint32_t taken_idle_us = 100000;    ///< TAKEN while nothing changes (a heartbeat)
 
     /// defaults: the line settings until the host sends a CONFIG (a board may keep its unit's in flash).
     Engine(Hardware& hw, const Identity& id, Framing framing = Framing::stream, const Config& defaults = {});
@@ -51,6 +58,10 @@ public:
     void on_row(std::uint8_t lines, std::uint8_t flags = 0);
     /// The main loop's turn: sends what is due, drives the punch, watches time-outs.
     void poll();
+    /// The control's drive lines changed (drive_bit bits), from the board's edge interrupt.
+    void on_drive(std::uint8_t lines);
+    /// A frame slot of the emulate role, from the board's frame clock: the data-line levels to strobe.
+    Slot next_frame(std::uint8_t& levels);
 
     const Config& config() const { return config_; }
     bool reading() const { return reading_; }
@@ -58,6 +69,9 @@ public:
     std::uint32_t rows_punched() const { return punched_; }
     /// Packets that failed their CRC or framing.
     std::uint32_t bad_packets() const { return bad_packets_; }
+    bool emulating() const { return emulating_; }
+    std::uint32_t frames_taken() const { return emu_taken_; }
+    const Wiring& wiring() const { return wiring_; }
 
 private:
     Hardware& hw_;
@@ -92,6 +106,23 @@ private:
     std::uint32_t feed_left_ = 0;
     std::uint32_t last_credit_us_ = 0, credited_punched_ = 0;
 
+    // Emulating. Frames emu_taken_..emu_next_-1 are queued; the frame clock takes from emu_taken_.
+    Wiring wiring_{};
+    std::uint8_t emu_frames_[emulate_ring] = {};
+    volatile std::uint32_t emu_taken_ = 0;
+    std::uint32_t emu_next_ = 0;
+    bool emulating_ = false;
+    volatile std::uint8_t drive_in_ = 0;      ///< the control's lines, drive_bit bits
+    volatile std::uint8_t braking_left_ = 0;  ///< frames still allowed after the control's stop
+    volatile std::uint8_t turn_ = 0;          ///< the control's turns (direction, rewind): the queue dropped
+    volatile std::uint16_t stops_ = 0;
+    volatile std::uint8_t rewinds_ = 0;
+    volatile std::uint32_t started_at_ = 0;  ///< frames taken at the control's last start
+    volatile bool until_start_ = false;      ///< frames wait for the control's next start (DISCARD)
+    Taken reported_{};                       ///< the last TAKEN sent
+    std::uint32_t last_taken_us_ = 0;
+    Status orphan_{};  ///< a run the watchdog ended, told again after the next RESET
+
     static constexpr std::size_t outbox_size = 4;
     Packet outbox_[outbox_size] = {};
     std::size_t outbox_n_ = 0;
@@ -111,6 +142,14 @@ private:
     void take_ack(const Packet& p);
     void resend(const Packet& p);
     void reset(const Packet& p);
+    void set_wiring(const Packet& p);
+    void start_emulation(const Packet& p);
+    void queue_frames(const Packet& p);
+    void discard_frames(const Packet& p);
+    /// TAKEN when the control's lines or turn changed, frames were taken, or as a heartbeat.
+    void report_taken(std::uint32_t now);
+    bool send_taken(std::uint8_t seq);
+    bool busy() const { return reading_ || punch_queued() || feed_left_ || emulating_; }
     bool send_packet(const Packet& p);
     /// Replies and STATUS: sent now, or from the outbox as soon as the endpoint takes them.
     void post(const Packet& p);

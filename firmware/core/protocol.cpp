@@ -1,58 +1,12 @@
 #include "core/protocol.hpp"
 
+#include "core/payload.hpp"
+
 namespace tapefw {
-namespace {
 
-// Little-endian payload writing and reading with bounds: a short payload fails instead of reading past it.
-struct Writer {
-    Packet& p;
-    explicit Writer(Packet& packet, Msg type) : p(packet) {
-        p.type = static_cast<std::uint8_t>(type);
-        p.length = 0;
-    }
-    bool ok = true;
-    void u8(std::uint8_t v) {
-        if (p.length >= max_payload) {
-            ok = false;
-            return;
-        }
-        p.payload[p.length++] = v;
-    }
-    void u16(std::uint16_t v) {
-        u8(static_cast<std::uint8_t>(v));
-        u8(static_cast<std::uint8_t>(v >> 8));
-    }
-    void u32(std::uint32_t v) {
-        u16(static_cast<std::uint16_t>(v));
-        u16(static_cast<std::uint16_t>(v >> 16));
-    }
-};
-
-struct Reader {
-    const Packet& p;
-    std::size_t at = 0;
-    bool ok = true;
-    std::uint8_t u8() {
-        if (at >= p.length) {
-            ok = false;
-            return 0;
-        }
-        return p.payload[at++];
-    }
-    std::uint16_t u16() {
-        std::uint16_t lo = u8();
-        return static_cast<std::uint16_t>(lo | (u8() << 8));
-    }
-    std::uint32_t u32() {
-        std::uint32_t lo = u16();
-        return lo | (static_cast<std::uint32_t>(u16()) << 16);
-    }
-    bool done() const { return ok && at == p.length; }
-};
-
-bool is(const Packet& p, Msg type) { return p.type == static_cast<std::uint8_t>(type); }
-
-}  // namespace
+using payload::is;
+using payload::Reader;
+using payload::Writer;
 
 const char* error_name(ErrorCode code) {
     switch (code) {
@@ -76,6 +30,10 @@ const char* error_name(ErrorCode code) {
             return "buffer overrun";
         case ErrorCode::bad_packet:
             return "bad packet";
+        case ErrorCode::no_emulator:
+            return "no emulate role";
+        case ErrorCode::not_emulating:
+            return "not emulating";
     }
     return "unknown error";
 }

@@ -30,10 +30,15 @@ enum class Msg : std::uint8_t {
     resend = 0x08,      ///< FrameNumber: send the rows again from there (after a gap or a bad packet)
     reset = 0x09,       ///< -> ok; reader and punch stopped, counters and buffers cleared, config kept
     echo = 0x0A,        ///< any payload -> echo_reply with the same payload (link self-test)
+    wiring = 0x0B,      ///< Wiring: the emulate role's lines and timing -> ok
+    emulate = 0x0C,     ///< -> ok; the adapter stands in for a reader toward the control, frames from 0
+    frames = 0x0D,      ///< Frames for the control -> taken
+    discard = 0x0E,     ///< Discard: frames queued and not yet taken are dropped -> taken
     info = 0x81,        ///< Info
     ok = 0x82,          ///< Ok: the request (same seq) was done
     rows = 0x83,        ///< Rows
     credit = 0x84,      ///< Credit
+    taken = 0x87,       ///< Taken: what the control took, the queue's room and the control's drive lines
     status = 0x85,      ///< Status
     error = 0x86,       ///< ErrorReply (same seq as the request, or 0 for an event)
     echo_reply = 0x8A,  ///< the echo's payload
@@ -51,6 +56,8 @@ enum class ErrorCode : std::uint8_t {
     resend_gone = 7,      ///< a RESEND for rows already forgotten (frame: the oldest still held)
     overrun = 8,          ///< rows arrived with the buffer full: rows lost (frame: the first lost)
     bad_packet = 9,       ///< a packet failed its CRC or framing (sent once per bad packet)
+    no_emulator = 10,     ///< the emulate role asked of an adapter without it
+    not_emulating = 11,   ///< FRAMES or DISCARD outside an EMULATE session (frame: frames taken before it ended)
 };
 const char* error_name(ErrorCode code);
 
@@ -67,6 +74,7 @@ inline constexpr std::uint16_t reading = 1 << 7;          ///< the reader is dri
 inline constexpr std::uint16_t punching = 1 << 8;         ///< the punch has rows to punch
 inline constexpr std::uint16_t read_done = 1 << 9;        ///< event: max_rows read, the reader stopped
 inline constexpr std::uint16_t punch_tape_out = 1 << 10;  ///< the punch's supply roll ran out
+inline constexpr std::uint16_t emulating = 1 << 11;       ///< the adapter stands in for a reader (EMULATE)
 /// The bits that stop a run.
 inline constexpr std::uint16_t faults = tape_out | torn | chad_full | motor_fault | offline | watchdog | punch_tape_out;
 }  // namespace status
@@ -77,6 +85,7 @@ inline constexpr std::uint8_t reader = 1 << 0;
 inline constexpr std::uint8_t punch = 1 << 1;
 inline constexpr std::uint8_t reverse = 1 << 2;    ///< the reader can read backwards
 inline constexpr std::uint8_t row_flags = 1 << 3;  ///< rows carry timing and level flags
+inline constexpr std::uint8_t emulate = 1 << 4;    ///< stands in for a reader toward a control (EMULATE)
 }  // namespace caps
 
 /// Per-row flags in Rows.
@@ -96,6 +105,22 @@ inline constexpr std::uint8_t status_low = 1 << 4;        ///< tape-out and faul
 inline constexpr std::uint8_t punch_ready_low = 1 << 5;   ///< the punch's ready (sync) input is active low
 inline constexpr std::uint8_t punch_magnet_low = 1 << 6;  ///< the punch magnets are driven by a low level
 }  // namespace line_bit
+
+/// The control's drive lines toward the reader the adapter stands in for, as Taken::drive carries them
+/// and Engine::on_drive takes them (the board has applied their polarity).
+namespace drive_bit {
+inline constexpr std::uint8_t run = 1 << 0;      ///< start: the control wants frames (clear: stop)
+inline constexpr std::uint8_t reverse = 1 << 1;  ///< the control reads backwards
+inline constexpr std::uint8_t rewind = 1 << 2;   ///< the control asks for the tape rewound
+}  // namespace drive_bit
+
+/// Bits of Wiring::lines: the polarity of the emulate role's lines.
+namespace wiring_bit {
+inline constexpr std::uint8_t strobe_low = 1 << 0;   ///< the sprocket strobe toward the control is active low
+inline constexpr std::uint8_t run_low = 1 << 1;      ///< the control's start/stop line is active low
+inline constexpr std::uint8_t reverse_low = 1 << 2;  ///< its direction line is active low
+inline constexpr std::uint8_t rewind_low = 1 << 3;   ///< its rewind line is active low
+}  // namespace wiring_bit
 
 struct Info {
     std::uint8_t protocol = protocol_version;
@@ -128,6 +153,68 @@ struct ReadStart {
     std::uint8_t reverse = 0;    ///< 1: read backwards
     std::uint16_t rate = 0;      ///< frames per second the host wants at most (0: the reader's speed)
     std::uint32_t max_rows = 0;  ///< stop after this many rows (0: until the tape ends)
+    bool encode(Packet& p) const;
+    bool decode(const Packet& p);
+};
+
+/// The emulate role's wiring and timing (WIRING). Pins are the board's own numbers (GPIO n); no_pin for
+/// a line the control does not have. A frame slot: data set, setup_us later the strobe for strobe_us,
+/// the data held hold_us after it; slots follow at rate frames per second.
+struct Wiring {
+    static constexpr std::uint8_t no_pin = 0xFF;
+    static constexpr std::uint8_t max_pin = 63;
+    static constexpr std::uint8_t max_braking = 2;
+    std::uint8_t data_pins[8] = {0, 1, 2, 3, 4, 5, 6, 7};  ///< track 1..8 (tracks past Wiring::tracks unused)
+    std::uint8_t strobe_pin = 8;
+    std::uint8_t run_pin = 9;
+    std::uint8_t reverse_pin = no_pin;
+    std::uint8_t rewind_pin = no_pin;
+    std::uint8_t data_invert = 0;  ///< bit n: data line n is driven low for a hole
+    std::uint8_t lines = 0;        ///< wiring_bit bits
+    std::uint8_t tracks = 8;       ///< 5..8
+    std::uint8_t braking = 1;      ///< frames the control may still see after its stop, 0..2 (a ФС-1501: 1)
+    std::uint16_t rate = 1500;     ///< frames per second, 1..4000
+    std::uint16_t strobe_us = 100;
+    std::uint16_t setup_us = 50;          ///< data on the lines before the strobe
+    std::uint16_t hold_us = 50;           ///< data kept after the strobe
+    std::uint16_t start_delay_us = 1000;  ///< from the control's start to the first frame slot
+    bool encode(Packet& p) const;
+    bool decode(const Packet& p);
+    /// Why these settings cannot work ("setup, strobe and hold take longer than a frame"), or nullptr.
+    const char* problem() const;
+    std::uint32_t period_us() const { return 1000000u / rate; }
+};
+
+/// Frames for the control, numbered from 0 since EMULATE; a repeated frame (a resend) is taken once.
+struct Frames {
+    static constexpr std::size_t max_frames = max_payload - 5;
+    std::uint32_t first = 0;
+    std::uint8_t turn = 0;  ///< the Taken::turn the host had seen: frames for an older turn are dropped
+    std::uint8_t count = 0;
+    std::uint8_t frames[max_frames] = {};
+    bool encode(Packet& p) const;
+    bool decode(const Packet& p);
+};
+
+/// DISCARD: frames queued from `from` on and not yet taken are dropped (the host rewound or searched).
+/// With until_start, the frames queued after it wait for the control's next start, unless it started
+/// again after taking frame from-1 (a program's end: the control stops there and is started again).
+struct Discard {
+    std::uint32_t from = 0;
+    std::uint8_t until_start = 0;
+    bool encode(Packet& p) const;
+    bool decode(const Packet& p);
+};
+
+/// TAKEN: every frame before `taken` the control has taken (strobed), in order, once.
+struct Taken {
+    std::uint32_t next = 0;    ///< the next frame the adapter expects (all before it are queued or taken)
+    std::uint32_t taken = 0;   ///< frames the control took
+    std::uint16_t free = 0;    ///< frames the queue can still take
+    std::uint8_t drive = 0;    ///< drive_bit bits: the control's lines now
+    std::uint8_t turn = 0;     ///< counts the control's turns (direction or rewind changed): queue dropped
+    std::uint16_t stops = 0;   ///< the control's stops so far (wraps)
+    std::uint8_t rewinds = 0;  ///< the control's rewinds so far (its rewind line set; wraps)
     bool encode(Packet& p) const;
     bool decode(const Packet& p);
 };

@@ -15,6 +15,10 @@ struct Probe final : tapefw::Hardware {
     void punch(std::uint8_t row) override { reg[4] = row; }
     std::uint16_t status_lines() override { return static_cast<std::uint16_t>(reg[5]); }
     void configure(const tapefw::Config& c) override { reg[6] = c.lines; }
+    void configure_emulation(const tapefw::Wiring& w) override { reg[9] = w.period_us(); }
+    std::uint8_t drive_inputs() override { return static_cast<std::uint8_t>(reg[10]); }
+    void frame_clock(std::uint32_t first_in_us) override { reg[11] = first_in_us; }
+    void critical(bool masked) override { reg[12] = masked; }
 };
 Probe probe;
 tapefw::Engine engine(probe, tapefw::Identity{});
@@ -24,6 +28,9 @@ int main() {
         std::uint8_t b = static_cast<std::uint8_t>(probe.reg[7]);
         engine.receive(&b, 1);
         engine.on_row(static_cast<std::uint8_t>(probe.reg[8]));
+        engine.on_drive(static_cast<std::uint8_t>(probe.reg[13]));
+        std::uint8_t levels = 0;
+        if (engine.next_frame(levels) == tapefw::Slot::frame) probe.reg[14] = levels;
         engine.poll();
     }
 }

@@ -4,9 +4,13 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "tape/dnc.hpp"
 
 namespace tape {
 
@@ -16,6 +20,7 @@ struct AdapterInfo {
     std::string firmware;  ///< "1.2.3"
     std::string serial;
     bool reader = false, punch = false, reverse = false, row_flags = false;
+    bool emulate = false;                            ///< stands in for a tape reader toward a control (tape emulate)
     std::vector<int> tracks;                         ///< tape widths it handles, from 5 to 8
     unsigned max_read_rate = 0, max_punch_rate = 0;  ///< frames per second
     unsigned read_buffer = 0, punch_buffer = 0;      ///< rows
@@ -89,5 +94,48 @@ struct AttachedPort {
 /// interfaces (bus/usb/devices, class ff) and HID interfaces (class/hidraw). An adapter offering several
 /// interfaces is listed once for each. Adapters first, by serial, then the other ports, by device.
 std::vector<AttachedPort> attached_ports(const std::string& sysfs_root = "/sys", const std::string& dev_root = "/dev");
+
+}  // namespace tape
+
+namespace tape {
+
+/// True for a device string of a USB tape adapter backend (adapter:, usb:, hid:).
+bool is_adapter_device(std::string_view device);
+
+/// tape emulate through a USB tape adapter wired to a control's tape-reader input (the emulate role):
+/// the adapter strobes the frames toward the control while its start line is on and obeys its stop
+/// itself; this side keeps the adapter's queue full and follows, by the frame counter, every frame the
+/// control took. At the end of a program (the block with M02/M30) the tape is rewound to its '%' stop,
+/// given again once the control has stopped; a control's rewind line rewinds there too, its direction
+/// line reads backwards from where the tape stands. Runs until options.stop is set; progress is called
+/// a few times a second. options.rate, flow, start, stop_code, search and rewind are the serial line's
+/// and not used: the frame rate is the adapter's wiring (adapter_configure_emulation). Throws
+/// Error(Errc::usage) for a device string that names no adapter, Error(Errc::io) for an adapter without
+/// the role, gone, silent, or stopped by its watchdog (the host was silent).
+EmulatorResult adapter_emulate(std::string_view device, std::span<const Frame> tape, const EmulatorOptions& options,
+                               const std::function<void(const LineProgress&)>& progress = {});
+
+/// How an adapter is wired to a control's tape-reader input, and its timing (the WIRING message). The
+/// adapter keeps it over a reset, as the line settings. Pins are the board's own numbers (GPIO n).
+struct AdapterWiring {
+    std::vector<unsigned> data_pins{0, 1, 2, 3, 4, 5, 6, 7};  ///< track 1 first; as many as tracks
+    unsigned strobe_pin = 8;
+    unsigned run_pin = 9;                   ///< the control's start/stop line
+    std::optional<unsigned> reverse_pin{};  ///< its direction line, where the interface has one
+    std::optional<unsigned> rewind_pin{};   ///< its rewind line, where the interface has one
+    unsigned data_invert = 0;               ///< bit n: data line n is driven low for a hole
+    unsigned tracks = 8;                    ///< 5 to 8
+    bool strobe_low = false, run_low = false, reverse_low = false, rewind_low = false;
+    unsigned braking = 1;  ///< frames the control may still see after its stop, 0 to 2
+    unsigned rate = 1500;  ///< frames per second, 1 to 4000
+    unsigned strobe_us = 100, setup_us = 50, hold_us = 50;
+    unsigned start_delay_us = 1000;  ///< from the control's start to the first frame's slot
+};
+
+/// Why a wiring cannot work, or "" when it can.
+std::string adapter_wiring_problem(const AdapterWiring& wiring);
+
+/// Opens the adapter, resets it and sends the wiring, waiting for its OK. Throws as adapter_configure.
+void adapter_configure_emulation(std::string_view device, const AdapterWiring& wiring);
 
 }  // namespace tape

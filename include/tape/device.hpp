@@ -74,6 +74,9 @@ public:
     virtual FrameDoubts take_doubts() { return {}; }
     /// True when frames come last first: a tape adapter's reader reading backwards.
     virtual bool backwards() const { return false; }
+    /// The widest tape the device reads or punches: 8 tracks (any byte) for lines and most units, 5
+    /// for a 5-track one (a tape adapter set to tracks=5, a 5-track image file). An output must hold it.
+    virtual int tracks() const { return 8; }
 };
 
 /// What a backend is opened for.

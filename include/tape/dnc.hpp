@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tape/clock.hpp"
@@ -35,6 +36,28 @@ inline constexpr double min_frame_rate = 1.0 / 86400;
 /// The time between frames at rate frames per second (zero when that is below the clock's resolution).
 /// Throws Error(Errc::usage) unless rate is a finite number from min_frame_rate up.
 std::chrono::steady_clock::duration frame_period(double rate);
+
+/// Frames to send, a chunk at a time, so that a tape of any length is sent in bounded memory.
+class FrameSource {
+public:
+    virtual ~FrameSource() = default;
+    /// The next frames, valid until the next call; empty at the end. Throws Error for a bad input.
+    virtual std::span<const Frame> next() = 0;
+    /// The frames in all when known before they are read (for progress displays), else 0.
+    virtual std::uint64_t total() const { return 0; }
+};
+
+/// Frames already in memory, as a source of one chunk.
+class SpanSource : public FrameSource {
+public:
+    explicit SpanSource(std::span<const Frame> frames) : frames_(frames) {}
+    std::span<const Frame> next() override { return std::exchange(frames_, {}); }
+    std::uint64_t total() const override { return total_; }
+
+private:
+    std::span<const Frame> frames_;
+    std::uint64_t total_ = frames_.size();
+};
 
 struct SendOptions {
     double rate = 0;                           ///< frames per second; 0: the line's rate, or unpaced for files
@@ -63,7 +86,13 @@ struct SendResult {
 /// frame and resumed by DC1, with track 8 dropped on a 7-bit line (the UART adds the parity).
 /// Throws Error(Errc::io) naming the frame when the other side hangs up or no DC1 comes in time;
 /// Error(Errc::usage), before sending anything, for a rate frame_period refuses, RTS/CTS on a line
-/// without modem lines, the same character for XON and XOFF, or frames a 7-bit line cannot carry.
+/// without modem lines, or the same character for XON and XOFF; and before the chunk that holds it
+/// (the first chunk before anything is sent), for a frame a 7-bit line cannot carry. Once the stop
+/// flag is set the run ends as stopped, whatever the device says after it (a fault the stop itself
+/// caused, such as an adapter's watchdog, does not turn it into a failure); what is queued is not
+/// waited for.
+SendResult send_frames(Transport& line, FrameSource& frames, const SendOptions& options, Clock& clock = system_clock());
+/// The same for frames in memory.
 SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options,
                        Clock& clock = system_clock());
 

@@ -2,15 +2,19 @@
 // is, or a text program encoded as a tape.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "tape/dialect.hpp"
+#include "tape/dnc.hpp"
 #include "tape/encode.hpp"
 #include "tape/frame.hpp"
 #include "tape/input.hpp"
+#include "tape/limits.hpp"
 
 namespace tape {
 
@@ -27,9 +31,18 @@ struct FeedOptions {
     Dialect dialect = Dialect::automatic;
 };
 
-/// All frames to send for input (images by its frames, exactly as on the tape unless the leader or
-/// trailer is replaced; text programs encoded). chosen, when given, receives the dialect a text
-/// program was read in. Throws Error as Input and encode() do.
+/// The frames to send for input, a chunk at a time: an image's frames as they are read, exactly as on
+/// the tape unless the leader or trailer is replaced (only a run of blank frames is held back, to see
+/// whether it is the trailer), so a tape of any length is sent in bounded memory; a text program read
+/// whole (it is a program, not a tape: max_text_bytes at most) and encoded. chosen, when given, receives
+/// the dialect a text program was read in. input must outlive the source. Throws Error as Input and
+/// encode() do, and Error(Errc::bad_text) for a text longer than max_text_bytes.
+std::unique_ptr<FrameSource> feed_source(Input& input, const FeedOptions& options, DialectChoice* chosen = nullptr);
+
+/// The most text a program sent as text may have: as many characters as the longest tape has frames.
+inline constexpr std::uint64_t max_text_bytes = max_tape_frames;
+
+/// All frames of feed_source, in memory.
 std::vector<Frame> frames_to_send(Input& input, const FeedOptions& options, DialectChoice* chosen = nullptr);
 
 /// Fanuc's ';' outside comments is the end of block: dropped at the end of a line, a line break

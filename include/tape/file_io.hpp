@@ -8,25 +8,32 @@
 #include <string_view>
 #include <vector>
 
+#include "tape/error.hpp"
+
 namespace tape {
 
 struct ImageFormat;
 class FrameCode;
 
-/// The whole file, or standard input for "-". Throws Error(Errc::io) with the system's reason.
-std::vector<std::uint8_t> read_file(const std::string& path);
+/// The whole file, or standard input for "-". Throws Error(Errc::io) with the system's reason, and
+/// Error(too_big) for a file of more than max_bytes: a regular file before anything is read, anything
+/// else (a pipe, /dev/zero) once that much came.
+std::vector<std::uint8_t> read_file(const std::string& path, std::uint64_t max_bytes = UINT64_MAX,
+                                    Errc too_big = Errc::usage);
 
-/// Writes data to path atomically: a temporary file in the same folder, flushed to disk, then
-/// renamed over path, so a failure leaves no half file. Unless overwrite, an existing path is left
+/// Writes data to path atomically: an unnamed file in the same folder (O_TMPFILE, where the file system
+/// has it, else a named temporary), flushed to disk, then given its name, so a failure or a killed run
+/// leaves no half file. Unless overwrite, an existing path is left
 /// alone and Error(Errc::usage) is thrown. Throws Error(Errc::io) when the system refuses.
 /// With overwrite, a replaced file's permissions are kept; a symbolic link is followed and the file it
 /// names replaced; other hard links keep the old contents. A character device, FIFO, socket or
 /// /dev/stdout-style descriptor is written into directly, never replaced; a block device is refused.
 void write_file_atomic(const std::string& path, std::string_view data, bool overwrite);
 
-/// An output written as it comes, in bounded memory, and made final by commit(): a file is written to a
-/// temporary file beside it and renamed over path at commit (with the rules of write_file_atomic), so
-/// an output that is not committed (an error, an exception) leaves nothing under path. Standard output
+/// An output written as it comes, in bounded memory, and made final by commit(): a file is written to an
+/// unnamed file in its folder (O_TMPFILE) and linked into place at commit, or where the file system has
+/// no O_TMPFILE to a temporary file beside it renamed over path (with the rules of write_file_atomic),
+/// so an output that is not committed (an error, an exception, a kill) leaves nothing under path. Standard output
 /// ("-" or empty), character devices, FIFOs and /dev/stdout-style descriptors are written directly.
 class OutputFile {
 public:
@@ -44,9 +51,14 @@ public:
     void discard() noexcept;
 
 private:
+    void open_temporary();
+    int put_temporary_in_place();
+    int put_unnamed_in_place();
+
     std::string final_path_, temporary_;
     int fd_ = -1;
     bool direct_ = false, close_fd_ = false, overwrite_ = false, committed_ = false;
+    bool unnamed_ = false;  ///< an O_TMPFILE file, given its name at commit
 };
 
 /// Where bytes come from, a chunk at a time: a file, standard input, a pipe.

@@ -96,13 +96,22 @@ tapefw::Config to_wire(const AdapterConfig& config);
 /// way asked; sends settings.config.
 std::unique_ptr<Transport> open_transport(std::unique_ptr<PacketPipe> pipe, const Settings& settings, DeviceUse use);
 
+/// The pipe to the adapter device names, and its settings (checked before anything is opened).
+std::unique_ptr<PacketPipe> open_pipe(std::string_view device, DeviceUse use, Settings& settings);
+
+class Session;
+/// Refuses (Error(Errc::io)) an adapter whose serial is not settings.serial, or without the reader
+/// (use read) or the punch (use write) asked for; sends settings.config.
+void apply_settings(Session& session, const Settings& settings, DeviceUse use);
+
 /// Timing of the host's side; tests shorten nothing, they are the protocol's own numbers.
 struct SessionTiming {
     std::chrono::milliseconds reply{300};         ///< wait for a reply before asking again
     int tries = 3;                                ///< requests are sent at most this often
     std::chrono::milliseconds ack_every{50};      ///< ACK (and keep-alive) period while reading or punching
     std::chrono::milliseconds resend_after{150};  ///< a gap not filled after this long is asked for again
-    int resend_tries = 5;                         ///< then the frames count as lost
+    int resend_tries = 5;                         ///< at least so many requests, and
+    std::chrono::milliseconds lost_after{750};    ///< this long since the first: then the frames count as lost
     std::chrono::milliseconds silent{2000};       ///< an adapter silent this long while it should talk is dead
 };
 
@@ -138,6 +147,27 @@ public:
     /// The payload echoed back, or an error. For the link self-test.
     std::vector<std::uint8_t> echo(std::span<const std::uint8_t> payload);
 
+    // Emulating: the adapter stands in for a reader toward a control (docs/adapter-protocol.md).
+    /// Sends the wiring (WIRING) and waits for its OK.
+    void set_wiring(const tapefw::Wiring& wiring);
+    /// Starts an EMULATE session, frames numbered from 0. Throws when the adapter has no emulate role.
+    void start_emulation();
+    /// Ends it (RESET): the control sees the reader stand.
+    void stop_emulation();
+    /// What the adapter last said of the control: frames taken, room, its drive lines and turns.
+    const tapefw::Taken& taken() const { return taken_; }
+    /// Sends the frames numbered first.. (those not yet taken) as far as the adapter has room; frames
+    /// already sent go again only when their TAKEN did not come.
+    void offer(std::uint32_t first, std::span<const std::uint8_t> frames);
+    /// Drops the frames queued from `from` on that the control has not taken; waits for the adapter's TAKEN.
+    /// until_start: frames sent after wait for the control's next start (unless it started after from-1).
+    void discard(std::uint32_t from, bool until_start = false);
+    /// Takes the adapter's news for up to wait, keeping its watchdog quiet. A fault (the watchdog's stop,
+    /// an adapter no longer emulating, silence) throws Error(Errc::io).
+    void pump_emulation(std::chrono::milliseconds wait);
+    /// A run the adapter's watchdog ended while no host listened, as it said after this session's RESET.
+    const std::optional<tapefw::Status>& orphaned() const { return orphaned_; }
+
     /// Rows read or punched so far.
     std::uint64_t rows_read() const { return expected_; }
     std::uint64_t rows_punched() const { return punched_; }
@@ -165,6 +195,7 @@ private:
     std::uint8_t seq_ = 0;
     std::uint64_t bad_out_ = 0;
     clock::time_point last_sent_{}, last_heard_{};
+    std::uint64_t bad_when_heard_ = 0;  ///< the pipe's bad packets when a good one last came
 
     // Reading.
     bool reading_ = false;
@@ -176,6 +207,7 @@ private:
     clock::time_point gap_asked_{};
     int gap_tries_ = 0;
     std::uint32_t gap_first_ = 0;
+    clock::time_point gap_since_{};  ///< when the first request for the open gap went out
     std::vector<std::pair<std::uint64_t, std::uint64_t>> recovered_;
     std::uint64_t bad_seen_ = 0;
     std::vector<Doubt> doubts_;
@@ -188,12 +220,23 @@ private:
     };
     std::optional<Pending> pending_;
 
-    // Punching: rows_ holds every row queued; frame numbers index it.
-    std::vector<std::uint8_t> rows_;
+    // Punching: rows_ holds the rows queued from frame rows_base_ on (those the adapter has not taken
+    // into its queue yet, to send again if need be), so that a tape of any length takes bounded memory.
+    std::deque<std::uint8_t> rows_;
+    std::uint32_t rows_base_ = 0;
+    bool punching_ = false;
     std::uint32_t sent_to_ = 0, credit_next_ = 0, punched_ = 0;
     std::uint32_t credit_free_ = 0;
     clock::time_point last_credit_{};
     std::uint32_t feeds_ = 0;
+
+    // Emulating.
+    bool emulating_ = false;
+    tapefw::Taken taken_{};
+    std::uint32_t emu_sent_to_ = 0;
+    clock::time_point last_taken_{};  ///< when the adapter's next frame expected last moved
+    std::optional<tapefw::Status> orphaned_;
+    void handle_taken(const tapefw::Packet& p);
 
     std::uint8_t send(tapefw::Packet p);
     std::optional<tapefw::Packet> receive(std::chrono::milliseconds timeout);
@@ -211,6 +254,14 @@ private:
     /// RESEND from expected_, timed for check_gap's next try.
     void ask_resend();
     [[noreturn]] void fail(std::uint64_t frame, const std::string& what) const;
+    /// A reply that breaks the protocol: Error(Errc::io) "protocol error: what".
+    [[noreturn]] void protocol_error(std::uint64_t frame, const std::string& what) const;
+    /// Why the adapter is not heard: silent, or every packet it sends fails its CRC.
+    std::string silence(const std::string& what) const;
+    /// A good packet came: the adapter is heard.
+    void heard();
+    void handle_credit(const tapefw::Packet& p);
+    std::uint32_t rows_queued() const { return rows_base_ + static_cast<std::uint32_t>(rows_.size()); }
 };
 
 }  // namespace tape::adapter

@@ -18,6 +18,7 @@ AdapterInfo to_info(const tapefw::Info& i) {
     a.punch = i.capabilities & tapefw::caps::punch;
     a.reverse = i.capabilities & tapefw::caps::reverse;
     a.row_flags = i.capabilities & tapefw::caps::row_flags;
+    a.emulate = i.capabilities & tapefw::caps::emulate;
     for (int n = 5; n <= 8; ++n)
         if (i.tracks & (1 << (n - 5))) a.tracks.push_back(n);
     a.max_read_rate = i.max_read_rate;
@@ -103,6 +104,60 @@ AdapterSelftest adapter_selftest(std::string_view device, std::chrono::milliseco
     r.bad_in = s.bad_packets_in();
     r.bad_out = s.bad_packets_out();
     return r;
+}
+
+}  // namespace tape
+
+namespace tape {
+namespace {
+
+tapefw::Wiring wiring_to_wire(const AdapterWiring& w) {
+    namespace wb = tapefw::wiring_bit;
+    tapefw::Wiring f;
+    for (std::size_t i = 0; i < 8; ++i)
+        f.data_pins[i] = static_cast<std::uint8_t>(i < w.data_pins.size() ? w.data_pins[i] : tapefw::Wiring::no_pin);
+    f.strobe_pin = static_cast<std::uint8_t>(w.strobe_pin);
+    f.run_pin = static_cast<std::uint8_t>(w.run_pin);
+    f.reverse_pin = static_cast<std::uint8_t>(w.reverse_pin.value_or(tapefw::Wiring::no_pin));
+    f.rewind_pin = static_cast<std::uint8_t>(w.rewind_pin.value_or(tapefw::Wiring::no_pin));
+    f.data_invert = static_cast<std::uint8_t>(w.data_invert);
+    f.tracks = static_cast<std::uint8_t>(w.tracks);
+    f.lines = static_cast<std::uint8_t>((w.strobe_low ? wb::strobe_low : 0) | (w.run_low ? wb::run_low : 0) |
+                                        (w.reverse_low ? wb::reverse_low : 0) | (w.rewind_low ? wb::rewind_low : 0));
+    f.braking = static_cast<std::uint8_t>(w.braking);
+    f.rate = static_cast<std::uint16_t>(w.rate);
+    f.strobe_us = static_cast<std::uint16_t>(w.strobe_us);
+    f.setup_us = static_cast<std::uint16_t>(w.setup_us);
+    f.hold_us = static_cast<std::uint16_t>(w.hold_us);
+    f.start_delay_us = static_cast<std::uint16_t>(w.start_delay_us);
+    return f;
+}
+
+}  // namespace
+
+std::string adapter_wiring_problem(const AdapterWiring& w) {
+    // Ranges first, so that a value too large for its field is named rather than cut.
+    if (w.data_pins.size() != w.tracks)
+        return "data-pins: " + std::to_string(w.data_pins.size()) + " pins for " + std::to_string(w.tracks) + " tracks";
+    for (unsigned pin : w.data_pins)
+        if (pin > tapefw::Wiring::max_pin) return "data-pins: " + std::to_string(pin) + " is not 0 to 63";
+    for (auto pin :
+         {std::optional<unsigned>(w.strobe_pin), std::optional<unsigned>(w.run_pin), w.reverse_pin, w.rewind_pin})
+        if (pin && *pin > tapefw::Wiring::max_pin) return "pin " + std::to_string(*pin) + " is not 0 to 63";
+    if (w.data_invert > 255) return "invert: not a mask of 8 lines";
+    for (unsigned us : {w.strobe_us, w.setup_us, w.hold_us, w.start_delay_us})
+        if (us > 65535) return std::to_string(us) + " us is more than 65535 us";
+    if (w.rate > 4000) return "frame-rate: " + std::to_string(w.rate) + " is not 1 to 4000";
+    const char* problem = wiring_to_wire(w).problem();
+    return problem ? problem : "";
+}
+
+void adapter_configure_emulation(std::string_view device, const AdapterWiring& w) {
+    if (auto problem = adapter_wiring_problem(w); !problem.empty()) throw Error(Errc::usage, problem);
+    adapter::Session s(adapter::open_pipe(device));
+    if (!(s.info().capabilities & tapefw::caps::emulate))
+        throw Error(Errc::io, s.name() + ": this adapter cannot stand in for a tape reader (no emulate role)");
+    s.set_wiring(wiring_to_wire(w));
 }
 
 }  // namespace tape

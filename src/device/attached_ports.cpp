@@ -1,8 +1,12 @@
 // attached_ports: USB serial ports and tape adapters (CDC, vendor bulk, HID) from sysfs, so that several are
 // told apart by serial.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
-#include <fstream>
 #include <tuple>
 
 #include "adapter_session.hpp"
@@ -14,11 +18,27 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A sysfs attribute is at most a page; the strings wanted here are far shorter.
+constexpr std::size_t attribute_size = 4096;
+
+// The first line of a sysfs attribute. Only a regular file is read (sysfs attributes are), opened
+// without waiting and read up to a page: a FIFO or a link to /dev/zero under another root neither
+// blocks nor grows. "" for anything else.
 std::string first_line(const fs::path& p) {
-    std::ifstream in(p);
-    std::string line;
-    std::getline(in, line);
-    return line;
+    int fd = ::open(p.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) return "";
+    struct stat st {};
+    char buf[attribute_size];
+    ssize_t n = -1;
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
+        do {
+            n = ::read(fd, buf, sizeof buf);
+        } while (n < 0 && errno == EINTR);
+    }
+    ::close(fd);
+    if (n <= 0) return "";
+    std::string text(buf, static_cast<std::size_t>(n));
+    return text.substr(0, text.find('\n'));
 }
 
 std::uint16_t hex16(const std::string& s) {

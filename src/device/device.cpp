@@ -70,13 +70,27 @@ std::unique_ptr<Transport> open_device(std::string_view device, DeviceUse use, b
     throw Error(Errc::usage, "'" + std::string(device) + "' names no device; a device string starts with " + known);
 }
 
-std::unique_ptr<adapter::PacketPipe> adapter::open_pipe(std::string_view device) {
+namespace {
+const Backend& adapter_backend(std::string_view device) {
     std::string known;
     const Backend* b = find_backend(device, known);
     if (!b || !b->pipe)
         throw Error(Errc::usage, "'" + std::string(device) +
                                      "' names no adapter: give adapter:/dev/ttyACM0, usb:1209:0001 or hid:1209:0001");
-    return b->pipe(DeviceQuery(b->device.prefix, device.substr(device.find(':') + 1), adapter::settings_keys));
+    return *b;
+}
+}  // namespace
+
+std::unique_ptr<adapter::PacketPipe> adapter::open_pipe(std::string_view device) {
+    const Backend& b = adapter_backend(device);
+    return b.pipe(DeviceQuery(b.device.prefix, device.substr(device.find(':') + 1), adapter::settings_keys));
+}
+
+std::unique_ptr<adapter::PacketPipe> adapter::open_pipe(std::string_view device, DeviceUse use, Settings& settings) {
+    const Backend& b = adapter_backend(device);
+    DeviceQuery query(b.device.prefix, device.substr(device.find(':') + 1), adapter::settings_keys);
+    settings = settings_of(query, use);  // a bad setting before the adapter is opened
+    return b.pipe(query);
 }
 
 }  // namespace tape

@@ -12,12 +12,17 @@
 
 namespace tape {
 
+/// value with every byte but letters, digits and - . _ ~ written %XX (as in a URL's query): a string
+/// from outside (a USB serial) put into a device string cannot end its value or start another setting.
+std::string percent_encoded(std::string_view value);
+
 class DeviceQuery {
 public:
     /// Splits rest (the device string after "backend:") at its first '?' into the path and the
-    /// key=value pairs between '&'s (empty pairs skipped). keys are the backend's settings; none for a
-    /// backend that takes none. Throws Error(Errc::usage), "BACKEND device: ...", naming a key that is
-    /// not one of keys, a key given twice, or a pair that is not key=value.
+    /// key=value pairs between '&'s (empty pairs skipped); %XX in a value is the byte XX. keys are the backend's
+    /// settings; none for a backend that takes none. Throws Error(Errc::usage), "BACKEND device: ...", naming a key
+    /// that is not one of keys, a key given twice, a pair that is not key=value, or a '%' in a value that is not
+    /// followed by two hex digits.
     DeviceQuery(std::string_view backend, std::string_view rest, std::span<const std::string_view> keys);
 
     const std::string& path() const { return path_; }
@@ -48,6 +53,9 @@ public:
     [[noreturn]] void fail(const std::string& message) const;
 
 private:
+    /// value with its %XX decoded; Error(Errc::usage) naming key for a malformed one.
+    std::string decoded(std::string_view key, std::string_view value) const;
+
     std::string backend_;
     std::string path_;
     std::vector<std::pair<std::string, std::string>> settings_;

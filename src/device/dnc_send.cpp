@@ -17,53 +17,30 @@ public:
     Sender(Transport& line, const SendOptions& o, Clock& clock)
         : line_(line), o_(o), clock_(clock), flow_(o.flow.value_or(line.flow())), xonxoff_(o.xon, o.xoff) {}
 
-    SendResult run(std::span<const Frame> frames) {
-        SendResult r;
+    SendResult run(FrameSource& frames) {
         double rate = o_.rate > 0 ? o_.rate : line_.line_rate();
-        auto period = rate > 0 ? frame_period(rate) : Clock::time_point::duration::zero();
-        bool paced = period.count() > 0 || o_.block_delay.count() > 0;
+        period_ = rate > 0 ? frame_period(rate) : Clock::time_point::duration::zero();
+        total_ = frames.total();
+        auto chunk = frames.next();
+        check_seven_bit(chunk);  // the first chunk before anything is sent or waited for
         if (o_.wait_xon) wait_for_xon();
-        auto start = clock_.now(), next = start, last_report = start;
-        for (std::size_t i = 0; i < frames.size();) {
-            if (stopped()) {
-                r.stopped = true;
-                break;
-            }
-            if (paced) {
-                // After a pause: no burst to catch up.
-                if (clock_.now() > next + 100 * period + o_.block_delay) next = clock_.now();
-                clock_.sleep_until(next);
-            }
-            // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
-            if (flow_ == Flow::xonxoff) take_input(0ms, i);
-            bool waited = false;
-            while (blocked() && !stopped()) {
-                waited = true;
-                report(i, frames.size(), start, true);
-                if (flow_ == Flow::xonxoff)
-                    take_input(50ms, i);
-                else
-                    clock_.sleep_until(clock_.now() + 5ms);
-            }
-            if (stopped()) {
-                r.stopped = true;
-                break;
-            }
-            if (waited) next = clock_.now();  // resumed: paced from now, no burst to catch up the pause
-            std::size_t n = write_burst(frames, i);
-            i += n;
-            r.sent = i;
-            next += static_cast<long>(n) * period;
-            if (o_.block_delay.count() > 0 && frames[i - 1] == o_.block_end) next += o_.block_delay;
-            if (o_.progress && clock_.now() - last_report > 250ms) {
-                last_report = clock_.now();
-                report(i, frames.size(), start, false);
-            }
+        start_ = next_ = last_report_ = clock_.now();
+        while (!chunk.empty() && !stopped()) {
+            for (std::size_t i = 0; i < chunk.size() && !stopped();) i += send_burst(chunk, i);
+            if (r_.stopped) break;
+            chunk = frames.next();
+            check_seven_bit(chunk);
         }
-        line_.drain();
-        r.pauses = xonxoff_.pauses();
-        report(r.sent, frames.size(), start, false);
-        return r;
+        // Stopped: what the device still holds is not waited for, and what it says now is no failure
+        // of the run (the stop may well have caused it).
+        try {
+            if (!r_.stopped) line_.drain();
+        } catch (const Error&) {
+            if (!stopped()) throw;
+        }
+        r_.pauses = xonxoff_.pauses();
+        report(false);
+        return r_;
     }
 
 private:
@@ -72,11 +49,64 @@ private:
     Clock& clock_;
     Flow flow_;
     XonXoff xonxoff_;
+    SendResult r_;
+    Clock::time_point::duration period_{};
+    Clock::time_point start_{}, next_{}, last_report_{};
+    std::uint64_t total_ = 0;
 
-    bool stopped() const { return o_.stop && o_.stop->load(); }
+    bool stopped() {
+        if (o_.stop && o_.stop->load()) r_.stopped = true;
+        return r_.stopped;
+    }
+
+    // A 7-bit line's UART makes even parity itself: it can carry only ISO frames whose track 8 is just that.
+    void check_seven_bit(std::span<const Frame> chunk) const {
+        if (!line_.seven_bit()) return;
+        for (std::size_t i = 0; i < chunk.size(); ++i)
+            if (hole_count(chunk[i]) % 2 != 0) {
+                std::uint64_t frame = r_.sent + i + 1;
+                throw Error(Errc::usage, Position{.frame = frame},
+                            line_.name() + ": a 7-bit line carries ISO frames with even parity only, and frame " +
+                                std::to_string(frame) + " is not one (an EIA or damaged tape): use bits=8" +
+                                (r_.sent ? " (" + std::to_string(r_.sent) + " frames were sent)" : ""));
+            }
+    }
+
+    // Paced, held while the other side says so, then a burst from chunk[from]. How many frames went
+    // (none once stopped).
+    std::size_t send_burst(std::span<const Frame> chunk, std::size_t from) {
+        if (period_.count() > 0 || o_.block_delay.count() > 0) {
+            // After a pause: no burst to catch up.
+            if (clock_.now() > next_ + 100 * period_ + o_.block_delay) next_ = clock_.now();
+            clock_.sleep_until(next_);
+        }
+        // Looked at right before each write: after DC3 (or CTS dropped) not one more frame goes out.
+        if (flow_ == Flow::xonxoff) take_input(0ms);
+        bool waited = false;
+        while (blocked() && !stopped()) {
+            waited = true;
+            report(true);
+            if (flow_ == Flow::xonxoff)
+                take_input(50ms);
+            else
+                clock_.sleep_until(clock_.now() + 5ms);
+        }
+        if (stopped()) return 0;
+        if (waited) next_ = clock_.now();  // resumed: paced from now, no burst to catch up the pause
+        std::size_t n = write_burst(chunk, from);
+        if (n == 0) return 0;
+        r_.sent += n;
+        next_ += static_cast<long>(n) * period_;
+        if (o_.block_delay.count() > 0 && chunk[from + n - 1] == o_.block_end) next_ += o_.block_delay;
+        if (o_.progress && clock_.now() - last_report_ > 250ms) {
+            last_report_ = clock_.now();
+            report(false);
+        }
+        return n;
+    }
 
     // Writes up to a burst of frames from `from`, ending early after an end of block that has a delay
-    // after it. How many went.
+    // after it. How many went: none when the write failed after a stop (the stop ends the run).
     std::size_t write_burst(std::span<const Frame> frames, std::size_t from) {
         std::uint8_t bytes[256];
         std::size_t n = 0, most = std::min({std::max<std::size_t>(o_.burst, 1), sizeof bytes, frames.size() - from});
@@ -88,8 +118,9 @@ private:
         try {
             line_.write({bytes, n});
         } catch (const Error& e) {
-            throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(from + 1) + " of " +
-                                      std::to_string(frames.size()) + ")");
+            if (stopped()) return 0;  // the stop came first: the run ends as stopped
+            throw Error(e.code(), std::string(e.what()) + " (at frame " + std::to_string(r_.sent + 1) +
+                                      (total_ ? " of " + std::to_string(total_) : std::string()) + ")");
         }
         return n;
     }
@@ -99,19 +130,19 @@ private:
         return false;
     }
 
-    void take_input(std::chrono::milliseconds wait, std::size_t frame) {
+    void take_input(std::chrono::milliseconds wait) {
         std::uint8_t buf[64];
         ReadResult got = line_.read(buf, wait);
         for (std::size_t k = 0; k < got.count; ++k) xonxoff_.receive(buf[k]);
         if (got.end)
             throw Error(Errc::io,
-                        line_.name() + ": the other side hung up after " + std::to_string(frame) + " frame(s)");
+                        line_.name() + ": the other side hung up after " + std::to_string(r_.sent) + " frame(s)");
     }
 
     void wait_for_xon() {
         auto start = clock_.now();
         while (!xonxoff_.seen_xon() && !stopped()) {
-            take_input(100ms, 0);
+            take_input(100ms);
             // Compared in milliseconds: any xon_timeout fits, where a deadline in nanoseconds could overflow.
             auto waited = std::chrono::duration_cast<std::chrono::milliseconds>(clock_.now() - start);
             if (o_.xon_timeout.count() > 0 && waited >= o_.xon_timeout && !xonxoff_.seen_xon())
@@ -121,11 +152,11 @@ private:
         if (xonxoff_.paused()) xonxoff_ = XonXoff(o_.xon, o_.xoff);
     }
 
-    void report(std::uint64_t done, std::uint64_t total, Clock::time_point start, bool paused) {
+    void report(bool paused) {
         if (!o_.progress) return;
-        double seconds = std::chrono::duration<double>(clock_.now() - start).count();
-        o_.progress(LineProgress{done, total, xonxoff_.pauses(), paused,
-                                 seconds > 0 ? static_cast<double>(done) / seconds : 0});
+        double seconds = std::chrono::duration<double>(clock_.now() - start_).count();
+        o_.progress(LineProgress{r_.sent, total_, xonxoff_.pauses(), paused,
+                                 seconds > 0 ? static_cast<double>(r_.sent) / seconds : 0});
     }
 };
 
@@ -141,21 +172,19 @@ std::chrono::steady_clock::duration frame_period(double rate) {
     return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(1.0 / rate));
 }
 
-SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock) {
+SendResult send_frames(Transport& line, FrameSource& frames, const SendOptions& options, Clock& clock) {
     if (options.rate != 0) frame_period(options.rate);  // refused here, before anything is sent
     Flow flow = options.flow.value_or(line.flow());
     if (flow == Flow::rtscts && !line.modem())
         throw Error(Errc::usage, line.name() + ": flow=rtscts, but this device has no modem lines");
     if ((flow == Flow::xonxoff || options.wait_xon) && (options.xon & 0x7F) == (options.xoff & 0x7F))
         throw Error(Errc::usage, "XON and XOFF are the same character");
-    // A 7-bit line's UART makes even parity itself: it can carry only ISO frames whose track 8 is just that.
-    if (line.seven_bit())
-        for (std::size_t i = 0; i < frames.size(); ++i)
-            if (hole_count(frames[i]) % 2 != 0)
-                throw Error(Errc::usage, Position{.frame = i + 1},
-                            line.name() + ": a 7-bit line carries ISO frames with even parity only, and frame " +
-                                std::to_string(i + 1) + " is not one (an EIA or damaged tape): use bits=8");
     return Sender(line, options, clock).run(frames);
+}
+
+SendResult send_frames(Transport& line, std::span<const Frame> frames, const SendOptions& options, Clock& clock) {
+    SpanSource source(frames);
+    return send_frames(line, source, options, clock);
 }
 
 }  // namespace tape

@@ -1,6 +1,7 @@
 #include "tape/frame_file_writer.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,11 +18,17 @@ FrameFileWriter::FrameFileWriter(const std::string& path, const ImageFormat& for
     if (!format.can_write())
         throw Error(Errc::usage, "cannot write " + std::string(format.id) + " images, only read them");
     writer_ = format.make_writer(ImageWriteOptions{annotate, 1, true});
-    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (replace ? O_TRUNC : O_EXCL), 0666);
+    // "-" is standard output (a copy of it, closed at the end as a file would be).
+    fd_ = path == "-"
+              ? ::fcntl(STDOUT_FILENO, F_DUPFD_CLOEXEC, 0)
+              : ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | O_NOCTTY | (replace ? O_TRUNC : O_EXCL), 0666);
     if (fd_ < 0) {
         if (errno == EEXIST) throw Error(Errc::exists, "already exists", Hint{Hint::Action::replace_output});
         io_fail("cannot create");
     }
+    // Only a file on a disk is flushed to it: /dev/null, a FIFO or a pipe has no disk to flush to.
+    struct stat st {};
+    syncs_ = ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode);
     writer_->write({}, buffer_);  // the header, so that even a tape that never came says what it is
     put(buffer_);
 }
@@ -58,7 +65,7 @@ void FrameFileWriter::put(const std::string& data) {
 }
 
 void FrameFileWriter::sync() {
-    if (::fsync(fd_) != 0) io_fail("cannot flush to disk");
+    if (syncs_ && ::fsync(fd_) != 0) io_fail("cannot flush to disk");
     last_sync_ = std::chrono::steady_clock::now();
 }
 

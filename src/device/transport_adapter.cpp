@@ -20,8 +20,7 @@ namespace {
 class CdcPipe : public adapter::PacketPipe {
 public:
     explicit CdcPipe(std::string path) : path_(std::move(path)) {
-        fd_ = ::open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-        if (fd_ < 0) posix::fail(name(), "cannot open");
+        fd_ = posix::open_line(path_, name());
         SerialSettings s;
         s.path = path_;
         s.baud = 115200;  // a CDC port ignores it; a real UART bridge would use it
@@ -104,6 +103,8 @@ public:
         return session_.read(buffer, timeout, start_);
     }
     bool backwards() const override { return start_.reverse != 0; }
+    int tracks() const override { return tracks_; }
+    void set_tracks(int tracks) { tracks_ = tracks; }
     FrameDoubts take_doubts() override {
         FrameDoubts out;
         for (const auto& d : session_.take_doubts()) out.runs.push_back({d.first, d.last, flags_text(d.flags)});
@@ -134,7 +135,16 @@ private:
     tapefw::ReadStart start_;
     adapter::Session session_;
     std::size_t noted_ = 0;
+    int tracks_ = 8;
 };
+
+// The widest tape the unit takes: what its CONFIG masks rows to, else the widest the adapter names.
+int unit_tracks(const tapefw::Info& info, const std::optional<tapefw::Config>& config) {
+    if (config) return config->tracks;
+    for (int n = 8; n >= 5; --n)
+        if (info.tracks & (1 << (n - 5))) return n;
+    return 8;
+}
 
 std::string cdc_path(const DeviceQuery& q) {
     if (q.path().empty()) q.fail("no path, e.g. adapter:/dev/ttyACM0");
@@ -165,15 +175,25 @@ adapter::Settings adapter::settings_of(const DeviceQuery& q, DeviceUse use) {
 
 std::unique_ptr<Transport> adapter::open_transport(std::unique_ptr<PacketPipe> pipe, const Settings& s, DeviceUse use) {
     auto t = std::make_unique<AdapterTransport>(std::move(pipe), use, s.start);
-    // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
-    const tapefw::Info& info = t->session().info();
-    if (s.serial && *s.serial != info.serial)
-        throw Error(Errc::io, t->name() + ": this adapter's serial is " + info.serial + ", not " + *s.serial);
     // Refused before anything is read or written, as the adapter would refuse its READ_START.
-    if (s.start.reverse && !(info.capabilities & tapefw::caps::reverse))
+    if (s.start.reverse && !(t->session().info().capabilities & tapefw::caps::reverse))
         throw Error(Errc::io, t->name() + ": this adapter's reader cannot read backwards (direction=reverse)");
-    if (s.config) t->session().configure(*s.config);
+    apply_settings(t->session(), s, use);
+    t->set_tracks(unit_tracks(t->session().info(), s.config));
     return t;
+}
+
+void adapter::apply_settings(Session& session, const Settings& s, DeviceUse use) {
+    // A CDC port's number changes with the order of plugging: the serial tells the adapter meant.
+    const tapefw::Info& info = session.info();
+    if (s.serial && *s.serial != info.serial)
+        throw Error(Errc::io, session.name() + ": this adapter's serial is " + info.serial + ", not " + *s.serial);
+    // An adapter without the reader or the punch asked for is refused before any output is created.
+    if (use == DeviceUse::read && !(info.capabilities & tapefw::caps::reader))
+        throw Error(Errc::io, session.name() + ": this adapter has no reader");
+    if (use == DeviceUse::write && !(info.capabilities & tapefw::caps::punch))
+        throw Error(Errc::io, session.name() + ": this adapter has no punch");
+    if (s.config) session.configure(*s.config);
 }
 
 adapter::UsbId adapter::usb_id(std::string_view backend, const DeviceQuery& q) {
@@ -232,7 +252,7 @@ std::string adapter::UsbId::text() const {
 }
 
 std::string adapter::device_string(std::string_view backend, const UsbId& id, std::string_view serial) {
-    return std::string(backend) + ":" + id.text() + (serial.empty() ? "" : "?serial=" + std::string(serial));
+    return std::string(backend) + ":" + id.text() + (serial.empty() ? "" : "?serial=" + percent_encoded(serial));
 }
 
 std::unique_ptr<adapter::PacketPipe> open_cdc_pipe(const DeviceQuery& q) {

@@ -67,6 +67,7 @@ public:
         }
     }
     std::string name() const override { return "file:" + path_; }
+    int tracks() const override { return image_ ? image_->format().tracks : 8; }
 
 private:
     // The file layer names no file; a device error names its device, where in it included.

@@ -1,6 +1,8 @@
 #include "transport_posix.hpp"
 
+#include <fcntl.h>
 #include <poll.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +13,25 @@
 #include "tape/error.hpp"
 
 namespace tape::posix {
+
+int open_line(const std::string& path, const std::string& name) {
+    auto refuse = [&name] {
+        throw Error(Errc::usage,
+                    name +
+                        ": is no serial port or pseudo-terminal (a character device): lines are reached through "
+                        "their device, e.g. /dev/ttyUSB0 or /dev/ttyACM0");
+    };
+    struct stat st {};
+    // Looked at before opening (a FIFO or a file is never opened for writing) and after (it may have changed).
+    if (::stat(path.c_str(), &st) == 0 && !S_ISCHR(st.st_mode)) refuse();
+    int fd = ::open(path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) fail(name, "cannot open");
+    if (::fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) {
+        ::close(fd);
+        refuse();
+    }
+    return fd;
+}
 
 void fail(const std::string& name, const std::string& what) {
     throw Error(Errc::io, name + ": " + what + ": " + std::strerror(errno));

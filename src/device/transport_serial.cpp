@@ -32,8 +32,7 @@ private:
 class SerialTransport : public Transport {
 public:
     explicit SerialTransport(SerialSettings s) : s_(std::move(s)) {
-        fd_ = ::open(s_.path.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-        if (fd_ < 0) posix::fail(name(), "cannot open");
+        fd_ = posix::open_line(s_.path, name());
         termios t = make_termios(s_);
         if (::tcsetattr(fd_, TCSANOW, &t) != 0) {
             int saved = errno;

@@ -11,20 +11,28 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 #include "common/fd_util.hpp"
 #include "tape/error.hpp"
 
 namespace tape {
 
-std::vector<std::uint8_t> read_file(const std::string& path) {
+std::vector<std::uint8_t> read_file(const std::string& path, std::uint64_t max_bytes, Errc too_big) {
+    auto refuse = [&] { throw Error(too_big, "is larger than " + std::to_string(max_bytes) + " bytes"); };
     FileSource source(path);
     std::vector<std::uint8_t> bytes;
     struct stat st {};
-    if (path != "-" && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode))
+    // The size is checked before the memory is asked for.
+    if (path != "-" && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode)) {
+        if (static_cast<std::uint64_t>(st.st_size) > max_bytes) refuse();
         bytes.reserve(static_cast<std::size_t>(st.st_size));
+    }
     std::uint8_t buf[65536];
-    while (std::size_t n = source.read(buf)) bytes.insert(bytes.end(), buf, buf + n);
+    while (std::size_t n = source.read(buf)) {
+        if (bytes.size() + n > max_bytes) refuse();
+        bytes.insert(bytes.end(), buf, buf + n);
+    }
     return bytes;
 }
 
@@ -87,6 +95,33 @@ void discard_pending_output() noexcept {
     pending_set = 0;
 }
 
+namespace {
+
+// An unnamed file in dir (O_TMPFILE), or -1 where the file system or the kernel has none; linked into
+// place through /proc/self/fd, so /proc must be there too.
+int open_unnamed(const std::string& dir) {
+#ifdef O_TMPFILE
+    if (::access("/proc/self/fd", X_OK) != 0) return -1;
+    return ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+#else
+    (void)dir;
+    return -1;
+#endif
+}
+
+std::string folder_of(const std::string& path) {
+    auto slash = path.rfind('/');
+    return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+}
+
+// Gives the unnamed file fd the name path; EEXIST when path exists.
+int link_unnamed(int fd, const std::string& path) {
+    std::string self = "/proc/self/fd/" + std::to_string(fd);
+    return ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, path.c_str(), AT_SYMLINK_FOLLOW);
+}
+
+}  // namespace
+
 OutputFile::OutputFile(const std::string& path, bool overwrite) {
     if (path.empty() || path == "-") {
         fd_ = STDOUT_FILENO;
@@ -116,13 +151,7 @@ OutputFile::OutputFile(const std::string& path, bool overwrite) {
         char resolved[PATH_MAX];
         if (::realpath(path.c_str(), resolved)) final_path_ = resolved;
     }
-    temporary_ = final_path_ + ".tmpXXXXXX";
-    {
-        HoldEndingSignals hold;
-        fd_ = ::mkstemp(temporary_.data());
-        if (fd_ >= 0) set_pending(temporary_);
-    }
-    if (fd_ < 0) io_fail("cannot create a temporary file beside it");
+    open_temporary();
     close_fd_ = true;
     if (target_exists) {
         // --force keeps the replaced file's permissions and, where allowed, its owner.
@@ -134,6 +163,23 @@ OutputFile::OutputFile(const std::string& path, bool overwrite) {
         ::umask(mask);
         ::fchmod(fd_, 0666 & ~mask);
     }
+}
+
+void OutputFile::open_temporary() {
+    // Unnamed until committed: a run killed outright (SIGKILL, a power cut) leaves nothing behind.
+    fd_ = open_unnamed(folder_of(final_path_));
+    if (fd_ >= 0) {
+        unnamed_ = true;
+        return;
+    }
+    // Else a named temporary beside it, removed by the CLI's signal handlers (discard_pending_output).
+    temporary_ = final_path_ + ".tmpXXXXXX";
+    {
+        HoldEndingSignals hold;
+        fd_ = ::mkstemp(temporary_.data());
+        if (fd_ >= 0) set_pending(temporary_);
+    }
+    if (fd_ < 0) io_fail("cannot create a temporary file beside it");
 }
 
 OutputFile::~OutputFile() {
@@ -170,31 +216,58 @@ void OutputFile::commit() {
         if (!ok) io_fail("cannot write");
         return;
     }
-    bool ok = ::fsync(fd_) == 0;
-    int saved = errno;
-    ok = (::close(fd_) == 0) && ok;
-    fd_ = -1;
-    if (ok) {
-        HoldEndingSignals hold;
-        // RENAME_NOREPLACE closes the gap between the check when opening and the rename.
-        int r = overwrite_ ? ::rename(temporary_.c_str(), final_path_.c_str())
-                           : ::renameat2(AT_FDCWD, temporary_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_NOREPLACE);
-        if (r != 0 && !overwrite_ && errno == EINVAL) {  // a file system without RENAME_NOREPLACE
-            r = ::link(temporary_.c_str(), final_path_.c_str());
-            if (r == 0) ::unlink(temporary_.c_str());
-        }
-        if (r == 0) {
-            pending_set = 0;
-            temporary_.clear();
-            committed_ = true;
-            return;
-        }
-        saved = errno;
+    if (::fsync(fd_) != 0) {
+        int saved = errno;
+        discard();
+        errno = saved;
+        io_fail("cannot write");
     }
+    int r;
+    {
+        HoldEndingSignals hold;
+        r = unnamed_ ? put_unnamed_in_place() : put_temporary_in_place();
+    }
+    int saved = errno;
+    if (r == 0 && ::close(std::exchange(fd_, -1)) == 0) {
+        committed_ = true;
+        return;
+    }
+    if (r == 0) saved = errno;
     discard();
     errno = saved;
     if (errno == EEXIST) throw Error(Errc::exists, "already exists", Hint{Hint::Action::replace_output});
     io_fail("cannot write");
+}
+
+int OutputFile::put_temporary_in_place() {
+    // RENAME_NOREPLACE closes the gap between the check when opening and the rename.
+    int r = overwrite_ ? ::rename(temporary_.c_str(), final_path_.c_str())
+                       : ::renameat2(AT_FDCWD, temporary_.c_str(), AT_FDCWD, final_path_.c_str(), RENAME_NOREPLACE);
+    if (r != 0 && !overwrite_ && errno == EINVAL) {  // a file system without RENAME_NOREPLACE
+        r = ::link(temporary_.c_str(), final_path_.c_str());
+        if (r == 0) ::unlink(temporary_.c_str());
+    }
+    if (r == 0) {
+        pending_set = 0;
+        temporary_.clear();
+    }
+    return r;
+}
+
+int OutputFile::put_unnamed_in_place() {
+    // A new name is linked only where nothing is (EEXIST otherwise): no check-then-write gap.
+    if (!overwrite_) return link_unnamed(fd_, final_path_);
+    // Replacing: linked under a passing name, then renamed over the old file in one step.
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        temporary_ = final_path_ + ".tmp" + std::to_string(::getpid()) + "." + std::to_string(attempt);
+        if (link_unnamed(fd_, temporary_) == 0) {
+            set_pending(temporary_);
+            return put_temporary_in_place();
+        }
+        temporary_.clear();
+        if (errno != EEXIST) return -1;
+    }
+    return -1;
 }
 
 void write_file_atomic(const std::string& path, std::string_view data, bool overwrite) {

@@ -1,24 +1,80 @@
 #include "tape/feed.hpp"
 
 #include <algorithm>
+#include <utility>
+
+#include "tape/error.hpp"
 
 namespace tape {
 namespace {
 
-std::vector<Frame> image_frames(Input& input, const FeedOptions& o) {
-    std::vector<Frame> frames;
-    for (auto chunk = input.next_frames(); !chunk.empty(); chunk = input.next_frames())
-        frames.insert(frames.end(), chunk.begin(), chunk.end());
-    if (!o.replace_leader && !o.replace_trailer) return frames;
-    auto data = punched_part(frames);
-    auto before = static_cast<std::size_t>(data.data() - frames.data());
-    std::size_t lead = o.replace_leader ? o.encode.leader : before;
-    std::size_t trail = o.replace_trailer ? o.encode.trailer : frames.size() - before - data.size();
-    std::vector<Frame> out(lead, blank_frame);
-    out.insert(out.end(), data.begin(), data.end());
-    out.insert(out.end(), trail, blank_frame);
-    return out;
-}
+// An image's frames as they are read. With its leader or trailer replaced, blank frames before the
+// first punched one are dropped (the new leader goes out instead), and a run of blank frames is held
+// until a punched frame shows it is inside the tape (then it goes out) or the tape ends (then it was
+// the trailer). Memory: a chunk, and a count of blanks.
+class ImageFeed : public FrameSource {
+public:
+    ImageFeed(Input& input, const FeedOptions& o) : input_(input), o_(o) {}
+
+    std::span<const Frame> next() override {
+        out_.clear();
+        while (out_.empty() && !ended_) {
+            auto chunk = input_.next_frames();
+            if (chunk.empty()) {
+                end();
+                break;
+            }
+            for (Frame f : chunk) take(f);
+        }
+        return out_;
+    }
+
+private:
+    void take(Frame f) {
+        bool blank = f == blank_frame;
+        if (!started_ && blank && o_.replace_leader) return;  // the old leader
+        if (!started_ && !blank) {
+            started_ = true;
+            if (o_.replace_leader) out_.insert(out_.end(), o_.encode.leader, blank_frame);
+        }
+        if (blank && o_.replace_trailer) {
+            ++held_;
+            return;
+        }
+        out_.insert(out_.end(), held_, blank_frame);  // blanks inside the tape, or its leader
+        held_ = 0;
+        out_.push_back(f);
+    }
+    void end() {
+        ended_ = true;
+        if (!started_ && o_.replace_leader) out_.insert(out_.end(), o_.encode.leader, blank_frame);
+        // A tape of blanks only keeps them as its leader (unless that is replaced too).
+        if (!started_ && !o_.replace_leader) out_.insert(out_.end(), held_, blank_frame);
+        if (o_.replace_trailer) out_.insert(out_.end(), o_.encode.trailer, blank_frame);
+    }
+
+    Input& input_;
+    FeedOptions o_;
+    std::vector<Frame> out_;
+    std::uint64_t held_ = 0;
+    bool started_ = false, ended_ = false;
+};
+
+// A text program, encoded whole: the dialect is judged from all of it and '%' put around it.
+class TextFeed : public FrameSource {
+public:
+    explicit TextFeed(std::vector<Frame> frames) : frames_(std::move(frames)) {}
+    std::span<const Frame> next() override {
+        if (given_) return {};
+        given_ = true;
+        return frames_;
+    }
+    std::uint64_t total() const override { return frames_.size(); }
+
+private:
+    std::vector<Frame> frames_;
+    bool given_ = false;
+};
 
 // The last line that is not blank is a lone '%' after the program (not the '%' that starts it).
 bool ends_with_percent_line(std::string_view text) {
@@ -58,12 +114,23 @@ std::string semicolons_to_line_ends(std::string_view text) {
     return out;
 }
 
-std::vector<Frame> frames_to_send(Input& input, const FeedOptions& o, DialectChoice* chosen) {
-    if (input.is_image()) return image_frames(input, o);
+namespace {
+
+std::string whole_text(Input& input) {
     DecodeResult all;
-    while (input.next_text(all)) {
-    }
-    std::string& text = all.text;
+    while (input.next_text(all))
+        if (all.text.size() > max_text_bytes)
+            throw Error(Errc::bad_text, "the text holds more than " + std::to_string(max_text_bytes) +
+                                            " characters: no part program is so long (is it a tape image? give "
+                                            "--input image)");
+    return std::move(all.text);
+}
+
+}  // namespace
+
+std::unique_ptr<FrameSource> feed_source(Input& input, const FeedOptions& o, DialectChoice* chosen) {
+    if (input.is_image()) return std::make_unique<ImageFeed>(input, o);
+    std::string text = whole_text(input);
     DialectChoice choice{o.dialect, {}};
     if (o.dialect == Dialect::automatic) choice = guess_dialect(text);
     if (chosen) *chosen = choice;
@@ -74,7 +141,15 @@ std::vector<Frame> frames_to_send(Input& input, const FeedOptions& o, DialectCho
         if (first == std::string::npos || text[first] != '%') text.insert(0, "%\n");
         if (!ends_with_percent_line(text)) text += "%";
     }
-    return encode(text, o.encode);
+    return std::make_unique<TextFeed>(encode(text, o.encode));
+}
+
+std::vector<Frame> frames_to_send(Input& input, const FeedOptions& o, DialectChoice* chosen) {
+    auto source = feed_source(input, o, chosen);
+    std::vector<Frame> frames;
+    for (auto chunk = source->next(); !chunk.empty(); chunk = source->next())
+        frames.insert(frames.end(), chunk.begin(), chunk.end());
+    return frames;
 }
 
 }  // namespace tape

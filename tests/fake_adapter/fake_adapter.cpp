@@ -149,7 +149,9 @@ struct Adapter::Impl {
     std::deque<std::vector<std::uint8_t>> to_host;  ///< packets, one per transfer (usb, hid)
     std::string to_host_bytes;                      ///< the byte stream (cdc)
     std::vector<std::string> unexpected;
-    std::vector<std::uint8_t> punched;
+    std::vector<std::uint8_t> punched, taken;
+    std::string control_stats;
+    std::size_t taken_counted = 0;
     std::uint64_t rows = 0;
     std::thread thread;
 
@@ -170,6 +172,7 @@ struct Adapter::Impl {
     explicit Impl(Options options) : o(std::move(options)), hw(o.tape, o.sim), filter(o.faults) {
         id.serial = o.serial.c_str();
         id.capabilities |= tapefw::caps::reverse | tapefw::caps::row_flags;  // SimHardware does both
+        if (o.sim.control) id.capabilities |= tapefw::caps::emulate;
         hw.on_send = [this](const std::uint8_t* b, std::size_t n) {
             std::lock_guard l(m);
             if (gone) return true;  // into the void: nobody listens
@@ -337,8 +340,14 @@ struct Adapter::Impl {
                 // Only the rows punched since: the whole run is not copied at every turn.
                 punched.insert(punched.end(), hw.punched().begin() + static_cast<long>(punched.size()),
                                hw.punched().end());
+                if (const auto* c = hw.control()) {
+                    taken.insert(taken.end(), c->taken().begin() + static_cast<long>(taken.size()), c->taken().end());
+                    if (c->taken().size() != taken_counted) control_stats = c->stats_json();
+                    taken_counted = c->taken().size();
+                }
             }
-            if (up && o.unplug_after && engine->rows_read() >= o.unplug_after) unplug();
+            if (up && o.unplug_after && std::max(engine->rows_read(), engine->frames_taken()) >= o.unplug_after)
+                unplug();
             deliver();
             std::unique_lock l(m);
             wake.wait_for(l, 300us, [this] { return stopping || !from_host.empty(); });
@@ -636,6 +645,16 @@ void Adapter::unplug() { impl_->unplug(); }
 std::vector<std::uint8_t> Adapter::punched() const {
     std::lock_guard l(impl_->m);
     return impl_->punched;
+}
+
+std::vector<std::uint8_t> Adapter::control_taken() const {
+    std::lock_guard l(impl_->m);
+    return impl_->taken;
+}
+
+std::string Adapter::control_stats() const {
+    std::lock_guard l(impl_->m);
+    return impl_->control_stats;
 }
 
 std::uint64_t Adapter::rows_read() const {

@@ -44,6 +44,9 @@ public:
     void unplug();
     /// What the punch punched so far.
     std::vector<std::uint8_t> punched() const;
+    /// What the control (Options::sim.control) took so far, and its findings (SimControl::stats_json).
+    std::vector<std::uint8_t> control_taken() const;
+    std::string control_stats() const;
     std::uint64_t rows_read() const;
     /// Requests the host made that no host should make of this device (an ioctl it has no business
     /// with, a transfer on an endpoint that is not there): each in words. Tests expect none.

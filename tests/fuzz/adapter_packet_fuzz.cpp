@@ -1,7 +1,8 @@
 // libFuzzer target: any bytes as the CDC stream into a tape adapter (firmware/core). Every packet the
 // stream decoder gives back passed its CRC and re-encodes to the same bytes; every message a packet
-// decodes to encodes back to the same packet; and the adapter's engine takes the whole stream as host
-// input without going wrong (its buffers stay in bounds: ASan and UBSan watch).
+// decodes to encodes back to the same packet; and the adapter's engine (with the emulate role, the
+// control's lines and frame slots driven from the same bytes) takes the whole stream as host input
+// without going wrong (its buffers stay in bounds: ASan and UBSan watch).
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -74,6 +75,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         round_trip<Status>(p);
         round_trip<ErrorReply>(p);
         round_trip<Ok>(p);
+        round_trip<Wiring>(p);
+        round_trip<Frames>(p);
+        round_trip<Discard>(p);
+        round_trip<Taken>(p);
         Info info;
         if (info.decode(p) && info.protocol == protocol_version) {
             Packet back;
@@ -84,11 +89,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
     }
     FuzzBoard board;
-    Engine engine(board, Identity{});
+    Identity id;
+    id.capabilities |= caps::emulate;
+    Engine engine(board, id);
     // The stream in pieces, with the engine's turn and a row from the reader between them.
     for (std::size_t at = 0; at < size; at += 17) {
         engine.receive(data + at, size - at < 17 ? size - at : 17);
         engine.on_row(data[at]);
+        // The control's lines and a frame slot, from the same bytes: the emulate role's interrupts.
+        engine.on_drive(static_cast<std::uint8_t>(data[at] >> 5));
+        std::uint8_t levels = 0;
+        engine.next_frame(levels);
         engine.poll();
     }
     return 0;

@@ -64,6 +64,11 @@ void FaultFilter::filter(tapefw::Packet p, const std::function<void(const tapefw
     if (p.type == static_cast<std::uint8_t>(tapefw::Msg::info) && f_.protocol >= 0) {
         p.payload[0] = static_cast<std::uint8_t>(f_.protocol);
     }
+    if (p.type == static_cast<std::uint8_t>(tapefw::Msg::taken) && f_.drop_taken_every &&
+        ++taken_packets_ % f_.drop_taken_every == 0) {
+        ++dropped_;
+        return;
+    }
     tapefw::Rows rows;
     if (!rows.decode(p)) {  // not ROWS: passed as it is
         emit(p, false);

@@ -22,6 +22,7 @@ struct Faults {
     std::uint64_t corrupt_times = 1;        ///< ...and of its next resends, this many sendings in all
     std::uint64_t garbage_every = 0;        ///< before every K-th ROWS packet, a desync on the line; 0: none
     int protocol = -1;                      ///< INFO claims this protocol version (-1: the real one)
+    std::uint64_t drop_taken_every = 0;     ///< every K-th TAKEN packet is lost on the way (emulating); 0: none
 };
 
 class FaultFilter {
@@ -40,7 +41,7 @@ public:
 private:
     Faults f_;
     tapefw::StreamDecoder decoder_;
-    std::uint64_t rows_packets_ = 0, dropped_ = 0, corrupted_ = 0, desyncs_ = 0;
+    std::uint64_t rows_packets_ = 0, dropped_ = 0, corrupted_ = 0, desyncs_ = 0, taken_packets_ = 0;
     std::uint32_t drop_first_ = 0, corrupt_first_ = 0;  ///< the first frame of the packet hit
     /// The faults applied to one packet: emit is called for each sending of it, damaged or not, and
     /// desync once before it when a desync is due.

@@ -17,8 +17,10 @@
 
 #include "adapter_sim/fault_filter.hpp"
 #include "adapter_sim/sim_hardware.hpp"
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
+#include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "cli/run.hpp"
 #include "cli/signals.hpp"
@@ -27,9 +29,12 @@
 namespace {
 
 struct SimArgs {
-    std::string reader, punch, serial = "SIM0001", link;
+    std::string reader, punch, serial = "SIM0001", link, control;
     double speed = 1, read_rate = 1500, punch_rate = 150;
     std::uint32_t stop_frames = 1;
+    double control_rate = 1500;
+    std::uint64_t control_stops = 0, control_rewind_after = 0, control_reverse_after = 0, control_reverse_frames = 10;
+    std::uint32_t control_seed = 1;
     std::uint64_t unplug_after = 0, torn_at = 0, chad_full_after = 0;
     std::vector<std::uint64_t> miss_hole_at, no_sprocket_at, mistimed_at, marginal_at;
     unsigned active_low = 0;
@@ -96,6 +101,13 @@ tapesim::SimOptions sim_options(const SimArgs& a) {
     so.miss_hole_at = a.miss_hole_at;
     so.active_low = static_cast<std::uint8_t>(a.active_low);
     so.head_at_end = a.at_end;
+    if (!a.control.empty())
+        so.control = tapesim::ControlOptions{.rate = a.control_rate,
+                                             .stops = a.control_stops,
+                                             .seed = a.control_seed,
+                                             .rewind_after = a.control_rewind_after,
+                                             .reverse_after = a.control_reverse_after,
+                                             .reverse_frames = a.control_reverse_frames};
     for (auto [frames, flag] :
          {std::pair{&a.no_sprocket_at, tapefw::row_flag::no_sprocket},
           std::pair{&a.mistimed_at, tapefw::row_flag::timing}, std::pair{&a.marginal_at, tapefw::row_flag::marginal}})
@@ -110,7 +122,7 @@ tapefw::Identity identity(const SimArgs& a) {
     id.capabilities = static_cast<std::uint8_t>(
         (a.no_reader ? 0
                      : tapefw::caps::reader | tapefw::caps::row_flags | (a.no_reverse ? 0 : tapefw::caps::reverse)) |
-        (a.no_punch ? 0 : tapefw::caps::punch));
+        (a.no_punch ? 0 : tapefw::caps::punch) | (a.control.empty() ? 0 : tapefw::caps::emulate));
     id.max_read_rate = static_cast<std::uint16_t>(std::lround(a.read_rate));
     id.max_punch_rate = static_cast<std::uint16_t>(std::lround(a.punch_rate));
     return id;
@@ -141,14 +153,16 @@ public:
     }
 
     /// Runs the board on the port until Ctrl-C or the unplug asked for.
-    void run(const Port& port, std::FILE* punched_out) {
+    void run(const Port& port, std::FILE* punched_out, std::FILE* control_out) {
         fd_ = port.fd();
         t0_ = std::chrono::steady_clock::now();
         while (!cli::interrupted()) {
             catch_up();
             if (punched_out) write_punched(punched_out);
-            if (a_.unplug_after && engine_.rows_read() >= a_.unplug_after) {
-                std::cerr << "tape-adapter-sim: unplugged after " << engine_.rows_read() << " frames\n";
+            if (control_out) write_taken(control_out);
+            std::uint64_t frames = std::max<std::uint64_t>(engine_.rows_read(), engine_.frames_taken());
+            if (a_.unplug_after && frames >= a_.unplug_after) {
+                std::cerr << "tape-adapter-sim: unplugged after " << frames << " frames\n";
                 return;
             }
             send_to_host();
@@ -179,6 +193,8 @@ public:
             c.data_invert, c.lines, c.tracks, c.sample_delay_us, c.punch_pulse_us, c.drive_pulse_us,
             c.sprocket_timeout_ms, c.watchdog_ms);
         std::cerr << line;
+        // The control's findings, one JSON line of their own.
+        if (hw_.control()) std::cerr << hw_.control()->stats_json() << "\n";
     }
 
 private:
@@ -189,7 +205,7 @@ private:
     tapesim::FaultFilter filter_;
     tapefw::Engine engine_;
     std::string out_;  ///< bytes for the host the port has not taken yet
-    std::size_t punched_written_ = 0;
+    std::size_t punched_written_ = 0, taken_written_ = 0;
     std::chrono::steady_clock::time_point t0_{};  ///< when the simulated clock started
 
     std::uint64_t virtual_now() const {
@@ -233,6 +249,14 @@ private:
         punched_written_ = hw_.punched().size();
     }
 
+    void write_taken(std::FILE* to) {
+        const auto& taken = hw_.control()->taken();
+        if (taken.size() <= taken_written_) return;
+        std::fwrite(taken.data() + taken_written_, 1, taken.size() - taken_written_, to);
+        std::fflush(to);
+        taken_written_ = taken.size();
+    }
+
     void send_to_host() {
         while (!out_.empty()) {
             ssize_t n = ::write(fd_, out_.data(), out_.size());
@@ -251,20 +275,30 @@ private:
     }
 };
 
+// An output file of the run: standard output is taken by the device string, and no two outputs (or an
+// output and the reader's tape) may be one file.
+std::FILE* create(const std::string& path, const std::string& option) {
+    if (path.empty()) return nullptr;
+    if (path == "-")
+        cli::fail(option + " -", tape::Errc::usage, "standard output carries the device string: give a file");
+    cli::claim_output(path);
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) die(path + ": cannot create: " + std::strerror(errno));
+    return f;
+}
+
 int run(const SimArgs& a) {
     const std::vector<std::uint8_t> tape = reader_tape(a);
-    std::FILE* punched_out = nullptr;
-    if (!a.punch.empty()) {
-        punched_out = std::fopen(a.punch.c_str(), "wb");
-        if (!punched_out) die(a.punch + ": cannot create: " + std::strerror(errno));
-    }
+    std::FILE* punched_out = create(a.punch, "--punch");
+    std::FILE* control_out = create(a.control, "--control");
     Board board(a, tape);
     {
         Port port(a.link);
         std::cout << "adapter:" << port.path() << std::endl;
-        board.run(port, punched_out);
+        board.run(port, punched_out, control_out);
     }
-    if (punched_out) std::fclose(punched_out);
+    for (auto* f : {punched_out, control_out})
+        if (f) std::fclose(f);
     board.print_faults();
     if (a.stats) board.print_stats();
     return cli::ok;
@@ -294,6 +328,32 @@ void add_unit_options(CLI::App& app, SimArgs& a) {
            "--loop", a.loop,
            "The punched tape goes on into the reader, which reads it back (tape punch --verify); not with --reader")
         ->excludes("--reader");
+    app.add_option("--control", a.control,
+                   "A control reads through the adapter standing in for its tape reader (tape emulate); every "
+                   "frame it takes is appended to this raw image file");
+    app.add_option("--control-rate", a.control_rate,
+                   "Frames per second the control can take; slower than the reader's rate, it stops the reader "
+                   "after each frame")
+        ->check(real_number(1, 60000))
+        ->capture_default_str();
+    app.add_option("--control-stops", a.control_stops,
+                   "The control stops the reader N times at random frames (1 to 2000 frames apart) and starts it "
+                   "again after a random 2 to 30 ms")
+        ->check(whole_number(0, 1'000'000'000));
+    app.add_option("--control-seed", a.control_seed, "Seed of the control's random stops")
+        ->check(whole_number(0, 4'294'967'295))
+        ->capture_default_str();
+    app.add_option("--control-rewind-after", a.control_rewind_after,
+                   "Once, after taking N frames, the control stops, rewinds (its rewind line on and off) and starts "
+                   "again")
+        ->check(whole_number(1, 1'000'000'000));
+    app.add_option("--control-reverse-after", a.control_reverse_after,
+                   "Once, after taking N frames, the control reads backwards for --control-reverse-frames frames, "
+                   "then forwards again")
+        ->check(whole_number(1, 1'000'000'000));
+    app.add_option("--control-reverse-frames", a.control_reverse_frames, "Frames the control reads backwards")
+        ->check(whole_number(1, 1'000'000'000))
+        ->capture_default_str();
     app.add_flag("--no-reader", a.no_reader, "An adapter with a punch only");
     app.add_flag("--no-punch", a.no_punch, "An adapter with a reader only");
     app.add_flag("--no-reverse", a.no_reverse, "A reader that cannot read backwards");
@@ -316,7 +376,8 @@ void add_fault_options(CLI::App& app, SimArgs& a) {
     app.add_option("--marginal-at", a.marginal_at,
                    "A track of frame N reads near its threshold, and the row is flagged so (repeatable)")
         ->check(whole_number(1, most));
-    app.add_option("--unplug-after", a.unplug_after, "Unplug (hang the line up and end) after N frames read")
+    app.add_option("--unplug-after", a.unplug_after,
+                   "Unplug (hang the line up and end) after N frames read, or taken by the control")
         ->check(whole_number(1, most));
     app.add_option("--torn-at", a.torn_at, "The tape is torn after N frames: no sprocket hole from there")
         ->check(whole_number(0, most))
@@ -336,7 +397,11 @@ void add_fault_options(CLI::App& app, SimArgs& a) {
     app.add_flag(
         "--stats", a.stats,
         "At the end, print on stderr the tape's position, rows punched, punch underruns and late cycles, desyncs "
-        "injected, bad packets from the host and the line settings in force");
+        "injected, bad packets from the host and the line settings in force; with --control, then a JSON line: "
+        "frames taken, frames_after_stop (for each stop), longest_gap_us, longest_restart_us, restarts");
+    app.add_option("--drop-taken-every", a.faults.drop_taken_every,
+                   "Lose every K-th TAKEN packet on the way to the host (emulating)")
+        ->check(whole_number(1, most));
     app.add_option("--drop-packet", a.faults.drop_rows_packet, "Do not send the K-th ROWS packet (from 1)")
         ->check(whole_number(1, most));
     app.add_option("--drop-times", a.faults.drop_times,

@@ -12,6 +12,41 @@ SimHardware::SimHardware(std::vector<std::uint8_t> tape, SimOptions options)
       punch_period_us_(static_cast<std::uint64_t>(std::llround(1e6 / options.punch_rate))) {
     if (o_.head_at_end) position_ = tape_.size();
     for (const auto& [at, f] : o_.row_flags) row_flags_[at] |= f;
+    if (o_.control) control_.emplace(*o_.control);
+}
+
+void SimHardware::frame_clock(std::uint32_t first_in_us) {
+    clock_on_ = true;
+    next_slot_at_ = now_ + first_in_us;
+}
+
+void SimHardware::run_control(std::uint64_t t, tapefw::Engine& engine) {
+    for (;;) {
+        std::uint64_t change = control_->next_change();
+        std::uint64_t slot = clock_on_ ? next_slot_at_ : UINT64_MAX;
+        if (std::min(change, slot) > t) return;
+        if (change <= slot) {
+            // The line first when both are due: a stop seen at a slot's moment holds that slot.
+            now_ = std::max(now_, change);
+            engine.on_drive(control_->change(change));
+            continue;
+        }
+        now_ = std::max(now_, slot);
+        std::uint8_t levels = 0;
+        switch (engine.next_frame(levels)) {
+            case tapefw::Slot::frame:
+                // The control reads the lines as this wiring makes them.
+                control_->strobe(slot + wiring_.setup_us, static_cast<std::uint8_t>(levels ^ wiring_.data_invert),
+                                 wiring_.period_us());
+                break;
+            case tapefw::Slot::hold:
+                break;
+            case tapefw::Slot::stop:
+                clock_on_ = false;
+                continue;
+        }
+        next_slot_at_ = slot + wiring_.period_us();
+    }
 }
 
 void SimHardware::drive(tapefw::Drive d) {
@@ -31,6 +66,11 @@ void SimHardware::drive(tapefw::Drive d) {
 }
 
 void SimHardware::advance_to(std::uint64_t t, tapefw::Engine& engine) {
+    if (control_) run_control(t, engine);
+    read_rows(t, engine);
+}
+
+void SimHardware::read_rows(std::uint64_t t, tapefw::Engine& engine) {
     while (moving_ && next_row_at_ <= t) {
         now_ = next_row_at_;
         const auto& tape = reader_tape();
@@ -59,6 +99,8 @@ void SimHardware::advance_to(std::uint64_t t, tapefw::Engine& engine) {
 std::uint64_t SimHardware::next_event() const {
     std::uint64_t next = now_ + 1000;
     if (moving_ && next_row_at_ < next) next = next_row_at_;
+    if (clock_on_ && next_slot_at_ < next) next = std::max(next_slot_at_, now_);
+    if (control_ && control_->next_change() < next) next = std::max(control_->next_change(), now_);
     if (punched_once_ && last_punch_ + punch_period_us_ < next && last_punch_ + punch_period_us_ > now_)
         next = last_punch_ + punch_period_us_;
     return next;

@@ -5,7 +5,9 @@
 // head while it brakes (the stopping distance) are still read. Driven in reverse it reads the frames
 // before the head, last first. When the tape's end (or, in reverse, its start) has passed the head the
 // tape-out input goes on. A torn tape is one whose sprocket holes stop at a frame: no more
-// rows come, and tape-out stays off. The punch takes one row per cycle at its rate.
+// rows come, and tape-out stays off. The punch takes one row per cycle at its rate. With a control
+// (SimOptions::control) the board also stands in for a reader toward it: its frame clock asks the
+// engine for a frame each slot and strobes it to the control, whose start/stop line it watches.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "adapter_sim/sim_control.hpp"
 #include "core/engine.hpp"
 #include "core/hardware.hpp"
 
@@ -32,6 +35,7 @@ struct SimOptions {
     /// Frames (0-based) the board flags as it samples them (row_flag bits: no sprocket, timing, marginal).
     std::vector<std::pair<std::uint64_t, std::uint8_t>> row_flags{};
     std::vector<std::uint64_t> miss_hole_at{};  ///< rows N (from 1) punched with their lowest hole missing (a worn pin)
+    std::optional<ControlOptions> control{};    ///< a control reading from the adapter (the emulate role)
 };
 
 class SimHardware final : public tapefw::Hardware {
@@ -72,6 +76,13 @@ public:
     void punch(std::uint8_t row) override;
     std::uint16_t status_lines() override;
     void configure(const tapefw::Config& config) override { config_ = config; }
+    void configure_emulation(const tapefw::Wiring& wiring) override { wiring_ = wiring; }
+    std::uint8_t drive_inputs() override { return control_ ? control_->lines() : 0; }
+    void frame_clock(std::uint32_t first_in_us) override;
+
+    /// The control reading from the adapter, when there is one.
+    const SimControl* control() const { return control_ ? &*control_ : nullptr; }
+    const tapefw::Wiring& wiring() const { return wiring_; }
 
 private:
     std::vector<std::uint8_t> tape_;
@@ -91,6 +102,13 @@ private:
     std::uint64_t starts_ = 0;
     std::uint64_t late_punches_ = 0, longest_punch_gap_us_ = 0, underruns_ = 0;
     bool punch_idle_ = false;
+    std::optional<SimControl> control_;
+    tapefw::Wiring wiring_{};
+    bool clock_on_ = false;
+    std::uint64_t next_slot_at_ = 0;
+    /// The control's line changes and the frame slots due by t, in time order.
+    void run_control(std::uint64_t t, tapefw::Engine& engine);
+    void read_rows(std::uint64_t t, tapefw::Engine& engine);
     std::map<std::uint64_t, std::uint8_t> row_flags_;  ///< o_.row_flags by frame, ORed: looked up every row
     const std::vector<std::uint8_t>& reader_tape() const { return o_.loop ? punched_ : tape_; }
 };

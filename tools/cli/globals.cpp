@@ -1,5 +1,6 @@
 #include "cli/globals.hpp"
 
+#include "cli/files.hpp"
 #include "cli/messages.hpp"
 #include "tape/file_io.hpp"
 
@@ -13,8 +14,10 @@ Globals& globals() {
 const tape::CodeTable* Globals::table() {
     if (eia_table.empty()) return nullptr;
     if (!loaded_table) {
+        note_input(eia_table);
         try {
-            auto bytes = tape::read_file(eia_table);
+            // A code table is a page of text: anything much bigger is not one (/dev/zero, a tape image).
+            auto bytes = tape::read_file(eia_table, max_table_bytes, tape::Errc::bad_table);
             loaded_table =
                 tape::CodeTable::parse(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
         } catch (const tape::Error& e) {

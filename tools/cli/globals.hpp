@@ -9,6 +9,9 @@
 
 namespace cli {
 
+/// The largest --eia-table file taken (a table is a few kilobytes of text).
+inline constexpr std::uint64_t max_table_bytes = 1 << 20;
+
 struct Globals {
     std::string program = "tape";    ///< what messages start with: tape-damage shares this code
     int verbosity = 0;               ///< -v steps up, -q down

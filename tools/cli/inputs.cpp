@@ -1,8 +1,12 @@
 #include "cli/inputs.hpp"
 
+#include <sys/stat.h>
+
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/messages.hpp"
 #include "tape/detect.hpp"
+#include "tape/limits.hpp"
 
 namespace cli {
 
@@ -26,6 +30,7 @@ tape::InputOptions input_options(const CodeChoice& choice, const std::string& fo
 std::unique_ptr<tape::Input> open_input(const std::string& path, const tape::InputOptions& options) {
     if (!options.detect_code && options.decode.code == tape::Code::eia && options.decode.parity != tape::Parity::even)
         fail(display_name(path), tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
+    note_input(path);
     std::unique_ptr<tape::Input> input;
     try {
         input = std::make_unique<tape::Input>(path.empty() ? "-" : path, options);
@@ -58,6 +63,15 @@ void say_other_reading(tape::Input& input, const std::string& name) {
     if (auto note = tape::other_reading(*input.detection(), forced)) say(name, with_hint(note->message, note->hint));
 }
 
+std::unique_ptr<tape::FileSource> open_source(const std::string& path) {
+    note_input(path);
+    try {
+        return std::make_unique<tape::FileSource>(path);
+    } catch (const tape::Error& e) {
+        fail(display_name(path), e);
+    }
+}
+
 TapeInput read_tape(const std::string& path, const std::string& format_id) {
     TapeInput in;
     in.name = path.empty() ? "-" : path;
@@ -65,11 +79,20 @@ TapeInput read_tape(const std::string& path, const std::string& format_id) {
     o.detect_code = false;
     auto input = open_input(in.name, o);
     in.format = input->format();
+    std::string name = display_name(in.name);
+    // A raw file's size is its frames: one too long for any tape is refused before it is read.
+    struct stat st {};
+    if (in.format->bytes_are_frames && in.name != "-" && ::stat(in.name.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+        static_cast<std::uint64_t>(st.st_size) > tape::max_tape_frames)
+        fail(name, tape::Errc::bad_image, std::string(tape::too_long_text));
     try {
-        for (auto frames = input->next_frames(); !frames.empty(); frames = input->next_frames())
+        for (auto frames = input->next_frames(); !frames.empty(); frames = input->next_frames()) {
+            if (in.frames.size() + frames.size() > tape::max_tape_frames)
+                fail(name, tape::Errc::bad_image, std::string(tape::too_long_text));
             in.frames.insert(in.frames.end(), frames.begin(), frames.end());
+        }
     } catch (const tape::Error& e) {
-        fail(display_name(in.name), e);
+        fail(name, e);
     }
     return in;
 }

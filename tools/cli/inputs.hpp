@@ -8,6 +8,7 @@
 
 #include "cli/options.hpp"
 #include "tape/decode.hpp"
+#include "tape/file_io.hpp"
 #include "tape/image.hpp"
 #include "tape/input.hpp"
 
@@ -35,7 +36,11 @@ const tape::DecodeOptions& decide_code(tape::Input& input, const std::string& na
 /// another way (or is a 5-track, binary or text file), with the hint to read it so.
 void say_other_reading(tape::Input& input, const std::string& name);
 
-/// Reads IN ("-" = stdin) whole as an image: --format, else by extension, else by content.
+/// IN ("-" = stdin) opened to be read as bytes, a chunk at a time (a text to encode); failure ends the program.
+std::unique_ptr<tape::FileSource> open_source(const std::string& path);
+
+/// Reads IN ("-" = stdin) whole as an image: --format, else by extension, else by content. A tape
+/// longer than tape::max_tape_frames ends the program (bad data, exit 1) before it fills memory.
 TapeInput read_tape(const std::string& path, const std::string& format_id);
 
 }  // namespace cli

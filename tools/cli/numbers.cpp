@@ -63,4 +63,31 @@ CLI::Validator real_number(double min, double max) {
         range);
 }
 
+CLI::Validator line_mask() {
+    return CLI::Validator(
+        [](std::string& s) -> std::string {
+            bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+            std::string digits = hex ? s.substr(2) : s;
+            bool ok = !digits.empty() && digits.size() <= 4 &&
+                      digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") == std::string::npos;
+            unsigned long v = ok ? std::stoul(digits, nullptr, hex ? 16 : 10) : 256;
+            if (v > 255) return "must be a mask of the 8 data lines, 0 to 255 or 0x00 to 0xFF, not '" + s + "'";
+            s = std::to_string(v);
+            return "";
+        },
+        "MASK");
+}
+
+std::optional<std::uint8_t> byte_value(const std::string& text) {
+    if (text.size() == 1) return static_cast<std::uint8_t>(text[0]);
+    bool hex = text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
+    std::string_view digits = std::string_view(text).substr(hex ? 2 : 0);
+    unsigned v = 0;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v, hex ? 16 : 10);
+    bool plain = !digits.empty() && digits.size() <= 3 &&
+                 digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") == std::string_view::npos;
+    if (!plain || ec != std::errc{} || end != digits.data() + digits.size() || v > 255) return std::nullopt;
+    return static_cast<std::uint8_t>(v);
+}
+
 }  // namespace cli

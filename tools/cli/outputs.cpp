@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "cli/files.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
 #include "tape/file_io.hpp"
@@ -20,13 +21,32 @@ const tape::ImageFormat& output_format(const std::string& format_id, const std::
     return *format;
 }
 
+std::string image_text(const tape::ImageFormat& format, std::span<const tape::Frame> frames,
+                       const tape::ImageWriteOptions& options, const std::string& path) {
+    try {
+        return format.write(frames, options);
+    } catch (const tape::Error& e) {
+        fail(path == "-" ? "stdout" : path, e);
+    }
+}
+
 void refuse_binary_terminal(const std::string& path, bool binary, bool force) {
     if ((path.empty() || path == "-") && binary && ::isatty(STDOUT_FILENO) && !force)
         fail("", tape::Errc::usage,
              "refusing to write a binary tape image to a terminal (use -o FILE, --format holes, or --force)");
 }
 
+std::unique_ptr<tape::OutputFile> open_output(const std::string& path, bool force) {
+    claim_output(path);
+    try {
+        return std::make_unique<tape::OutputFile>(path, force);
+    } catch (const tape::Error& e) {
+        fail(path.empty() || path == "-" ? "stdout" : path, e);
+    }
+}
+
 void write_output(const std::string& path, const std::string& data, bool binary, bool force) {
+    claim_output(path);
     if (path.empty() || path == "-") {
         refuse_binary_terminal(path, binary, force);
         std::cout.write(data.data(), static_cast<std::streamsize>(data.size()));

@@ -1,8 +1,10 @@
 #include "cli/run.hpp"
 
 #include <iostream>
+#include <new>
 
 #include "cli/globals.hpp"
+#include "cli/messages.hpp"
 
 namespace cli {
 
@@ -24,6 +26,19 @@ int parse_and_run(CLI::App& app, int argc, char** argv, const std::string& help)
         return usage;
     } catch (const Exit& e) {
         return e.status;
+    } catch (const tape::Error& e) {
+        // What a command did not catch and name itself still ends in a message, never in abort().
+        say("", with_hint(e.what(), e.hint()));
+        return status_for(e.code());
+    } catch (const std::bad_alloc&) {
+        say("", "out of memory");
+        return io_failure;
+    } catch (const std::exception& e) {
+        say("", std::string("internal error: ") + e.what());
+        return io_failure;
+    } catch (...) {
+        say("", "internal error");
+        return io_failure;
     }
     return ok;
 }

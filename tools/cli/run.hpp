@@ -22,7 +22,9 @@ inline constexpr int interrupted_status = 130;
 
 /// main()'s end for every program of the toolkit: parses argv and runs what it calls. --help and
 /// --version are answered; a usage error is said as "PROGRAM: what" then "PROGRAM: run HELP for the
-/// options" (HELP defaults to 'PROGRAM --help'), with status usage; Exit ends with its status.
+/// options" (HELP defaults to 'PROGRAM --help'), with status usage; Exit ends with its status. Every
+/// other exception ends in a message too: a tape::Error with its status, running out of memory or an
+/// internal error with io_failure.
 int parse_and_run(CLI::App& app, int argc, char** argv, const std::string& help = "");
 
 }  // namespace cli

@@ -33,9 +33,10 @@ void install_interrupt_handler() {
     struct sigaction sa {};
     sa.sa_handler = on_interrupt;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
-    signal(SIGPIPE, SIG_IGN);
+    // A hang-up (the terminal closed, an ssh session dropped) stops a device run as Ctrl-C does:
+    // every frame already read kept, the line left in a known state.
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(sig, &sa, nullptr);
+    ::signal(SIGPIPE, SIG_IGN);
 }
 
 }  // namespace cli

@@ -9,7 +9,7 @@ namespace cli {
 /// signal would. Device runs replace this with their own stop flag.
 void install_output_cleanup();
 
-/// Set by SIGINT/SIGTERM once install_interrupt_handler() ran; device runs stop cleanly on it.
+/// Set by SIGINT, SIGTERM or SIGHUP once install_interrupt_handler() ran; device runs stop cleanly on it.
 std::atomic<bool>& interrupted();
 void install_interrupt_handler();
 

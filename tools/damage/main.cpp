@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
 #include "cli/json.hpp"
@@ -86,6 +87,7 @@ void run(const DamageArgs& a) {
     } catch (const tape::Error& e) {
         fail("", e);
     }
+    cli::check_outputs({{"-o", a.output}, {"--log", a.log}});
     refuse_existing(a.output, a.force);
     refuse_existing(a.log, a.force);
     cli::TapeInput in = cli::read_tape(a.input, a.format);

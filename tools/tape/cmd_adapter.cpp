@@ -2,12 +2,14 @@
 // and its link measured.
 #include <cstdio>
 
+#include "adapter_wiring.hpp"
 #include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "cli/outputs.hpp"
 #include "commands.hpp"
 #include "device_options.hpp"
 #include "tape/adapter.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 namespace {
@@ -16,9 +18,9 @@ std::string info_text(const tape::AdapterInfo& i) {
     std::string tracks;
     for (int n : i.tracks) tracks += (tracks.empty() ? "" : ", ") + std::to_string(n);
     std::string out;
-    out += "serial\t" + i.serial + "\n";
+    out += "serial\t" + tape::visible(i.serial) + "\n";  // the adapter's own string: no terminal escapes
     out += "protocol\t" + std::to_string(i.protocol) + "\n";
-    out += "firmware\t" + i.firmware + "\n";
+    out += "firmware\t" + tape::visible(i.firmware) + "\n";
     out += "reader\t" + std::string(i.reader ? "yes" : "no") +
            (i.reader ? ", " + std::to_string(i.max_read_rate) + " frames/s" + (i.reverse ? ", reverse" : "") +
                            (i.row_flags ? ", flags doubtful rows" : "")
@@ -26,6 +28,7 @@ std::string info_text(const tape::AdapterInfo& i) {
            "\n";
     out += "punch\t" + std::string(i.punch ? "yes" : "no") +
            (i.punch ? ", " + std::to_string(i.max_punch_rate) + " rows/s" : "") + "\n";
+    out += "emulate\t" + std::string(i.emulate ? "yes, stands in for a reader toward a control" : "no") + "\n";
     out += "tracks\t" + tracks + "\n";
     out += "buffers\t" + std::to_string(i.read_buffer) + " rows read, " + std::to_string(i.punch_buffer) +
            " rows to punch\n";
@@ -51,22 +54,6 @@ std::string config_text(const tape::AdapterConfig& c) {
     return out;
 }
 
-// A mask of the eight data lines, in decimal or 0x hex: a wiring is read off as bits.
-CLI::Validator line_mask() {
-    return CLI::Validator(
-        [](std::string& s) -> std::string {
-            bool hex = s.size() > 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
-            std::string digits = hex ? s.substr(2) : s;
-            bool ok = !digits.empty() && digits.size() <= 4 &&
-                      digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") == std::string::npos;
-            unsigned long v = ok ? std::stoul(digits, nullptr, hex ? 16 : 10) : 256;
-            if (v > 255) return "must be a mask of the 8 data lines, 0 to 255 or 0x00 to 0xFF, not '" + s + "'";
-            s = std::to_string(v);
-            return "";
-        },
-        "MASK");
-}
-
 void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
     auto c = std::make_shared<tape::AdapterConfig>();
     auto strobe = std::make_shared<std::string>("rising");
@@ -74,7 +61,8 @@ void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
     auto* cfg = sub.add_subcommand(
         "config",
         "Send the adapter its unit's line settings (a CONFIG: every setting at once, defaults for those "
-        "not given) and print them");
+        "not given) and, when any emulate option is given, how it is wired to a control's reader input (a WIRING), "
+        "and print them");
     cfg->add_option("device", *device, "Device string: adapter:/dev/ttyACM0")->required();
     cfg->add_option("--invert", c->data_invert,
                     "Data lines that read a hole as a low level: a mask, bit n for track n+1")
@@ -111,15 +99,22 @@ void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
                     "Milliseconds the host may be silent before the adapter stops reader and punch (0: never)")
         ->check(whole_number(0, 65535))
         ->capture_default_str();
-    cfg->callback([device, c, strobe, drive] {
+    auto wiring = std::make_shared<WiringArgs>();
+    add_wiring_options(*cfg, wiring);
+    cfg->callback([device, c, strobe, drive, wiring, cfg] {
         c->strobe_falling = *strobe == "falling";
         c->drive_pulse = *drive == "pulse";
+        finish_wiring(*cfg, *wiring, c->tracks);
+        // Checked before anything is sent: a refused wiring leaves the line settings as they were.
+        if (auto problem = tape::adapter_wiring_problem(wiring->wiring); wiring->given && !problem.empty())
+            fail("", tape::Errc::usage, "the emulate wiring: " + problem);
         try {
             tape::adapter_configure(*device, *c);
+            if (wiring->given) tape::adapter_configure_emulation(*device, wiring->wiring);
         } catch (const tape::Error& e) {
             fail("", e);
         }
-        write_output("-", config_text(*c), false, false);
+        write_output("-", config_text(*c) + (wiring->given ? wiring_text(wiring->wiring) : ""), false, false);
     });
 }
 

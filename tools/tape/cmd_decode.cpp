@@ -2,6 +2,7 @@
 // A binary loader tape (PDP-8 RIM or BIN, PDP-11 absolute loader) gives its memory image instead.
 #include <memory>
 
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
@@ -50,6 +51,7 @@ bool say_decoded(const std::string& name, const tape::Diagnostic& d, bool raw, b
     return true;
 }
 
+// OUT, claimed by run() before the tape was read.
 std::unique_ptr<tape::OutputFile> open_output_or_fail(const std::string& path, bool force) {
     try {
         return std::make_unique<tape::OutputFile>(path, force);
@@ -181,6 +183,7 @@ void run(const DecodeArgs& a) {
     io.decode.unshift_on_space = a.unshift_on_space;
     if (a.to != "text") io.detect_code = false;  // a binary tape has no character code to find
     auto in = open_input(a.input, io);
+    claim_output(a.output);  // refused before anything is read when it is the input
     if (a.to == "text")
         decode_text(a, *in, name);
     else

@@ -8,6 +8,7 @@
 #include "tape/adapter.hpp"
 #include "tape/device.hpp"
 #include "tape/error.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace cli {
 
@@ -31,16 +32,19 @@ void add_devices(CLI::App& app) {
         for (const auto& p : ports) {
             char ids[16];
             std::snprintf(ids, sizeof ids, "%04x:%04x", p.vendor, p.product);
-            out += p.device + "\t" + ids + (p.serial.empty() ? "" : " serial " + p.serial) +
-                   (p.description.empty() ? "" : "\t" + p.description) + "\n";
+            // The strings are the device's own: what a terminal would act on is spelled out.
+            out += tape::visible(p.device) + "\t" + ids +
+                   (p.serial.empty() ? "" : " serial " + tape::visible(p.serial)) +
+                   (p.description.empty() ? "" : "\t" + tape::visible(p.description)) + "\n";
             if (!p.adapter || !*probe) continue;
             try {
                 auto i = tape::adapter_info(p.device);
-                out += "\tprotocol " + std::to_string(i.protocol) + ", firmware " + i.firmware +
+                out += "\tprotocol " + std::to_string(i.protocol) + ", firmware " + tape::visible(i.firmware) +
                        (i.reader ? ", reader " + std::to_string(i.max_read_rate) + " frames/s" : "") +
-                       (i.punch ? ", punch " + std::to_string(i.max_punch_rate) + " rows/s" : "") + "\n";
+                       (i.punch ? ", punch " + std::to_string(i.max_punch_rate) + " rows/s" : "") +
+                       (i.emulate ? ", emulates a reader" : "") + "\n";
             } catch (const tape::Error& e) {
-                out += "\tno answer: " + std::string(e.what()) + "\n";
+                out += "\tno answer: " + tape::visible(e.what()) + "\n";
             }
         }
         write_output("-", out, false, false);

@@ -7,6 +7,7 @@
 #include "cli/signals.hpp"
 #include "commands.hpp"
 #include "device_options.hpp"
+#include "tape/adapter.hpp"
 
 namespace cli {
 namespace {
@@ -15,7 +16,37 @@ struct EmulateArgs {
     std::string input, device, format, code = "iso", parity = "even", flow, search = ":", rewind = "%";
     double rate = 1500;
     bool send_leader = false;
+    std::vector<std::string> serial_only;  ///< the serial line's options given
 };
+
+// Through a USB tape adapter wired to the control's reader input: the control's own lines start, stop,
+// turn and rewind; the serial line's options have nothing to act on.
+void run_on_adapter(const EmulateArgs& a, const std::vector<std::string>& given, tape::EmulatorOptions o) {
+    for (const auto& option : given)
+        fail("", tape::Errc::usage,
+             option +
+                 " is for a serial line; through an adapter the control's own lines start, stop and rewind the "
+                 "reader, and its frame rate is the adapter's (tape adapter config --frame-rate)");
+    TapeInput in = read_tape(a.input, a.format);
+    o.eia_table = globals().table();
+    install_interrupt_handler();
+    o.stop = &interrupted();
+    std::string name = display_name(in.name);
+    bool quiet = globals().verbosity < 0;
+    o.log = [&name, quiet](std::uint64_t frame, const std::string& what) {
+        if (!quiet) say(name, (frame ? "frame " + std::to_string(frame) + ": " : "") + what);
+    };
+    ProgressLine progress("emulating", false);
+    try {
+        auto r =
+            tape::adapter_emulate(a.device, in.frames, o, [&progress](const tape::LineProgress& p) { progress(p); });
+        if (globals().verbosity > 0)
+            say(name, std::to_string(r.frames_sent) + " frames taken by the control, " + std::to_string(r.starts) +
+                          " start(s), " + std::to_string(r.rewinds) + " rewind(s)");
+    } catch (const tape::Error& e) {
+        fail("", e);
+    }
+}
 
 void run(const EmulateArgs& a) {
     // Every option is checked before the device is opened: a refusal leaves nothing behind.
@@ -40,6 +71,7 @@ void run(const EmulateArgs& a) {
         if (seven(b) == tape::dc1 || seven(b) == tape::dc3)
             fail("", tape::Errc::usage,
                  "--search-char and --rewind-char cannot be DC1 or DC3: those start and stop the reader");
+    if (tape::is_adapter_device(a.device)) return run_on_adapter(a, a.serial_only, o);
     TapeInput in = read_tape(a.input, a.format);
     o.eia_table = globals().table();
     install_interrupt_handler();
@@ -66,7 +98,10 @@ void add_emulate(CLI::App& app) {
     auto a = std::make_shared<EmulateArgs>();
     auto* sub = app.add_subcommand("emulate", "Act as a tape reader holding IMAGE toward a controller on DEVICE");
     sub->add_option("input", a->input, "Tape image")->required();
-    sub->add_option("device", a->device, "Device string, e.g. serial:/dev/ttyUSB0?baud=9600")->required();
+    sub->add_option("device", a->device,
+                    "Device string, e.g. serial:/dev/ttyUSB0?baud=9600, or a USB tape adapter wired to the control's "
+                    "reader input: adapter:/dev/ttyACM0, usb:1209:0001, hid:1209:0001")
+        ->required();
     sub->add_option("--rate", a->rate, "Reader speed in frames per second (ФС-1501: 1500)")
         ->check(real_number(min_rate, max_rate))
         ->capture_default_str();
@@ -88,7 +123,11 @@ void add_emulate(CLI::App& app) {
                   "Send the blank leader too instead of starting at the first punched frame");
     sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))
         ->check(format_check(false));
-    sub->callback([a] { run(*a); });
+    sub->callback([a, sub] {
+        for (const char* option : {"--rate", "--flow", "--search-char", "--rewind-char"})
+            if (sub->count(option)) a->serial_only.push_back(option);
+        run(*a);
+    });
 }
 
 }  // namespace cli

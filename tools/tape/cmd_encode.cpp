@@ -1,6 +1,5 @@
 // tape encode: a text program -> a tape image.
 #include <cstdlib>
-#include <functional>
 #include <memory>
 #include <new>
 #include <span>
@@ -46,32 +45,43 @@ tape::EncodeOptions encode_options(const EncodeArgs& a, const std::string& in_na
     return o;
 }
 
-// The image being written: created once the first frames have encoded, so that a text the code cannot
-// carry leaves nothing behind; frames are written as they come.
-class ImageSink {
+// OUT, written a chunk of frames at a time. It is created once the first chunk has encoded, so that a
+// text the code cannot carry leaves nothing behind.
+class EncodedOutput {
 public:
-    ImageSink(const EncodeArgs& a, const tape::ImageFormat& format, const tape::FrameCode& code)
+    EncodedOutput(const EncodeArgs& a, const tape::ImageFormat& format, const tape::FrameCode& code)
         : a_(a), format_(format), writer_(format.make_writer(tape::ImageWriteOptions{&code})) {}
 
     void write(const std::vector<tape::Frame>& frames, bool last) {
         written_ += frames.size();
-        if (!out_) out_ = std::make_unique<tape::OutputFile>(a_.output, a_.force);
-        if (format_.bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
-            out_->write(std::string_view(reinterpret_cast<const char*>(frames.data()), frames.size()));
-            return;
+        if (!out_) out_ = open_output(a_.output, a_.force);
+        try {
+            if (format_.bytes_are_frames) {  // raw: the frames are the bytes, no copy into a string
+                out_->write(std::string_view(reinterpret_cast<const char*>(frames.data()), frames.size()));
+                return;
+            }
+            picture_.clear();
+            writer_->write(frames, picture_);
+            if (last) writer_->finish(picture_);
+            out_->write(picture_);
+        } catch (const tape::Error& e) {
+            fail(name(), e);
         }
-        picture_.clear();
-        writer_->write(frames, picture_);
-        if (last) writer_->finish(picture_);
-        out_->write(picture_);
     }
     void discard() {
         if (out_) out_->discard();
     }
-    void commit() { out_->commit(); }
+    void commit() {
+        try {
+            out_->commit();
+        } catch (const tape::Error& e) {
+            fail(name(), e);
+        }
+    }
     std::uint64_t written() const { return written_; }
 
 private:
+    std::string name() const { return a_.output == "-" ? "stdout" : a_.output; }
     const EncodeArgs& a_;
     const tape::ImageFormat& format_;
     std::unique_ptr<tape::ImageWriter> writer_;
@@ -80,74 +90,56 @@ private:
     std::uint64_t written_ = 0;
 };
 
-// The text read, encoded and handed to the sink a chunk at a time. Throws what the encoder throws.
-void encode_stream(tape::FileSource& source, tape::Encoder& encoder, ImageSink& sink, const std::string& out_name,
-                   const std::function<void()>& noticed) {
-    auto emit = [&](const std::vector<tape::Frame>& frames, bool last) {
-        try {
-            sink.write(frames, last);
-        } catch (const tape::Error& e) {
-            fail(out_name, e);
-        }
-    };
-    // Page-aligned: read() copies into it faster than into malloc's page + 16 bytes.
-    constexpr std::size_t chunk = 128 << 10;
-    std::unique_ptr<std::uint8_t, decltype(&std::free)> storage(
-        static_cast<std::uint8_t*>(std::aligned_alloc(4096, chunk)), &std::free);
-    if (!storage) throw std::bad_alloc();
-    std::span<std::uint8_t> buffer(storage.get(), chunk);
+// IN read, encoded and written a chunk at a time; a text the code cannot carry ends the program.
+void encode_chunks(tape::FileSource& source, tape::Encoder& encoder, EncodedOutput& out, const std::string& in_name) {
     std::vector<tape::Frame> frames;
-    for (std::size_t n; (n = source.read(buffer)) > 0;) {
-        encoder.feed(std::string_view(reinterpret_cast<const char*>(buffer.data()), n), frames);
-        noticed();
-        if (!frames.empty()) emit(frames, false);
-        frames.clear();
+    bool noted = false;
+    auto note_bom = [&] {
+        if (noted || !encoder.skipped_byte_order_mark()) return;
+        say_note(in_name, tape::byte_order_mark_note());
+        noted = true;
+    };
+    try {
+        // Page-aligned: read() copies into it faster than into malloc's page + 16 bytes.
+        constexpr std::size_t chunk = 128 << 10;
+        std::unique_ptr<std::uint8_t, decltype(&std::free)> storage(
+            static_cast<std::uint8_t*>(std::aligned_alloc(4096, chunk)), &std::free);
+        if (!storage) throw std::bad_alloc();
+        std::span<std::uint8_t> buffer(storage.get(), chunk);
+        for (std::size_t n; (n = source.read(buffer)) > 0;) {
+            encoder.feed(std::string_view(reinterpret_cast<const char*>(buffer.data()), n), frames);
+            note_bom();
+            if (!frames.empty()) out.write(frames, false);
+            frames.clear();
+        }
+        encoder.finish(frames);
+    } catch (const tape::Error& e) {
+        out.discard();
+        note_bom();
+        fail(in_name, e);
     }
-    encoder.finish(frames);
-    emit(frames, true);
+    out.write(frames, true);
 }
 
 void run(const EncodeArgs& a) {
     std::string in_name = display_name(a.input);
-    std::string out_name = a.output == "-" ? "stdout" : a.output;
     tape::EncodeOptions o = encode_options(a, in_name);
     const tape::ImageFormat& format = output_format(a.format, a.output);
     refuse_binary_terminal(a.output, format.binary, a.force);
     tape::FrameCode code = tape::FrameCode::make(o.code, o.parity, o.eia_table);
     std::unique_ptr<tape::Encoder> encoder;
-    std::unique_ptr<tape::FileSource> source;
     try {
         encoder = std::make_unique<tape::Encoder>(o);  // a label the font or the leader cannot take fails here
     } catch (const tape::Error& e) {
         fail(a.label.empty() ? in_name : "--label", e);
     }
-    try {
-        source = std::make_unique<tape::FileSource>(a.input);
-    } catch (const tape::Error& e) {
-        fail(in_name, e);
-    }
-    ImageSink sink(a, format, code);
-    bool noted = false;
-    auto note_bom = [&] {
-        if (noted || !encoder->skipped_byte_order_mark()) return;
-        say_note(in_name, tape::byte_order_mark_note());
-        noted = true;
-    };
-    try {
-        encode_stream(*source, *encoder, sink, out_name, note_bom);
-    } catch (const tape::Error& e) {
-        sink.discard();
-        note_bom();
-        fail(in_name, e);
-    }
-    try {
-        sink.commit();
-    } catch (const tape::Error& e) {
-        fail(out_name, e);
-    }
+    EncodedOutput out(a, format, code);
+    auto source = open_source(a.input);
+    encode_chunks(*source, *encoder, out, in_name);
+    out.commit();
     if (const auto& mark = encoder->skipped_end_of_file_mark()) say_note(in_name, tape::dos_end_of_file_note(*mark));
     if (globals().verbosity > 0)
-        say(in_name, std::to_string(sink.written()) + " frames written as " + std::string(format.id));
+        say(in_name, std::to_string(out.written()) + " frames written as " + std::string(format.id));
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 // tape feed: send a program to a controller over a line, as a tape reader would (DNC, drip feed).
+#include "cli/inputs.hpp"
 #include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "commands.hpp"
@@ -39,9 +40,15 @@ void run(const FeedArgs& a) {
              "--xon '" + a.xon + "' and --xoff '" + a.xoff + "' are the same character (bit 8 is not compared)");
     if (a.show && a.from_block.empty()) fail("", tape::Errc::usage, "--show shows a restart: give --from-block");
     if (!a.show && a.device.empty()) fail("", tape::Errc::usage, "DEVICE is required (or --show with --from-block)");
-    std::vector<tape::Frame> frames = a.from_block.empty() ? frames_to_send(a.input, a.profile)
-                                                           : restart_frames(a.input, a.profile, a.from_block, a.show);
-    if (a.show) return;
+    // A restart is made whole first (its modal state is rebuilt from the blocks before it); any other
+    // program or tape is read as it is sent.
+    std::optional<SendInput> restart;
+    if (!a.from_block.empty()) {
+        auto frames = restart_frames(a.input, a.profile, a.from_block, a.show);
+        if (a.show) return;
+        restart = frames_in_memory(std::move(frames), display_name(a.input));
+    }
+    SendInput frames = restart ? std::move(*restart) : open_frames_to_send(a.input, a.profile);
     deliver_or_fail(Delivery{.device = a.device,
                              .use = tape::DeviceUse::both,
                              .format = a.profile.format,

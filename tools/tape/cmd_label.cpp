@@ -29,7 +29,8 @@ void run(const LabelArgs& a) {
     }
     frames.insert(frames.end(), tape::label_blank_around, tape::blank_frame);
     const tape::ImageFormat& format = output_format(a.format, a.output);
-    write_output(a.output, format.write(frames, tape::ImageWriteOptions{&frame_code}), format.binary, a.force);
+    write_output(a.output, image_text(format, frames, tape::ImageWriteOptions{&frame_code}, a.output), format.binary,
+                 a.force);
 }
 
 }  // namespace

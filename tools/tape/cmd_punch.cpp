@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "device_options.hpp"
 #include "send.hpp"
+#include "tape/limits.hpp"
 
 namespace cli {
 namespace {
@@ -30,7 +31,11 @@ void verify(const PunchArgs& a, const std::vector<tape::Frame>& punched) {
     tape::ReceiveOptions o;
     o.idle_timeout = std::chrono::milliseconds(static_cast<long long>(a.verify_timeout * 1000));
     o.stop = &interrupted();
-    o.sink = [&read](std::span<const tape::Frame> frames) { read.insert(read.end(), frames.begin(), frames.end()); };
+    o.sink = [&](std::span<const tape::Frame> frames) {
+        if (read.size() + frames.size() > tape::max_tape_frames)
+            fail(a.verify, tape::Errc::io, "the read-back " + std::string(tape::too_long_text));
+        read.insert(read.end(), frames.begin(), frames.end());
+    };
     try {
         tape::receive_frames(*reader, o);
     } catch (const tape::Error& e) {
@@ -56,7 +61,8 @@ void verify(const PunchArgs& a, const std::vector<tape::Frame>& punched) {
 }
 
 void run(const PunchArgs& a) {
-    TapeInput in = read_tape(a.input, a.format);
+    SendInput in = open_image_to_send(a.input, a.format);  // read as it is punched
+    if (!a.verify.empty()) in.keep();                      // to compare the read-back with
     tape::SendOptions o;
     o.rate = a.rate;
     deliver_or_fail(Delivery{.device = a.device,
@@ -64,8 +70,8 @@ void run(const PunchArgs& a) {
                              .format = a.format,
                              .force = a.force,
                              .progress = a.progress},
-                    in.frames, o, "punched");
-    if (!a.verify.empty()) verify(a, in.frames);
+                    in, o, "punched");
+    if (!a.verify.empty()) verify(a, in.kept());
 }
 
 }  // namespace

@@ -78,7 +78,7 @@ void add_render(CLI::App& app) {
     sub->add_option("--to", a->to, "Last frame drawn (default: the end)")
         ->check(whole_number(1, std::numeric_limits<std::uint32_t>::max()));
     sub->add_option("--strip-length", a->strip_mm, "Length of tape in one strip, in mm; longer tapes wrap")
-        ->check(CLI::Range(2.54, 100000.0))
+        ->check(real_number(2.54, 100000.0))
         ->capture_default_str();
     sub->add_flag("--mirror", a->mirror, "Seen from the other side: track 1 on top");
     sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))

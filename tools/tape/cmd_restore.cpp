@@ -1,5 +1,6 @@
 // tape restore: one tape from several reads of a damaged one, with a report of what was recovered,
 // guessed or lost (tape/restore.hpp).
+#include "cli/files.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
@@ -20,6 +21,7 @@ struct RestoreArgs {
 };
 
 void run(const RestoreArgs& a) {
+    check_outputs({{"-o", a.output}, {"--report", a.report}, {"--html", a.html}});
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     const tape::ImageFormat& out_format = output_format(a.format, a.output);

@@ -25,7 +25,7 @@ struct SearchArgs {
 
 std::string hit(const ProgramInput& in, const tape::Location& where, const std::string& what) {
     return position_text(where, in.from_tape) + (in.from_tape ? " (line " + std::to_string(where.line) + ")" : "") +
-           ": " + tape::visible(what) + "\n";
+           ": " + tape::visible(what) + "\n";  // the tape's bytes: controls spelled out
 }
 
 // Block numbers have at most 9 digits on any controller; more is a typing mistake, not a block.

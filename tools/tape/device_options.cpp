@@ -5,11 +5,20 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli/files.hpp"
 #include "cli/messages.hpp"
+#include "cli/numbers.hpp"
 
 namespace cli {
 
 std::unique_ptr<tape::Transport> open_device_or_fail(const std::string& device, tape::DeviceUse use, bool replace) {
+    // A file: device is an input or an output of the run like any other file.
+    if (auto path = file_device_path(device)) {
+        if (use == tape::DeviceUse::read)
+            note_input(*path);
+        else
+            claim_output(*path);
+    }
     try {
         return tape::open_device(device, use, replace);
     } catch (const tape::Error& e) {
@@ -49,13 +58,7 @@ std::optional<std::string> file_device_path(const std::string& device) {
 }
 
 std::uint8_t parse_byte(const std::string& text, const std::string& option) {
-    try {
-        std::size_t used = 0;
-        unsigned long v = std::stoul(text, &used, 0);
-        if (used == text.size() && v < 256) return static_cast<std::uint8_t>(v);
-    } catch (const std::exception&) {
-    }
-    if (text.size() == 1) return static_cast<std::uint8_t>(text[0]);
+    if (auto v = byte_value(text)) return *v;
     fail("", tape::Errc::usage, option + " takes a character or a byte value such as 0x11, not '" + text + "'");
 }
 

@@ -1,5 +1,6 @@
 #include "send.hpp"
 
+#include "cli/files.hpp"
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
@@ -44,12 +45,9 @@ tape::InputOptions feed_input_options(const FeedProfile& p) {
     return io;
 }
 
-std::vector<tape::Frame> frames_to_send(const std::string& path, const FeedProfile& p) {
-    auto input = open_input(path, feed_input_options(p));
-    return frames_to_send(*input, display_name(path), p);
-}
+namespace {
 
-std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& name, const FeedProfile& p) {
+tape::FeedOptions feed_options(const FeedProfile& p) {
     tape::InputOptions io = feed_input_options(p);
     tape::FeedOptions o;
     o.encode.code = tape::parse_code(p.choice.code).value_or(tape::Code::iso);  // auto: a text program in ISO
@@ -63,6 +61,25 @@ std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& n
     o.replace_trailer = p.trailer_given;
     o.percent = p.percent;
     o.dialect = tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic);
+    return o;
+}
+
+// The frames of a restart, made whole before anything is sent.
+class FramesInMemory : public tape::FrameSource {
+public:
+    explicit FramesInMemory(std::vector<tape::Frame> frames) : frames_(std::move(frames)), source_(frames_) {}
+    std::span<const tape::Frame> next() override { return source_.next(); }
+    std::uint64_t total() const override { return frames_.size(); }
+
+private:
+    std::vector<tape::Frame> frames_;
+    tape::SpanSource source_;
+};
+
+}  // namespace
+
+std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& name, const FeedProfile& p) {
+    tape::FeedOptions o = feed_options(p);
     try {
         tape::DialectChoice chosen;
         auto frames = tape::frames_to_send(input, o, &chosen);
@@ -73,10 +90,63 @@ std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& n
     }
 }
 
+SendInput open_frames_to_send(const std::string& path, const FeedProfile& p) {
+    SendInput in;
+    in.name_ = display_name(path);
+    in.input_ = open_input(path, feed_input_options(p));
+    tape::FeedOptions o = feed_options(p);
+    try {
+        tape::DialectChoice chosen;
+        in.frames_ = tape::feed_source(*in.input_, o, &chosen);
+        if (!in.input_->is_image()) {
+            say_dialect(in.name_, chosen);
+            in.code_ = tape::FrameCode::make(o.encode.code, o.encode.parity, o.encode.eia_table);
+        }
+    } catch (const tape::Error& e) {
+        fail(in.name_, e);
+    }
+    return in;
+}
+
+SendInput frames_in_memory(std::vector<tape::Frame> frames, const std::string& name,
+                           std::optional<tape::FrameCode> code) {
+    SendInput in;
+    in.name_ = name;
+    // A holes picture shows the frames' characters in the code they are in, when one fits.
+    if (!code)
+        if (auto detected = tape::detect_code(frames).code)
+            code = tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
+    in.code_ = code;
+    in.frames_ = std::make_unique<FramesInMemory>(std::move(frames));
+    return in;
+}
+
+SendInput open_image_to_send(const std::string& path, const std::string& format_id) {
+    FeedProfile p;
+    p.format = format_id;
+    p.kind = "image";
+    return open_frames_to_send(path, p);
+}
+
+std::span<const tape::Frame> SendInput::next() {
+    std::span<const tape::Frame> chunk;
+    try {
+        chunk = frames_->next();
+    } catch (const tape::Error& e) {
+        fail(name_, e);
+    }
+    if (keep_) {
+        if (kept_.size() + chunk.size() > tape::max_tape_frames)
+            fail(name_, tape::Errc::usage, std::string(tape::too_long_text));
+        kept_.insert(kept_.end(), chunk.begin(), chunk.end());
+    }
+    return chunk;
+}
+
 namespace {
 
-void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, tape::SendOptions o,
-                  const std::string& verb, bool progress_forced) {
+void send_or_fail(tape::Transport& line, SendInput& frames, tape::SendOptions o, const std::string& verb,
+                  bool progress_forced) {
     o.stop = &interrupted();
     ProgressLine progress(verb, progress_forced);
     o.progress = [&progress](const tape::LineProgress& p) { progress(p); };
@@ -87,8 +157,8 @@ void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, ta
         fail("", e);
     }
     if (r.stopped) {
-        say(line.name(),
-            "stopped after " + std::to_string(r.sent) + " of " + std::to_string(frames.size()) + " frames");
+        say(line.name(), "stopped after " + std::to_string(r.sent) +
+                             (frames.total() ? " of " + std::to_string(frames.total()) : std::string()) + " frames");
         throw Exit{interrupted_status};
     }
     if (globals().verbosity > 0)
@@ -96,18 +166,39 @@ void send_or_fail(tape::Transport& line, std::span<const tape::Frame> frames, ta
             verb + " " + std::to_string(r.sent) + " frames, " + std::to_string(r.pauses) + " pause(s) (XOFF)");
 }
 
-// Holes pictures are annotated with the characters of the code the frames are in, when one fits.
-std::string image_text(const tape::ImageFormat& format, std::span<const tape::Frame> frames) {
-    std::optional<tape::FrameCode> code;
-    if (auto detected = tape::detect_code(frames).code)
-        code = tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
-    return format.write(frames, tape::ImageWriteOptions{code ? &*code : nullptr});
+// The code a holes picture shows the frames' characters in: a text program's own, or the one detected
+// from the start of an image (its read-ahead, the whole of most tapes).
+std::optional<tape::FrameCode> picture_code(tape::Input* input, const std::optional<tape::FrameCode>& own) {
+    if (own) return own;
+    if (!input || !input->is_image()) return std::nullopt;
+    if (auto detected = input->detect().code)
+        return tape::FrameCode::make(*detected, tape::Parity::even, globals().table());
+    return std::nullopt;
+}
+
+// A file: device gets the image written as the frames come, made final at the end (atomically).
+std::uint64_t write_image_file(const std::string& path, const tape::ImageFormat& format, SendInput& frames,
+                               const std::optional<tape::FrameCode>& code, bool force) {
+    auto writer = format.make_writer(tape::ImageWriteOptions{code ? &*code : nullptr});
+    tape::OutputFile out(path, force);
+    std::uint64_t written = 0;
+    std::string piece;
+    writer->write({}, piece);  // the format's header, also for an empty tape
+    for (auto chunk = frames.next(); !chunk.empty(); chunk = frames.next()) {
+        writer->write(chunk, piece);
+        out.write(piece);
+        piece.clear();
+        written += chunk.size();
+    }
+    writer->finish(piece);
+    out.write(piece);
+    out.commit();
+    return written;
 }
 
 }  // namespace
 
-void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, tape::SendOptions o,
-                     const std::string& verb) {
+void deliver_or_fail(const Delivery& to, SendInput& frames, tape::SendOptions o, const std::string& verb) {
     if (auto path = file_device_path(to.device)) {
         // The messages match the file backend's own, as a device string would get them.
         if (o.flow == tape::Flow::rtscts)
@@ -116,15 +207,22 @@ void deliver_or_fail(const Delivery& to, std::span<const tape::Frame> frames, ta
         const tape::ImageFormat* format =
             to.format.empty() ? tape::image_format_for_path(*path) : tape::find_image_format(to.format);
         if (!format) format = &tape::default_image_format();
-        // The default Ctrl-C handling stays: it removes the temporary, so the file is whole or absent.
+        claim_output(*path);
+        std::optional<tape::FrameCode> code;
         try {
-            tape::write_file_atomic(*path, image_text(*format, frames), to.force);
+            code = picture_code(frames.input_for_code(), frames.code());
+        } catch (const tape::Error& e) {
+            fail(frames.name(), e);
+        }
+        // The default Ctrl-C handling stays: it removes the temporary, so the file is whole or absent.
+        std::uint64_t written = 0;
+        try {
+            written = write_image_file(*path, *format, frames, code, to.force);
         } catch (const tape::Error& e) {
             fail(to.device, e);
         }
         if (globals().verbosity > 0)
-            say(to.device,
-                verb + " " + std::to_string(frames.size()) + " frames as a " + std::string(format->id) + " image");
+            say(to.device, verb + " " + std::to_string(written) + " frames as a " + std::string(format->id) + " image");
         return;
     }
     install_interrupt_handler();
