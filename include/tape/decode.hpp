@@ -88,6 +88,10 @@ public:
 private:
     void note_bad(Frame f, std::uint64_t index, std::uint64_t line, DecodeResult& out);
     void finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from);
+    struct ChunkStart {  // where a chunk's text, positions and findings begin in the result
+        std::size_t text = 0, positions = 0, diagnostics = 0;
+    };
+    void settle_chunk(DecodeResult& out, ChunkStart at, bool marked);
     bool feed_five_track(std::span<const Frame> frames, DecodeResult& out);  // decode_five_track.cpp
     void put_held_cr(DecodeResult& out);
     void put_text(std::string_view text, std::uint64_t index, DecodeResult& out);

@@ -332,11 +332,17 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     line_at(w);
     out.text.resize(w);
     next_index_ += frames.size();
-    if (stopped_) out.complete = false;
-    if (w > from) last_char_ = out.text[w - 1];  // as decoded: a telecode's character is still its byte
-    if (out.diagnostics.size() > diagnostics_from) in_tape_order(out.diagnostics, diagnostics_from, stopped_);
-    if (marked || options_.charset == Charset::koi7 || code_.telecode_table()) finish_text(out, from, positions_from);
+    settle_chunk(out, ChunkStart{from, positions_from, diagnostics_from}, marked);
     return !stopped_;
+}
+
+// A chunk decoded: what it leaves for the tape's end, its findings in tape order, its text finished.
+void Decoder::settle_chunk(DecodeResult& out, ChunkStart at, bool marked) {
+    if (stopped_) out.complete = false;
+    // As decoded: a telecode's character is still its byte.
+    if (out.text.size() > at.text) last_char_ = out.text.back();
+    if (out.diagnostics.size() > at.diagnostics) in_tape_order(out.diagnostics, at.diagnostics, stopped_);
+    if (marked || options_.charset == Charset::koi7 || code_.telecode_table()) finish_text(out, at.text, at.positions);
 }
 
 DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options) {
