@@ -27,6 +27,9 @@ run=(
 )
 features=(
   libtomlplusplus-dev
+  libopencv-core-dev
+  libopencv-imgproc-dev
+  libopencv-imgcodecs-dev
 )
 test=(
   libgtest-dev

@@ -313,8 +313,7 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
 TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsPercentStop) {
     TempDir dir;
     auto frames = tape::encode("%\nN1 G01 X10 F100\nN2 X20 Y-5\nN3 G00 Z50\nN4 M30\n", {});
-    std::ofstream(dir.file("p.ptp"), std::ios::binary)
-        .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+    write_frames(dir.file("p.ptp"), frames);
     auto first = std::find_if(frames.begin(), frames.end(), [](tape::Frame f) { return f != tape::blank_frame; });
     // Up to the line feed ending the M30 block, the fifth of the program (even parity: LF is 0x0A).
     auto past_m30 = std::find(first, frames.end(), tape::Frame{0x0A});
@@ -351,8 +350,7 @@ TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsP
 TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
     TempDir dir;
     auto frames = tape::encode("%\nN1 G01 X10 F100\nN2 X20 Y-5\nN3 G00 Z50\nN4 X0\nN5 Y0\n", {});
-    std::ofstream(dir.file("p.ptp"), std::ios::binary)
-        .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+    write_frames(dir.file("p.ptp"), frames);
     std::vector<std::uint8_t> program(
         std::find_if(frames.begin(), frames.end(), [](tape::Frame f) { return f != tape::blank_frame; }), frames.end());
     auto o = options();

@@ -43,3 +43,9 @@ inline std::vector<tape::Frame> read_frames(const std::string& path) {
     std::string s = read_text(path);
     return {s.begin(), s.end()};
 }
+
+/// Writes frames as a raw image file.
+inline void write_frames(const std::string& path, const std::vector<tape::Frame>& frames) {
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(frames.data()), static_cast<std::streamsize>(frames.size()));
+}

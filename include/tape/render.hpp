@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -10,6 +11,7 @@
 
 #include "tape/code.hpp"
 #include "tape/frame.hpp"
+#include "tape/picture.hpp"
 
 namespace tape {
 
@@ -69,5 +71,47 @@ Point hole_centre(std::uint64_t n, int track, std::uint64_t per_strip, bool mirr
 /// with an id "fN" (N the frame number) for links. Throws Error(Errc::usage) for from after to, or a range past the
 /// end.
 std::string render_svg(std::span<const Frame> frames, const RenderOptions& options);
+/// The same document given to sink a strip at a time (a header, then each strip, then the end): memory
+/// that of one strip, however long the tape. Throws as above before anything reaches sink.
+void render_svg(std::span<const Frame> frames, const RenderOptions& options,
+                const std::function<void(std::string_view)>& sink);
+
+/// How a tape is drawn as pixels: to scale at a resolution, as a scanner or a camera would see it.
+struct RasterOptions {
+    double dpi = 300;                  ///< pixels per inch: the tape is drawn at its true size
+    double strip_mm = 0;               ///< strips of this length one under the other; 0: the whole tape in one strip
+    bool mirror = false;               ///< seen from the back: track 1 on top
+    int tracks = 8;                    ///< 8 (25.4 mm tape) or 5 (17.46 mm, frames' tracks 1-5 only)
+    double margin_mm = 6;              ///< backing shown around the strips
+    std::uint32_t paper = 0xF3E6BF;    ///< paper colour, 0xRRGGBB
+    std::uint32_t backing = 0x1B1B1B;  ///< what lies under the tape and shows through its holes
+    double skew_deg = 0;               ///< the strip turned by this much
+    double bow_mm = 0;                 ///< and bent: its middle this far off the line through its ends
+    /// Stains on the paper: translucent blotches a few millimetres across (count), and their seed.
+    int stains = 0;
+    std::uint64_t seed = 1;
+};
+
+/// Throws Error(Errc::usage) for options out of range or a picture of more than max_picture_pixels.
+Picture render_picture(std::span<const Frame> frames, const RasterOptions& options);
+inline constexpr std::uint64_t max_picture_pixels = 1ULL << 30;
+
+/// What a scanner or camera adds to the picture, for testing tape scan on pictures like real ones.
+struct PictureEffects {
+    double light = 0;      ///< uneven light: the darkest corner this much darker (0..0.9)
+    int dust = 0;          ///< specks of dust, each smaller than a feed hole (at most 1 mm across)
+    double blur_px = 0;    ///< Gaussian blur, sigma in pixels
+    double noise = 0;      ///< Gaussian noise, sigma in grey levels
+    int jpeg_quality = 0;  ///< 1..100: saved as JPEG and read back; 0: not
+    std::uint64_t seed = 1;
+};
+/// Applies the effects in the order a picture gets them: light, dust on the glass, blur, noise, JPEG.
+/// dpi: the picture's, for the size of the dust. JPEG needs OpenCV (tape/picture.hpp).
+void apply_effects(Picture& picture, const PictureEffects& effects, double dpi);
+
+/// Effects written as KEY=VALUE,... : skew=DEG, bow=MM, stains=N, paper=RRGGBB, backing=RRGGBB (the
+/// drawing), light=0..0.9, dust=N, blur=PX, noise=LEVELS, jpeg=QUALITY, seed=N (the picture). Throws
+/// Error(Errc::usage) naming a key or value it does not take.
+void parse_picture_effects(std::string_view spec, RasterOptions& raster, PictureEffects& effects);
 
 }  // namespace tape

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <functional>
 #include <map>
 
 #include "tape/error.hpp"
@@ -105,162 +106,231 @@ std::string xml_escaped(std::string_view s) {
     return out;
 }
 
-std::string render_svg(std::span<const Frame> frames, const RenderOptions& o) {
-    std::uint64_t last = o.to ? o.to : frames.size();
-    if (o.from > last && last <= frames.size())
-        throw Error(Errc::usage, "the first frame drawn (" + std::to_string(o.from) + ") is after the last (" +
-                                     std::to_string(last) + ")");
-    if (o.from < 1 || last > frames.size())
-        throw Error(Errc::usage, "frames " + std::to_string(o.from) + " to " + std::to_string(last) +
-                                     ": the tape has " + std::to_string(frames.size()) + " frames");
-    auto drawn = frames.subspan(o.from - 1, last + 1 - o.from);
-    const std::uint64_t per = frames_per_strip(o.strip_mm);
-    const std::uint64_t strips = drawn.empty() ? 1 : (drawn.size() + per - 1) / per;
-    const std::int64_t strip_frames =
-        static_cast<std::int64_t>(std::min<std::uint64_t>(per, std::max<std::size_t>(drawn.size(), 1)));
-    const std::int64_t width = std::max<std::int64_t>(left + strip_frames * pitch + 300, 19000);
-    const std::int64_t height = legend + static_cast<std::int64_t>(strips) * strip_pitch;
+namespace {
 
-    auto in_label = [&](std::uint64_t frame) {
-        return frame >= o.label_first && frame < o.label_first + o.label_frames;
-    };
-    // The marks of the frames drawn, by frame: the caller's, then the bad frames the code shows.
-    std::multimap<std::uint64_t, const FrameMark*> marks;
-    for (const auto& m : o.marks)
-        if (m.frame >= o.from && m.frame <= last) marks.emplace(m.frame, &m);
-    std::vector<FrameMark> found;
-    if (o.code) {
-        for (std::size_t i = 0; i < drawn.size(); ++i) {
-            auto k = o.code->kind(drawn[i]);
-            // A frame the caller marked is said by its mark (a restoration's verdict says more).
-            if (is_bad_frame(k) && !marks.contains(o.from + i) && !in_label(o.from + i))
-                found.push_back({o.from + i, MarkKind::parity,
-                                 k == FrameKind::parity_error ? "parity error" : "not a character of the code"});
-        }
-        for (const auto& m : found) marks.emplace(m.frame, &m);
+// Writes one SVG document a strip at a time: each strip's marks are found as it is drawn, so memory
+// stays that of one strip whatever the length of the tape.
+class SvgWriter {
+public:
+    SvgWriter(std::span<const Frame> frames, const RenderOptions& o, const std::function<void(std::string_view)>& sink)
+        : o_(o), sink_(sink) {
+        std::uint64_t last = o.to ? o.to : frames.size();
+        if (o.from > last && last <= frames.size())
+            throw Error(Errc::usage, "the first frame drawn (" + std::to_string(o.from) + ") is after the last (" +
+                                         std::to_string(last) + ")");
+        if (o.from < 1 || last > frames.size())
+            throw Error(Errc::usage, "frames " + std::to_string(o.from) + " to " + std::to_string(last) +
+                                         ": the tape has " + std::to_string(frames.size()) + " frames");
+        last_ = last;
+        drawn_ = frames.subspan(o.from - 1, last + 1 - o.from);
+        per_ = frames_per_strip(o.strip_mm);
+        strips_ = drawn_.empty() ? 1 : (drawn_.size() + per_ - 1) / per_;
+        for (const auto& m : o.marks)
+            if (m.frame >= o.from && m.frame <= last) marks_.emplace(m.frame, &m);
     }
 
-    std::string out;
-    out.reserve(2048 + drawn.size() * 200);
-    out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
-    put_mm(out, width);
-    out += "mm\" height=\"";
-    put_mm(out, height);
-    out += "mm\" viewBox=\"0 0 ";
-    put(out, width);
-    out += ' ';
-    put(out, height);
-    out += "\" font-family=\"DejaVu Sans Mono, monospace\">\n<title>punched tape, frames ";
-    put(out, static_cast<std::int64_t>(o.from));
-    out += '-';
-    put(out, static_cast<std::int64_t>(last));
-    out += "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
+    void write() {
+        header();
+        for (std::uint64_t s = 0; s < strips_; ++s) strip(s);
+        out_ += "</svg>\n";
+        flush();
+    }
 
+private:
+    bool in_label(std::uint64_t frame) const {
+        return frame >= o_.label_first && frame < o_.label_first + o_.label_frames;
+    }
+    void flush() {
+        sink_(out_);
+        out_.clear();
+    }
+    void header();
+    void strip(std::uint64_t s);
+    void strip_marks(std::uint64_t begin, std::uint64_t end, std::int64_t top);
+    void mark(const FrameMark& m, bool repeated, std::uint64_t begin, std::int64_t top);
+    void holes(std::uint64_t begin, std::uint64_t end);
+    void frame_numbers(std::uint64_t begin, std::uint64_t end, std::int64_t top);
+    void frame_characters(std::uint64_t begin, std::uint64_t end, std::int64_t top);
+
+    const RenderOptions& o_;
+    const std::function<void(std::string_view)>& sink_;
+    std::span<const Frame> drawn_;
+    std::uint64_t last_ = 0, per_ = 1, strips_ = 1;
+    std::multimap<std::uint64_t, const FrameMark*> marks_;  // the caller's
+    std::string out_;
+};
+
+void SvgWriter::header() {
+    const std::int64_t strip_frames =
+        static_cast<std::int64_t>(std::min<std::uint64_t>(per_, std::max<std::size_t>(drawn_.size(), 1)));
+    const std::int64_t width = std::max<std::int64_t>(left + strip_frames * pitch + 300, 19000);
+    const std::int64_t height = legend + static_cast<std::int64_t>(strips_) * strip_pitch;
+    out_ += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"";
+    put_mm(out_, width);
+    out_ += "mm\" height=\"";
+    put_mm(out_, height);
+    out_ += "mm\" viewBox=\"0 0 ";
+    put(out_, width);
+    out_ += ' ';
+    put(out_, height);
+    out_ += "\" font-family=\"DejaVu Sans Mono, monospace\">\n<title>punched tape, frames ";
+    put(out_, static_cast<std::int64_t>(o_.from));
+    out_ += '-';
+    put(out_, static_cast<std::int64_t>(last_));
+    out_ += "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
     // The legend: what the shading means and which way the tape is seen.
-    out += "<g id=\"legend\" font-size=\"280\">\n";
+    out_ += "<g id=\"legend\" font-size=\"280\">\n";
     std::int64_t lx = 300;
     for (int k = 0; k < 3; ++k) {
-        out += "<rect x=\"";
-        put(out, lx);
-        out += "\" y=\"200\" width=\"300\" height=\"300\" fill=\"";
-        out += mark_colour[k];
-        out += "\" fill-opacity=\"0.45\"/><text x=\"";
-        put(out, lx + 400);
-        out += "\" y=\"460\">";
-        out += mark_name(static_cast<MarkKind>(k));
-        out += "</text>\n";
+        out_ += "<rect x=\"";
+        put(out_, lx);
+        out_ += "\" y=\"200\" width=\"300\" height=\"300\" fill=\"";
+        out_ += mark_colour[k];
+        out_ += "\" fill-opacity=\"0.45\"/><text x=\"";
+        put(out_, lx + 400);
+        out_ += "\" y=\"460\">";
+        out_ += mark_name(static_cast<MarkKind>(k));
+        out_ += "</text>\n";
         lx += 4000;
     }
-    out += "<text x=\"";
-    put(out, lx);
-    out += "\" y=\"460\">";
-    out += o.mirror ? "track 1 on top (mirrored)" : "track 8 on top";
-    out += ", 2.54 mm a frame</text>\n</g>\n";
+    out_ += "<text x=\"";
+    put(out_, lx);
+    out_ += "\" y=\"460\">";
+    out_ += o_.mirror ? "track 1 on top (mirrored)" : "track 8 on top";
+    out_ += ", 2.54 mm a frame</text>\n</g>\n";
+}
 
-    // Each strip: the paper, the shading of marked frames, the holes, the numbers and characters.
-    for (std::uint64_t s = 0; s < strips; ++s) {
-        std::uint64_t begin = s * per, end = std::min<std::uint64_t>(begin + per, drawn.size());
-        std::int64_t top = legend + static_cast<std::int64_t>(s) * strip_pitch + numbers;
-        out += "<rect class=\"tape\" x=\"";
-        put(out, left);
-        out += "\" y=\"";
-        put(out, top);
-        out += "\" width=\"";
-        put(out, static_cast<std::int64_t>(std::max<std::uint64_t>(end - begin, 1)) * pitch);
-        out += "\" height=\"2540\" fill=\"#f3e6bf\" stroke=\"#a8925a\" stroke-width=\"20\"/>\n";
-        for (auto it = marks.lower_bound(o.from + begin); it != marks.end() && it->first < o.from + end; ++it) {
-            const FrameMark& m = *it->second;
-            if (!m.link.empty()) {
-                out += "<a href=\"";
-                put_escaped(out, m.link);
-                out += "\">";
-            }
-            out += "<rect id=\"f";
-            put(out, static_cast<std::int64_t>(m.frame));
-            if (it != marks.begin() && std::prev(it)->first == it->first) {  // ids stay unique
-                out += '-';
-                out += mark_name(m.kind).substr(0, 1);
-            }
-            out += "\" class=\"mark ";
-            out += m.kind == MarkKind::parity ? "parity" : m.kind == MarkKind::restored ? "restored" : "doubtful";
-            out += "\" x=\"";
-            put(out, left + static_cast<std::int64_t>(m.frame - o.from - begin) * pitch);
-            out += "\" y=\"";
-            put(out, top);
-            out += "\" width=\"254\" height=\"2540\" fill=\"";
-            out += mark_colour[static_cast<int>(m.kind)];
-            out += "\" fill-opacity=\"0.45\"><title>frame ";
-            put(out, static_cast<std::int64_t>(m.frame));
-            out += ": ";
-            put_escaped(out, m.note.empty() ? mark_name(m.kind) : std::string_view(m.note));
-            out += "</title></rect>";
-            out += m.link.empty() ? "\n" : "</a>\n";
+// Each strip: the paper, the shading of marked frames, the holes, the numbers and characters.
+void SvgWriter::strip(std::uint64_t s) {
+    std::uint64_t begin = s * per_, end = std::min<std::uint64_t>(begin + per_, drawn_.size());
+    std::int64_t top = legend + static_cast<std::int64_t>(s) * strip_pitch + numbers;
+    out_ += "<rect class=\"tape\" x=\"";
+    put(out_, left);
+    out_ += "\" y=\"";
+    put(out_, top);
+    out_ += "\" width=\"";
+    put(out_, static_cast<std::int64_t>(std::max<std::uint64_t>(end - begin, 1)) * pitch);
+    out_ += "\" height=\"2540\" fill=\"#f3e6bf\" stroke=\"#a8925a\" stroke-width=\"20\"/>\n";
+    strip_marks(begin, end, top);
+    holes(begin, end);
+    frame_numbers(begin, end, top);
+    if (o_.code) frame_characters(begin, end, top);
+    flush();
+}
+
+// The caller's marks on the strip's frames, then the bad frames the code shows where the caller has none
+// (a restoration's verdict says more), in frame order.
+void SvgWriter::strip_marks(std::uint64_t begin, std::uint64_t end, std::int64_t top) {
+    std::multimap<std::uint64_t, const FrameMark*> here(marks_.lower_bound(o_.from + begin),
+                                                        marks_.lower_bound(o_.from + end));
+    std::vector<FrameMark> found;
+    if (o_.code) {
+        for (std::uint64_t i = begin; i < end; ++i) {
+            auto k = o_.code->kind(drawn_[i]);
+            if (is_bad_frame(k) && !marks_.contains(o_.from + i) && !in_label(o_.from + i))
+                found.push_back({o_.from + i, MarkKind::parity,
+                                 k == FrameKind::parity_error ? "parity error" : "not a character of the code"});
         }
-        out += "<g fill=\"#1b1b1b\">\n";
-        for (std::uint64_t n = begin; n < end; ++n) {
-            Frame f = drawn[n];
-            for (int t = 0; t <= 8; ++t) {
-                if (t > 0 && !has_track(f, t)) continue;
-                auto c = hole_centre(n, t, per, o.mirror);
-                out += "<circle cx=\"";
-                put(out, c.x);
-                out += "\" cy=\"";
-                put(out, c.y);
-                out += t == 0 ? "\" r=\"58.5\"/>" : "\" r=\"91.5\"/>";
-            }
-            out += '\n';
-        }
-        out += "</g>\n<g font-size=\"250\" text-anchor=\"middle\" fill=\"#333333\">\n";
-        for (std::uint64_t n = begin; n < end; ++n) {
-            std::uint64_t number = o.from + n;
-            if (number % 10 != 0 && n != begin) continue;
-            auto x = left + static_cast<std::int64_t>(n - begin) * pitch + pitch / 2;
-            out += "<text x=\"";
-            put(out, x);
-            out += "\" y=\"";
-            put(out, top - 150);
-            out += "\">";
-            put(out, static_cast<std::int64_t>(number));
-            out += "</text>\n";
-        }
-        out += "</g>\n";
-        if (o.code) {
-            out += "<g font-size=\"200\" text-anchor=\"middle\">\n";
-            for (std::uint64_t n = begin; n < end; ++n) {
-                std::string t = in_label(o.from + n) ? std::string() : frame_text(*o.code, drawn[n]);
-                if (t.empty()) continue;
-                out += "<text x=\"";
-                put(out, left + static_cast<std::int64_t>(n - begin) * pitch + pitch / 2);
-                out += "\" y=\"";
-                put(out, top + tape_width + 300);
-                out += t.size() > 1 ? "\" font-size=\"110\">" : "\">";
-                put_escaped(out, t);
-                out += "</text>\n";
-            }
-            out += "</g>\n";
-        }
+        for (const auto& m : found) here.emplace(m.frame, &m);
     }
-    out += "</svg>\n";
+    for (auto it = here.begin(); it != here.end(); ++it)
+        mark(*it->second, it != here.begin() && std::prev(it)->first == it->first, begin, top);
+}
+
+void SvgWriter::mark(const FrameMark& m, bool repeated, std::uint64_t begin, std::int64_t top) {
+    if (!m.link.empty()) {
+        out_ += "<a href=\"";
+        put_escaped(out_, m.link);
+        out_ += "\">";
+    }
+    out_ += "<rect id=\"f";
+    put(out_, static_cast<std::int64_t>(m.frame));
+    if (repeated) {  // ids stay unique
+        out_ += '-';
+        out_ += mark_name(m.kind).substr(0, 1);
+    }
+    out_ += "\" class=\"mark ";
+    out_ += m.kind == MarkKind::parity ? "parity" : m.kind == MarkKind::restored ? "restored" : "doubtful";
+    out_ += "\" x=\"";
+    put(out_, left + static_cast<std::int64_t>(m.frame - o_.from - begin) * pitch);
+    out_ += "\" y=\"";
+    put(out_, top);
+    out_ += "\" width=\"254\" height=\"2540\" fill=\"";
+    out_ += mark_colour[static_cast<int>(m.kind)];
+    out_ += "\" fill-opacity=\"0.45\"><title>frame ";
+    put(out_, static_cast<std::int64_t>(m.frame));
+    out_ += ": ";
+    put_escaped(out_, m.note.empty() ? mark_name(m.kind) : std::string_view(m.note));
+    out_ += "</title></rect>";
+    out_ += m.link.empty() ? "\n" : "</a>\n";
+}
+
+void SvgWriter::holes(std::uint64_t begin, std::uint64_t end) {
+    out_ += "<g fill=\"#1b1b1b\">\n";
+    for (std::uint64_t n = begin; n < end; ++n) {
+        Frame f = drawn_[n];
+        for (int t = 0; t <= 8; ++t) {
+            if (t > 0 && !has_track(f, t)) continue;
+            auto c = hole_centre(n, t, per_, o_.mirror);
+            out_ += "<circle cx=\"";
+            put(out_, c.x);
+            out_ += "\" cy=\"";
+            put(out_, c.y);
+            out_ += t == 0 ? "\" r=\"58.5\"/>" : "\" r=\"91.5\"/>";
+        }
+        out_ += '\n';
+    }
+    out_ += "</g>\n";
+}
+
+std::int64_t digits(std::uint64_t n) { return static_cast<std::int64_t>(std::to_string(n).size()); }
+
+// Frame numbers: the strip's first, and every tenth frame whose number does not run into the first's.
+void SvgWriter::frame_numbers(std::uint64_t begin, std::uint64_t end, std::int64_t top) {
+    constexpr std::int64_t digit_width = 150;  // of a digit at font-size 250, monospace, with room
+    out_ += "<g font-size=\"250\" text-anchor=\"middle\" fill=\"#333333\">\n";
+    for (std::uint64_t n = begin; n < end; ++n) {
+        std::uint64_t number = o_.from + n;
+        if (number % 10 != 0 && n != begin) continue;
+        auto apart = static_cast<std::int64_t>(n - begin) * pitch;
+        if (n != begin && 2 * apart < (digits(number) + digits(o_.from + begin)) * digit_width + 100) continue;
+        out_ += "<text x=\"";
+        put(out_, left + apart + pitch / 2);
+        out_ += "\" y=\"";
+        put(out_, top - 150);
+        out_ += "\">";
+        put(out_, static_cast<std::int64_t>(number));
+        out_ += "</text>\n";
+    }
+    out_ += "</g>\n";
+}
+
+void SvgWriter::frame_characters(std::uint64_t begin, std::uint64_t end, std::int64_t top) {
+    out_ += "<g font-size=\"200\" text-anchor=\"middle\">\n";
+    for (std::uint64_t n = begin; n < end; ++n) {
+        std::string t = in_label(o_.from + n) ? std::string() : frame_text(*o_.code, drawn_[n]);
+        if (t.empty()) continue;
+        out_ += "<text x=\"";
+        put(out_, left + static_cast<std::int64_t>(n - begin) * pitch + pitch / 2);
+        out_ += "\" y=\"";
+        put(out_, top + tape_width + 300);
+        out_ += t.size() > 1 ? "\" font-size=\"110\">" : "\">";
+        put_escaped(out_, t);
+        out_ += "</text>\n";
+    }
+    out_ += "</g>\n";
+}
+
+}  // namespace
+
+void render_svg(std::span<const Frame> frames, const RenderOptions& options,
+                const std::function<void(std::string_view)>& sink) {
+    SvgWriter(frames, options, sink).write();
+}
+
+std::string render_svg(std::span<const Frame> frames, const RenderOptions& options) {
+    std::string out;
+    render_svg(frames, options, [&out](std::string_view piece) { out += piece; });
     return out;
 }
 

@@ -7,6 +7,7 @@
 #include "cli/outputs.hpp"
 #include "cli/run.hpp"
 #include "commands.hpp"
+#include "picture_reads.hpp"
 #include "restore_html.hpp"
 #include "restore_report.hpp"
 #include "tape/format_spec.hpp"
@@ -27,7 +28,7 @@ void run(const RestoreArgs& a) {
     const tape::ImageFormat& out_format = output_format(a.format, a.output);
     refuse_binary_terminal(a.output, out_format.binary, a.force);
     std::vector<TapeInput> reads;
-    for (const auto& path : a.reads) reads.push_back(read_tape(path, ""));
+    for (const auto& path : a.reads) reads.push_back(is_picture(path) ? read_picture(path).read : read_tape(path, ""));
     RestoreReportInput report;
     report.code = code_for_reads(a.code, a.parity, reads, report.code_text);
     std::vector<std::span<const tape::Frame>> spans;
@@ -61,7 +62,10 @@ void add_restore(CLI::App& app) {
     auto a = std::make_shared<RestoreArgs>();
     auto* sub = app.add_subcommand(
         "restore", "One tape from several reads of a damaged one: aligned, voted, repaired where only one way fits");
-    sub->add_option("reads", a->reads, "Reads of one physical tape, in any image format (one or more)")->required();
+    sub->add_option("reads", a->reads,
+                    "Reads of one physical tape, in any image format, or pictures of it (PNG, JPEG, TIFF: read as by "
+                    "tape scan); one or more")
+        ->required();
     sub->add_option("-o,--output", a->output, "The restored image (format by extension, or --format)")->required();
     sub->add_option("--report", a->report, "Write the report to FILE instead of standard output");
     sub->add_flag("--json", a->json, "The report as JSON (schema tape-restore/1, in tape(1))");

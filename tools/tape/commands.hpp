@@ -25,5 +25,6 @@ void add_adapter(CLI::App& app);
 void add_label(CLI::App& app);
 void add_render(CLI::App& app);
 void add_dnc(CLI::App& app);
+void add_scan(CLI::App& app);
 
 }  // namespace cli
