@@ -1,185 +1,279 @@
-// Restoration: recovery on damaged reads of generated programs and of the sample tapes, and speed.
-// Run: build/bin/restore_bench (Release: bench/run.sh builds it; BUILD_DIR=... to choose the build).
-//   BM_ThreeReads:   3 reads, each with 1% damaged frames (flips, drops, doubles, bursts mixed), of
-//                    10 generated programs of 10^6 frames
-//   BM_ThreeReadsSampleTapes: the same, 1000 times on each ISO sample tape in tapes/
-//   BM_OneReadFlips: 1 read with single-hole flips in 0.5% of frames: repaired right / wrong / left flagged
-//   BM_FiveReadsSpeed: 5 reads of 10^6 frames aligned and voted
-// Counters: programs byte-exact (the punched part: leader and trailer length are voted like any run of
-// equal frames), frames wrong in the output where the report has no doubt (tape::check_restore), frames
-// wrong where it says it is in doubt, and the frames it puts in doubt.
+// Restoration measured by the counting rules of issue 20: repair rates over data frames only; a frame
+// left out or added in a run of equal frames in doubt when any copy is; a wrong inferred frame silent;
+// every silent error classified, with the damage logs, as decidable (most reads had it right),
+// undecidable (some did) or invisible (none did).
+// Run: build/bin/restore_bench (Release: cmake -DCMAKE_BUILD_TYPE=Release, target restore_bench).
+//   BM_OneRead<corpus>/guess:  1 read, single-hole flips in 0.5% of the data frames
+//   BM_ThreeReads<corpus>:     3 reads, each with 1% of its frames damaged (flips, drops, doubles, bursts)
+//   BM_FiveReads<corpus>:      5 such reads
+//   BM_FiveReadsSpeed:         5 reads of 10^6 frames aligned, voted and repaired
+// Corpora: generated programs (some with mistakes of their own), the sample tapes, and real programs
+// and DEC source tapes from ../shared/data/outside* (a note says what is left out where it is absent).
+// RESTORE_BENCH_SCALE (default 1) multiplies the number of tapes and seeds; RESTORE_BENCH_SHOW=1 prints each
+// silent error of the many-read runs with the tape, the output, the damage and the problems around it
+// (RESTORE_BENCH_SHOW_START=1: and the output's first data frames); RESTORE_BENCH_DUMP=PREFIX writes the
+// first set with more than 1000 silent errors as PREFIXtape.ptp, PREFIXout.ptp and PREFIXreadN.ptp.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
-#include <iterator>
-#include <string>
+#include <cstdlib>
+#include <map>
 
+#include "restore_corpus.hpp"
 #include "tape/damage.hpp"
-#include "tape/encode.hpp"
 #include "tape/restore.hpp"
 
 namespace {
 
-// Blocks as real programs have them, numbers varying with a seed.
-std::vector<tape::Frame> generated_tape(std::size_t chars, std::uint64_t seed) {
-    std::string t = "%\n";
-    std::uint64_t x = seed * 0x9E3779B97F4A7C15ULL + 1;
-    auto next = [&x](int m) {
-        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
-        return static_cast<int>(x % static_cast<std::uint64_t>(m));
-    };
-    char buf[128];
-    for (long n = 1; t.size() < chars; ++n) {
-        int len = std::snprintf(buf, sizeof buf, "N%ld G01 X%d.%03d Y%d.%02d F%d\n", n, next(1999) - 999, next(1000),
-                                next(1999) - 999, next(100), 50 + next(900));
-        t.append(buf, static_cast<std::size_t>(len));
-    }
-    t += "M02\n";
-    return tape::encode(t, tape::EncodeOptions{});
+using bench::CorpusTape;
+
+std::uint64_t scale() {
+    const char* s = std::getenv("RESTORE_BENCH_SCALE");
+    return s ? std::max<std::uint64_t>(1, std::strtoull(s, nullptr, 10)) : 1;
 }
 
-// The bundled sample tapes in the ISO code (raw images: a frame a byte).
-std::vector<std::vector<tape::Frame>> sample_tapes() {
-    std::vector<std::vector<tape::Frame>> out;
-    for (const char* name : {"16k20f3s5-turning.iso.ptp", "circle-examples.iso.ptp",
-                             "gost-20999-format-example.iso.ptp", "koi7-comment.iso.ptp"}) {
-        std::ifstream in(std::string(TAPE_SAMPLE_TAPES) + "/" + name, std::ios::binary);
-        out.emplace_back(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-        if (out.back().empty()) std::fprintf(stderr, "restore_bench: cannot read %s\n", name);
-    }
-    return out;
-}
-
-// A count over all iterations, shown per iteration.
 benchmark::Counter per_run(std::uint64_t n) {
     return benchmark::Counter(static_cast<double>(n), benchmark::Counter::kAvgIterations);
 }
 
-struct Tally {
-    std::uint64_t programs = 0, exact = 0, frames = 0, wrong = 0, flagged_wrong = 0, in_doubt = 0, blank_ends = 0;
-
-    void add(std::span<const tape::Frame> tape, const tape::RestoreResult& r) {
-        auto check = tape::check_restore(tape, r);
-        ++programs;
-        exact += check.exact;
-        frames += tape.size();
-        wrong += check.silently_wrong;
-        flagged_wrong += check.flagged_wrong;
-        blank_ends += check.blank_ends;
-        for (const auto& q : r.problems) in_doubt += tape::in_doubt(q.status);
-    }
-    void report(benchmark::State& state) const {
-        state.counters["programs"] = per_run(programs);
-        state.counters["byte_exact"] = per_run(exact);
-        state.counters["frames"] = per_run(frames);
-        state.counters["silently_wrong"] = per_run(wrong);
-        state.counters["wrong_flagged"] = per_run(flagged_wrong);
-        state.counters["in_doubt"] = per_run(in_doubt);
-        state.counters["leader_trailer_length_off"] = per_run(blank_ends);
-    }
-};
-
-std::vector<std::vector<tape::Frame>> three_reads(std::span<const tape::Frame> tape, std::uint64_t seed) {
-    std::vector<std::vector<tape::Frame>> reads;
-    for (std::uint64_t k = 0; k < 3; ++k)
-        reads.push_back(tape::damage(tape, tape::mixed_damage(0.01, seed * 3 + k + 1)));
-    return reads;
-}
-
-tape::RestoreResult restore_reads(const std::vector<std::vector<tape::Frame>>& reads) {
+// RESTORE_BENCH_ODDS: RestoreOptions::run_odds, to weigh run lengths otherwise than by default.
+tape::RestoreResult restore_reads(const std::vector<std::vector<tape::Frame>>& reads, bool guess = false) {
     std::vector<std::span<const tape::Frame>> spans(reads.begin(), reads.end());
-    return tape::restore(spans, tape::RestoreOptions{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::gost});
+    tape::RestoreOptions o{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::automatic};
+    o.guess = guess;
+    if (const char* odds = std::getenv("RESTORE_BENCH_ODDS")) o.run_odds = std::strtod(odds, nullptr);
+    return tape::restore(spans, o);
 }
 
-void BM_ThreeReads(benchmark::State& state) {
-    const auto programs = static_cast<std::uint64_t>(state.range(0));
-    Tally t;
-    for (auto _ : state) {
-        for (std::uint64_t p = 0; p < programs; ++p) {
-            auto tape = generated_tape(1'000'000, p + 1);
-            t.add(tape, restore_reads(three_reads(tape, p)));
-        }
-    }
-    t.report(state);
+// One read with single-hole flips in 0.5% of the data frames (leader and trailer as punched).
+std::vector<tape::Frame> flipped_read(const CorpusTape& t, std::uint64_t seed) {
+    auto data = tape::punched_part(t.frames);
+    tape::DamageOptions o;
+    o.seed = seed;
+    o.flips = 0.005;
+    auto damaged = tape::damage(data, o);
+    std::vector<tape::Frame> read(t.frames.begin(), t.frames.begin() + (data.data() - t.frames.data()));
+    read.insert(read.end(), damaged.begin(), damaged.end());
+    read.insert(read.end(), data.data() + data.size(), t.frames.data() + t.frames.size());
+    return read;
 }
-BENCHMARK(BM_ThreeReads)->Arg(10)->Iterations(1)->Unit(benchmark::kSecond);
 
-// The same on the bundled sample tapes, a thousand sets of three reads of each.
-void BM_ThreeReadsSampleTapes(benchmark::State& state) {
-    const auto tapes = sample_tapes();
-    Tally t;
-    for (auto _ : state)
-        for (const auto& tape : tapes)
-            for (std::uint64_t seed = 0; seed < 1000; ++seed) t.add(tape, restore_reads(three_reads(tape, seed)));
-    t.report(state);
-}
-BENCHMARK(BM_ThreeReadsSampleTapes)->Iterations(1)->Unit(benchmark::kSecond);
+struct OneReadTally {
+    std::uint64_t bad = 0, right = 0, code_bad = 0, code_right = 0, wrong_inferred = 0, inferred = 0;
+    std::uint64_t guessed = 0, guessed_right = 0, unmarked = 0, nc_bad = 0, nc_right = 0;
 
-// One read with single-hole flips: each bad frame repaired right, repaired wrong (inferred, so listed
-// in the report), or left as read (unresolved, listed).
-struct Repairs {
-    std::uint64_t bad = 0, right = 0, wrong_flagged = 0, left = 0, wrong_silent = 0;
-
-    void add(std::span<const tape::Frame> tape, std::uint64_t seed) {
-        const auto code = tape::FrameCode::iso();
-        tape::DamageOptions o;
-        o.seed = seed;
-        o.flips = 0.005;
-        auto read = tape::damage(tape, o);
-        std::vector<std::span<const tape::Frame>> spans{read};
-        auto r = tape::restore(spans, tape::RestoreOptions{.code = code, .dialect = tape::Dialect::gost});
-        wrong_silent += tape::check_restore(tape, r).silently_wrong;
-        for (std::size_t i = 0; i < tape.size(); ++i) {
-            if (read[i] == tape[i]) continue;
-            ++bad;
-            if (r.frames[i] == tape[i])
-                ++right;
-            else if (r.frames[i] != read[i])
-                ++wrong_flagged;
-            else
-                ++left;
+    void add(const CorpusTape& t, std::uint64_t seed, bool guess) {
+        auto read = flipped_read(t, seed);
+        auto r = restore_reads({read}, guess);
+        std::map<std::uint64_t, tape::FrameStatus> status;
+        for (const auto& p : r.problems)
+            if (p.frame) status[*p.frame] = p.status;
+        for (std::size_t i = 0; i < t.frames.size() && i < r.frames.size(); ++i) {
+            if (read[i] == t.frames[i]) continue;
+            bool ok = r.frames[i] == t.frames[i];
+            auto s = status.count(i + 1) ? status[i + 1] : tape::FrameStatus::clean;
+            ++bad, right += ok;
+            if (t.nc) ++nc_bad, nc_right += ok;
+            if (t.code[i]) ++code_bad, code_right += ok;
+            inferred += s == tape::FrameStatus::inferred;
+            wrong_inferred += !ok && (s == tape::FrameStatus::inferred || s == tape::FrameStatus::clean ||
+                                      s == tape::FrameStatus::voted);
+            guessed += s == tape::FrameStatus::guessed, guessed_right += ok && s == tape::FrameStatus::guessed;
+            unmarked += guess && s != tape::FrameStatus::inferred && s != tape::FrameStatus::guessed;
         }
     }
     void report(benchmark::State& state) const {
-        state.counters["bad_frames"] = per_run(bad);
-        state.counters["repaired_right"] = per_run(right);
-        state.counters["repaired_wrong_flagged"] = per_run(wrong_flagged);
-        state.counters["left_flagged"] = per_run(left);
-        state.counters["wrong_unflagged"] = per_run(wrong_silent);
+        state.counters["damaged"] = per_run(bad);
+        state.counters["right"] = per_run(right);
+        state.counters["right_pct"] = bad ? 100.0 * static_cast<double>(right) / static_cast<double>(bad) : 0;
+        state.counters["nc_right_pct"] =
+            nc_bad ? 100.0 * static_cast<double>(nc_right) / static_cast<double>(nc_bad) : 0;
+        state.counters["code_damaged"] = per_run(code_bad);
+        state.counters["code_right_pct"] =
+            code_bad ? 100.0 * static_cast<double>(code_right) / static_cast<double>(code_bad) : 0;
+        state.counters["inferred"] = per_run(inferred);
+        state.counters["wrong_inferred"] = per_run(wrong_inferred);
+        state.counters["guessed"] = per_run(guessed);
+        state.counters["guessed_right"] = per_run(guessed_right);
+        state.counters["not_inferred_nor_guessed"] = per_run(unmarked);
     }
 };
 
-void BM_OneReadFlips(benchmark::State& state) {
-    Repairs t;
+void run_one_read(benchmark::State& state, const std::vector<CorpusTape>& tapes, std::uint64_t seeds) {
+    bool guess = state.range(0) != 0;
+    OneReadTally t;
     for (auto _ : state)
-        for (std::uint64_t p = 0; p < 4; ++p) t.add(generated_tape(250'000, p + 100), p + 7);
+        for (std::uint64_t s = 1; s <= seeds; ++s)
+            for (const auto& tape : tapes) t.add(tape, s * 7919 + tape.frames.size(), guess);
     t.report(state);
 }
-BENCHMARK(BM_OneReadFlips)->Iterations(1)->Unit(benchmark::kSecond);
 
-void BM_OneReadFlipsSampleTapes(benchmark::State& state) {
-    const auto tapes = sample_tapes();
-    Repairs t;
+void BM_OneReadGenerated(benchmark::State& state) {
+    std::vector<CorpusTape> tapes;
+    for (std::uint64_t p = 0; p < 4 * scale(); ++p) tapes.push_back(bench::generated_tape(250'000, p + 100, p % 2));
+    run_one_read(state, tapes, 1);
+}
+BENCHMARK(BM_OneReadGenerated)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_OneReadSampleTapes(benchmark::State& state) { run_one_read(state, bench::sample_tapes(), 200 * scale()); }
+BENCHMARK(BM_OneReadSampleTapes)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
+
+// Real programs and DEC source tapes, seeds enough for 10^5 flips (about 30 passes over 0.7 MB).
+void BM_OneReadReal(benchmark::State& state) {
+    std::string note;
+    auto tapes = bench::real_tapes(note);
+    if (!note.empty()) std::fprintf(stderr, "restore_bench: %s\n", note.c_str());
+    if (tapes.empty()) return state.SkipWithError(note.c_str());
+    run_one_read(state, tapes, 30 * scale());
+}
+BENCHMARK(BM_OneReadReal)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
+
+// Several damaged reads, restored and scored.
+struct ManyReadsTally {
+    std::uint64_t sets = 0, exact = 0, frames = 0, silent = 0, flagged = 0, in_doubt = 0, run_votes = 0;
+    std::uint64_t decidable = 0, undecidable = 0, invisible = 0;
+
+    void add(const CorpusTape& t, int reads, std::uint64_t seed) {
+        std::vector<std::vector<tape::Frame>> rs;
+        std::vector<tape::DamageLog> logs(static_cast<std::size_t>(reads));
+        for (int k = 0; k < reads; ++k)
+            rs.push_back(tape::damage(t.frames, tape::mixed_damage(0.01, seed * 7 + static_cast<std::uint64_t>(k) + 1),
+                                      &logs[static_cast<std::size_t>(k)]));
+        auto r = restore_reads(rs);
+        auto check = tape::check_restore(t.frames, r);
+        ++sets, exact += check.exact, frames += tape::punched_part(t.frames).size();
+        silent += check.silently_wrong, flagged += check.flagged_wrong, run_votes += r.run_length_votes;
+        for (const auto& p : r.problems) in_doubt += tape::in_doubt(p.status);
+        static bool dumped = false;
+        if (const char* dump = std::getenv("RESTORE_BENCH_DUMP"); dump && !dumped && check.silently_wrong > 1000) {
+            dumped = true;
+            auto put = [&](const std::string& name, const std::vector<tape::Frame>& f) {
+                if (FILE* out = std::fopen((std::string(dump) + name).c_str(), "wb")) {
+                    std::fwrite(f.data(), 1, f.size(), out);
+                    std::fclose(out);
+                }
+            };
+            put("tape.ptp", t.frames), put("out.ptp", r.frames);
+            for (std::size_t k = 0; k < rs.size(); ++k) put("read" + std::to_string(k + 1) + ".ptp", rs[k]);
+        }
+        for (std::size_t x : check.silent_at) {
+            classify(t.frames, logs, x);
+            if (std::getenv("RESTORE_BENCH_SHOW")) show(t.frames, logs, r, x);
+        }
+    }
+    // RESTORE_BENCH_SHOW: each silent error with the tape, the output and the damage around it.
+    static void show(const std::vector<tape::Frame>& t, const std::vector<tape::DamageLog>& logs,
+                     const tape::RestoreResult& r, std::size_t x) {
+        auto text = [](std::span<const tape::Frame> f, std::size_t at) {
+            std::string s;
+            for (std::size_t i = at > 12 ? at - 12 : 0; i < std::min(f.size(), at + 12); ++i) {
+                char c = static_cast<char>(f[i] & 0x7f);
+                s += i == at ? "[" : "";
+                s += c == '\n' ? '|' : (c >= 32 && c < 127 ? c : '?');
+                s += i == at ? "]" : "";
+            }
+            return s;
+        };
+        long lead = (tape::punched_part(r.frames).data() - r.frames.data()) - (tape::punched_part(t).data() - t.data());
+        std::fprintf(stderr, "silent at %zu: tape \"%s\" output \"%s\"\n", x, text(t, x).c_str(),
+                     text(r.frames, static_cast<std::size_t>(static_cast<long>(x) + lead)).c_str());
+        if (std::getenv("RESTORE_BENCH_SHOW_START")) {
+            auto b = tape::punched_part(r.frames);
+            std::size_t o = static_cast<std::size_t>(b.data() - r.frames.data());
+            std::fprintf(stderr, "  output from %zu:", o);
+            for (std::size_t i = o; i < o + 6; ++i) std::fprintf(stderr, " %02x", r.frames[i]);
+            std::fprintf(stderr, "\n");
+            for (const auto& p : r.problems)
+                if (p.frame && *p.frame <= o + 6)
+                    std::fprintf(stderr, "  problem at %llu: %s: %s\n", static_cast<unsigned long long>(*p.frame),
+                                 std::string(tape::status_name(p.status)).c_str(), p.reason.c_str());
+            for (std::size_t k = 0; k < logs.size(); ++k)
+                for (const auto& e : logs[k].events)
+                    if (e.original < 60)
+                        std::fprintf(stderr, "  read %zu: %s at %zu (%zu frames)\n", k + 1,
+                                     std::string(tape::damage_kind_name(e.kind)).c_str(), e.original, e.frames);
+        }
+        for (std::size_t k = 0; k < logs.size(); ++k)
+            for (const auto& e : logs[k].events)
+                if (e.original + 12 >= x && e.original <= x + 12)
+                    std::fprintf(stderr, "  read %zu: %s at %zu (%zu frames)\n", k + 1,
+                                 std::string(tape::damage_kind_name(e.kind)).c_str(), e.original, e.frames);
+        for (const auto& p : r.problems)
+            if (p.frame && *p.frame + 12 >= x + static_cast<std::size_t>(lead) + 1 && *p.frame <= x + lead + 13)
+                std::fprintf(stderr, "  problem at %llu: %s: %s\n", static_cast<unsigned long long>(*p.frame),
+                             std::string(tape::status_name(p.status)).c_str(), p.reason.c_str());
+    }
+    // How many reads read the run of equal frames around tape frame x (and its neighbours) undamaged.
+    void classify(const std::vector<tape::Frame>& t, const std::vector<tape::DamageLog>& logs, std::size_t x) {
+        std::size_t a = std::min(x, t.size() - 1), b = a;
+        while (a > 0 && t[a - 1] == t[x < t.size() ? x : a]) --a;
+        while (b + 1 < t.size() && t[b + 1] == t[a]) ++b;
+        std::size_t right = 0;
+        for (const auto& log : logs) {
+            bool touched = false;
+            for (const auto& e : log.events) {
+                if (e.kind == tape::DamageKind::leader_added || e.kind == tape::DamageKind::leader_removed) continue;
+                std::size_t from = e.original, to = e.original + std::max<std::size_t>(e.frames, 1) - 1;
+                touched |= to + 1 >= a && from <= b + 1;
+            }
+            right += !touched;
+        }
+        ++(right * 2 > logs.size() ? decidable : right > 0 ? undecidable : invisible);
+    }
+    void report(benchmark::State& state) const {
+        state.counters["sets"] = per_run(sets);
+        state.counters["byte_exact"] = per_run(exact);
+        state.counters["data_frames"] = per_run(frames);
+        state.counters["silently_wrong"] = per_run(silent);
+        state.counters["silent_per_1e7"] = frames ? 1e7 * static_cast<double>(silent) / static_cast<double>(frames) : 0;
+        state.counters["decidable"] = per_run(decidable);
+        state.counters["undecidable"] = per_run(undecidable);
+        state.counters["invisible"] = per_run(invisible);
+        state.counters["wrong_per_1e6"] =
+            frames ? 1e6 * static_cast<double>(silent + flagged) / static_cast<double>(frames) : 0;
+        state.counters["in_doubt_pct"] =
+            frames ? 100.0 * static_cast<double>(in_doubt) / static_cast<double>(frames) : 0;
+        state.counters["run_length_votes"] = per_run(run_votes);
+    }
+};
+
+void run_many(benchmark::State& state, const std::vector<CorpusTape>& tapes, std::uint64_t seeds) {
+    ManyReadsTally t;
     for (auto _ : state)
-        for (const auto& tape : tapes)
-            for (std::uint64_t seed = 1; seed <= 200; ++seed) t.add(tape, seed);
+        for (std::uint64_t s = 0; s < seeds; ++s)
+            for (const auto& tape : tapes) t.add(tape, static_cast<int>(state.range(0)), s);
     t.report(state);
 }
-BENCHMARK(BM_OneReadFlipsSampleTapes)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_ManyReadsGenerated(benchmark::State& state) {
+    std::vector<CorpusTape> tapes;
+    for (std::uint64_t p = 0; p < 10 * scale(); ++p) tapes.push_back(bench::generated_tape(1'000'000, p + 1, p % 2));
+    run_many(state, tapes, 1);
+}
+BENCHMARK(BM_ManyReadsGenerated)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
+
+// Real programs back to back on a reel of 10^6 frames, with the sections they repeat.
+void BM_ManyReadsRealReel(benchmark::State& state) {
+    std::string note;
+    auto tapes = bench::real_tapes(note);
+    if (tapes.empty()) return state.SkipWithError(note.c_str());
+    run_many(state, {bench::reel_of(tapes, 1'000'000)}, 10 * scale());
+}
+BENCHMARK(BM_ManyReadsRealReel)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_ManyReadsSampleTapes(benchmark::State& state) { run_many(state, bench::sample_tapes(), 1000 * scale()); }
+BENCHMARK(BM_ManyReadsSampleTapes)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_FiveReadsSpeed(benchmark::State& state) {
-    auto tape = generated_tape(1'000'000, 42);
+    auto t = bench::generated_tape(1'000'000, 42);
     std::vector<std::vector<tape::Frame>> reads;
-    for (std::uint64_t k = 0; k < 5; ++k) reads.push_back(tape::damage(tape, tape::mixed_damage(0.01, k + 50)));
-    std::vector<std::span<const tape::Frame>> spans(reads.begin(), reads.end());
+    for (std::uint64_t k = 0; k < 5; ++k) reads.push_back(tape::damage(t.frames, tape::mixed_damage(0.01, k + 50)));
     for (auto _ : state) {
-        auto r =
-            tape::restore(spans, tape::RestoreOptions{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::gost});
+        auto r = restore_reads(reads);
         benchmark::DoNotOptimize(r.frames.data());
     }
-    state.counters["frames_per_read"] = static_cast<double>(tape.size());
+    state.counters["frames_per_read"] = static_cast<double>(t.frames.size());
 }
 BENCHMARK(BM_FiveReadsSpeed)->Iterations(3)->Unit(benchmark::kMillisecond);
 

@@ -10,9 +10,15 @@
 #include <span>
 #include <vector>
 
+#include "tape/error.hpp"
 #include "tape/frame.hpp"
+#include "tape/limits.hpp"
 
 namespace tape {
+
+/// The longest read align_reads takes, in frames: 10^8 frames is 254 km of tape, more than any reel
+/// holds; a longer input is no read of a paper tape.
+inline constexpr std::size_t max_read_frames = max_tape_frames;
 
 struct AlignOptions {
     std::size_t anchor_length = 12;  ///< frames in an anchor: a run that occurs once in each read
@@ -22,6 +28,23 @@ struct AlignOptions {
     /// Reads of which fewer than this fraction of the runs that occur once in each anchor in order
     /// are refused as reads of another tape.
     double min_shared = 0.5;
+    /// Reads of another tape are left out (ReadAlignment::related is false for them, and they have no
+    /// frame in any column) instead of refused.
+    bool drop_unrelated = false;
+};
+
+/// Thrown by align_reads for a read that shares too little with the reference to be of the same tape.
+class UnrelatedRead : public Error {
+public:
+    UnrelatedRead(std::size_t read, std::size_t reference, double anchored);
+    std::size_t read() const { return read_; }            ///< from 0
+    std::size_t reference() const { return reference_; }  ///< from 0
+    /// The share of the runs that occur as often in each read that anchored them to each other.
+    double anchored() const { return anchored_; }
+
+private:
+    std::size_t read_, reference_;
+    double anchored_;
 };
 
 /// The reads in shared columns: column c holds, for every read, the index of its frame there, or
@@ -46,10 +69,17 @@ public:
     bool covers(std::size_t read, std::size_t column) const { return column >= first_[read] && column < end_[read]; }
     /// The fraction of each read's frames matched exactly with the reference's (1 for the reference).
     double shared(std::size_t read) const { return shared_[read]; }
+    /// False for a read left out as a read of another tape (AlignOptions::drop_unrelated).
+    bool related(std::size_t read) const { return related_[read]; }
 
     /// For align_reads: appends one column (reads() entries).
     void add_column(std::span<const std::int32_t> column);
+    /// For align_reads: room for this many columns.
+    void reserve(std::size_t columns) { cells_.reserve(columns * reads_); }
     void set_shared(std::size_t read, double fraction) { shared_.at(read) = fraction; }
+    void set_related(std::size_t read, bool related) { related_.at(read) = related; }
+    /// Shared and related, as another alignment of the same reads has them.
+    void take_read_facts(const ReadAlignment& a) { shared_ = a.shared_, related_ = a.related_; }
     /// Computes first_column/end_column once the columns are in.
     void finish();
 
@@ -58,6 +88,7 @@ private:
     std::vector<std::int32_t> cells_;
     std::vector<std::size_t> first_, end_;
     std::vector<double> shared_ = std::vector<double>(reads_, 1.0);
+    std::vector<bool> related_ = std::vector<bool>(reads_, true);
 };
 
 /// The frame `read` has in column, or nullopt (reads: those the alignment was made of).
@@ -71,9 +102,10 @@ inline std::optional<Frame> frame_at(const ReadAlignment& a, std::span<const std
 /// True when every read that covers column has a frame there, and they are all the same.
 bool unanimous(const ReadAlignment& a, std::span<const std::span<const Frame>> reads, std::size_t column);
 
-/// Aligns reads (each a whole image's frames, at most 2^31 - 1 frames). Throws Error(Errc::bad_image)
-/// naming the read when one shares too little with the reference to be of the same tape, or when
-/// no read has frames. One read alone is its own alignment.
+/// Aligns reads (each a whole image's frames, at most max_read_frames). Throws UnrelatedRead (an
+/// Error(Errc::bad_image)) naming the read when one shares too little with the reference to be of the
+/// same tape (unless options.drop_unrelated), Error(Errc::bad_image) when no read has frames, and
+/// Error(Errc::usage) for a read longer than max_read_frames. One read alone is its own alignment.
 ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const AlignOptions& options = {});
 
 }  // namespace tape

@@ -17,6 +17,7 @@
 #include "tape/image_input.hpp"
 #include "tape/label.hpp"
 #include "tape/program.hpp"
+#include "tape/restore_doubts.hpp"
 #include "tape/utf8_text.hpp"
 
 namespace tape {
@@ -81,9 +82,15 @@ public:
     const std::vector<Diagnostic>& notes() const { return notes_; }
     /// The decoder of an image, for the counts of bad frames; nullptr before next_text or for text.
     const Decoder* decoder() const { return decoder_.get(); }
+    /// Frames in doubt met so far: an image file restored by tape restore, whose doubts file beside it
+    /// (tape/restore_doubts.hpp) names frames its restoration could not decide. Each is given by
+    /// next_text as a Diagnostic (Errc::doubtful_frame) where it stands, and stops decoding as a bad
+    /// frame does (unless decode.keep_going).
+    std::uint64_t doubtful_frames() const { return doubtful_met_; }
 
 private:
     void open(std::unique_ptr<ByteSource> source, const std::string& name);
+    bool feed_with_doubts(std::span<const Frame> frames, std::uint64_t first, DecodeResult& out);
 
     InputOptions options_;
     std::unique_ptr<ImageInput> image_;
@@ -96,9 +103,12 @@ private:
     std::unique_ptr<Decoder> decoder_;
     std::vector<Diagnostic> notes_;
     bool ended_ = false;
-    bool mark_noted_ = false;           // the DOS end-of-file mark was noted when the text was opened
-    std::uint64_t decoded_frames_ = 0;  // frames given to the decoder: where the next chunk starts
-    std::vector<Frame> unlabelled_;     // a chunk with the label's frames blanked
+    bool mark_noted_ = false;            // the DOS end-of-file mark was noted when the text was opened
+    std::uint64_t decoded_frames_ = 0;   // frames given to the decoder: where the next chunk starts
+    std::vector<Frame> unlabelled_;      // a chunk with the label's frames blanked
+    std::vector<DoubtfulFrame> doubts_;  // from the doubts file beside the image, by frame
+    std::size_t next_doubt_ = 0;
+    std::uint64_t doubtful_met_ = 0;
 };
 
 /// Streams the programs of input into visitor, in bounded memory. A bad frame reaches

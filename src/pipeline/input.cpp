@@ -41,6 +41,7 @@ private:
 
 Input::Input(const std::string& path, const InputOptions& options) : options_(options) {
     open(std::make_unique<FileSource>(path), path);
+    if (image_ && path != "-") doubts_ = doubts_beside(path);
 }
 
 Input::Input(std::unique_ptr<ByteSource> source, const std::string& name, const InputOptions& options)
@@ -172,7 +173,7 @@ bool Input::next_text(DecodeResult& out) {
             decoder_->finish(out);  // a 5-track CR held back at the very end
             return out.text.size() > had;
         }
-        if (!decoder_->feed(frames, out)) {
+        if (!feed_with_doubts(frames, decoded_frames_ - frames.size(), out)) {
             out.complete = false;
             ended_ = true;
         }
@@ -198,6 +199,26 @@ bool Input::next_text(DecodeResult& out) {
     out.text.append(reinterpret_cast<const char*>(piece.data()), piece.size());
     text_ahead_.clear();
     return true;
+}
+
+// The decoder fed frames (the first of them frame `first`, from 0), with a Diagnostic for each frame in
+// doubt among them, where it stands: false where decoding stops (at a bad frame, or at a frame in doubt
+// unless keep_going).
+bool Input::feed_with_doubts(std::span<const Frame> frames, std::uint64_t first, DecodeResult& out) {
+    while (next_doubt_ < doubts_.size() && doubts_[next_doubt_].frame <= first) ++next_doubt_;
+    std::size_t given = 0;
+    while (next_doubt_ < doubts_.size() && doubts_[next_doubt_].frame <= first + frames.size()) {
+        const DoubtfulFrame& d = doubts_[next_doubt_++];
+        std::size_t upto = static_cast<std::size_t>(d.frame - first);  // the doubtful frame included
+        if (!decoder_->feed(frames.subspan(given, upto - given), out)) return false;
+        given = upto;
+        ++doubtful_met_;
+        out.diagnostics.push_back(Diagnostic{.code = Errc::doubtful_frame,
+                                             .where = Position{.frame = d.frame},
+                                             .message = "restored in doubt (" + d.status + "): " + d.reason});
+        if (!decode_->keep_going) return false;
+    }
+    return decoder_->feed(frames.subspan(given), out);
 }
 
 bool load_each(Input& input, ProgramVisitor& visitor, const LoadOptions& options) {

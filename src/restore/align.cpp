@@ -22,21 +22,26 @@ using Pairs = std::vector<std::pair<std::int32_t, std::int32_t>>;  // (reference
 // next to a gap of the other.
 int score(Frame a, Frame b) {
     if (a == b) return 4;
-    return hole_count(a ^ b) == 1 ? -2 : -18;
+    unsigned x = a ^ b;
+    return (x & (x - 1)) == 0 ? -2 : -18;  // one hole apart
 }
 constexpr int gap_open = -8;    // the first frame of a run of gaps
 constexpr int gap_extend = -2;  // each further one
 constexpr int gap_switch = -7;  // a run of gaps of one kind opening next to one of the other
 
-// The rolling hashes of every run of k frames, sorted, with the runs that occur once kept.
-std::vector<std::pair<std::uint64_t, std::int32_t>> unique_runs(std::span<const Frame> s, std::size_t k) {
-    std::vector<std::pair<std::uint64_t, std::int32_t>> all;
+// The rolling hash of every run of k frames that is not mostly blank (a run of leader anchors
+// nothing), with where it starts: sorted by hash, then by place. One run in four is kept, chosen by its
+// hash, so the same runs in every read: anchors a few frames apart cover the reads as well, at a
+// quarter of the sorting.
+using Runs = std::vector<std::pair<std::uint64_t, std::int32_t>>;
+Runs hashed_runs(std::span<const Frame> s, std::size_t k) {
+    Runs all;
     if (s.size() < k) return all;
     constexpr std::uint64_t base = 0x100000001B3ULL;
     std::uint64_t top = 1, h = 0;
     for (std::size_t i = 0; i + 1 < k; ++i) top *= base;
-    all.reserve(s.size() - k + 1);
-    std::size_t blanks = 0;  // a run of blank frames (leader) anchors nothing
+    all.reserve((s.size() - k + 1) / 3);  // about one run in four is kept
+    std::size_t blanks = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (i >= k) {
             h -= top * (s[i - k] + 1ULL);
@@ -44,38 +49,192 @@ std::vector<std::pair<std::uint64_t, std::int32_t>> unique_runs(std::span<const 
         }
         h = h * base + (s[i] + 1ULL);
         blanks += s[i] == blank_frame;
-        if (i + 1 >= k && blanks < k / 2) all.emplace_back(h, static_cast<std::int32_t>(i + 1 - k));
+        std::uint64_t mixed = (h ^ (h >> 29)) * 0xBF58476D1CE4E5B9ULL;
+        if (i + 1 >= k && blanks < k / 2 && (mixed >> 62) == 0)
+            all.emplace_back(h, static_cast<std::int32_t>(i + 1 - k));
     }
     std::sort(all.begin(), all.end());
-    std::size_t out = 0;
-    for (std::size_t i = 0; i < all.size();) {
-        std::size_t j = i + 1;
-        while (j < all.size() && all[j].first == all[i].first) ++j;
-        if (j == i + 1) all[out++] = all[i];
-        i = j;
-    }
-    all.resize(out);
     return all;
 }
 
-// The longest chain of anchors increasing in both reads (patience sorting on the read's index).
-Pairs chain(Pairs anchors) {
+// A run that occurs as many times in both reads (and no more than this) pairs its occurrences in
+// order: a program punched twice, or sections repeated in it, still anchor where each copy stands.
+constexpr std::size_t most_repeats = 8;
+
+// The anchors of two reads (pairs of runs that stand for the same place of the tape), sorted, and
+// how many runs could have anchored: those of each read that occur at most most_repeats times.
+Pairs matching_runs(const Runs& rr, const Runs& dr, std::size_t& could, Pairs& repeated) {
+    Pairs anchors;
+    std::size_t ref_could = 0, read_could = 0;
+    auto group_end = [](const Runs& v, std::size_t i) {
+        std::size_t j = i + 1;
+        while (j < v.size() && v[j].first == v[i].first) ++j;
+        return j;
+    };
+    std::size_t x = 0, y = 0;
+    while (x < rr.size() || y < dr.size()) {
+        std::size_t xe = x < rr.size() ? group_end(rr, x) : x, ye = y < dr.size() ? group_end(dr, y) : y;
+        bool take_x = x < rr.size() && (y >= dr.size() || rr[x].first <= dr[y].first);
+        bool take_y = y < dr.size() && (x >= rr.size() || dr[y].first <= rr[x].first);
+        if (take_x && xe - x <= most_repeats) ref_could += xe - x;
+        if (take_y && ye - y <= most_repeats) read_could += ye - y;
+        if (take_x && take_y && xe - x == ye - y && xe - x <= most_repeats)
+            for (std::size_t t = 0; t < xe - x; ++t)
+                (xe - x == 1 ? anchors : repeated).emplace_back(rr[x + t].second, dr[y + t].second);
+        if (take_x) x = xe;
+        if (take_y) y = ye;
+    }
+    could = std::min(ref_could, read_could);
     std::sort(anchors.begin(), anchors.end());
-    std::vector<std::size_t> tails, before(anchors.size());
+    std::sort(repeated.begin(), repeated.end());
+    return anchors;
+}
+
+// Runs that occur more than once anchor only near the diagonal the unique runs around them keep: where
+// one read damaged one copy and the other another, pairing copies in order would pair different
+// places. Where no run is unique (a program punched twice, and nothing else), they anchor alone.
+Pairs with_repeats(const Pairs& unique, const Pairs& repeated) {
+    if (unique.empty()) return repeated;
+    constexpr std::int64_t near = 32;
+    Pairs out = unique;
+    for (auto [i, j] : repeated) {
+        auto next = std::lower_bound(unique.begin(), unique.end(), std::make_pair(i, INT32_MIN));
+        std::int64_t d = static_cast<std::int64_t>(j) - i;
+        bool ok = false;
+        if (next != unique.end()) ok |= std::abs(d - (static_cast<std::int64_t>(next->second) - next->first)) <= near;
+        if (next != unique.begin())
+            ok |= std::abs(d - (static_cast<std::int64_t>(std::prev(next)->second) - std::prev(next)->first)) <= near;
+        if (ok) out.emplace_back(i, j);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+// Anchors on one diagonal whose runs touch or overlap, as one: where both reads run alike.
+struct Segment {
+    std::int32_t i, j, last_i;          // the first anchor, and where the last one starts
+    std::size_t first_anchor, anchors;  // in the sorted anchors
+    std::int64_t diagonal() const { return static_cast<std::int64_t>(j) - i; }
+};
+
+std::vector<Segment> segments_of(const Pairs& anchors, std::int32_t k) {
+    std::vector<Segment> out;
     for (std::size_t a = 0; a < anchors.size(); ++a) {
-        auto it = std::lower_bound(tails.begin(), tails.end(), anchors[a].second,
-                                   [&](std::size_t t, std::int32_t j) { return anchors[t].second < j; });
-        before[a] = it == tails.begin() ? SIZE_MAX : *(it - 1);
-        if (it == tails.end())
-            tails.push_back(a);
-        else
-            *it = a;
+        auto [i, j] = anchors[a];
+        if (!out.empty()) {
+            Segment& s = out.back();
+            if (j - i == s.diagonal() && i > s.last_i && i <= s.last_i + k) {
+                s.last_i = i, ++s.anchors;
+                continue;
+            }
+        }
+        out.push_back({i, j, i, a, 1});
+    }
+    return out;
+}
+
+// The best chain of segments increasing in both reads. Each segment gains the frames its runs cover
+// beyond the segment before; a change of diagonal between two costs more the farther it shifts: a
+// reader drops or doubles a frame or a few, so reads drift slowly, while a run that happens to recur
+// elsewhere (a repeated section of a program) jumps far and back, and is left out.
+Pairs chain(const Pairs& anchors, std::int32_t k) {
+    std::vector<Segment> seg = segments_of(anchors, k);
+    constexpr std::size_t lookback = 64;
+    constexpr std::int64_t shift_cost = 2, frames_per_point = 8;
+    std::vector<std::int64_t> score(seg.size());
+    std::vector<std::size_t> before(seg.size(), SIZE_MAX);
+    std::size_t best = SIZE_MAX;
+    for (std::size_t s = 0; s < seg.size(); ++s) {
+        const std::int64_t end = seg[s].last_i + k;
+        score[s] = end - seg[s].i;
+        for (std::size_t t = s > lookback ? s - lookback : 0; t < s; ++t) {
+            if (seg[t].i >= seg[s].i || seg[t].j >= seg[s].j || seg[t].last_i + k >= end) continue;
+            std::int64_t shift = seg[s].diagonal() - seg[t].diagonal();
+            std::int64_t gain = score[t] + end - std::max<std::int64_t>(seg[s].i, seg[t].last_i + k) -
+                                (shift ? shift_cost + (shift < 0 ? -shift : shift) / frames_per_point : 0);
+            if (gain > score[s]) score[s] = gain, before[s] = t;
+        }
+        if (best == SIZE_MAX || score[s] > score[best]) best = s;
     }
     Pairs out;
-    for (std::size_t a = tails.empty() ? SIZE_MAX : tails.back(); a != SIZE_MAX; a = before[a])
-        out.push_back(anchors[a]);
+    for (std::size_t s = best; s != SIZE_MAX; s = before[s])
+        for (std::size_t a = seg[s].first_anchor + seg[s].anchors; a-- > seg[s].first_anchor;) {
+            auto [i, j] = anchors[a];
+            if (j - i == seg[s].diagonal()) out.emplace_back(i, j);
+        }
     std::reverse(out.begin(), out.end());
     return out;
+}
+
+// The dynamic programming's three states: a pair (M), a ref frame alone (X), a read frame alone (Y).
+enum : std::uint8_t { M = 0, X = 1, Y = 2 };
+
+// The best of the three states' scores, and which it is.
+int best3(int m, int x, int y, std::uint8_t& from) {
+    from = M;
+    int s = m;
+    if (x > s) s = x, from = X;
+    if (y > s) s = y, from = Y;
+    return s;
+}
+
+// From cell (i, j) in state back to the table's start, appending the pairs that stand in one column in
+// order. cell(i, j): the trace byte there (the state before M, X and Y in its bits 0-1, 2-3 and 4-5).
+template <typename Cell>
+void trace_back(std::size_t i, std::size_t j, std::uint8_t state, std::size_t ri, std::size_t rj, Pairs& out,
+                Cell cell) {
+    const std::size_t first = out.size();  // the pairs come last first: turned once all are in
+    while (i > 0 && j > 0) {
+        std::uint8_t t = cell(i, j);
+        if (state == M) {
+            out.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
+            state = t & 3, --i, --j;
+        } else if (state == X) {
+            state = (t >> 2) & 3, --i;
+        } else {
+            state = (t >> 4) & 3, --j;
+        }
+    }
+    std::reverse(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+}
+
+// A stretch between anchors too long for the whole table (no run anchors it: a long repetitive part,
+// or reads that disagree long): the same alignment within a band around its diagonal, as wide as the
+// reads' lengths there differ and a little more, so that time and memory grow with its length only.
+void align_banded(std::span<const Frame> ref, std::span<const Frame> read, std::size_t ri, std::size_t a,
+                  std::size_t rj, std::size_t b, Pairs& out) {
+    constexpr int never = INT_MIN / 4;
+    const std::size_t w = (a > b ? a - b : b - a) + 96, width = 2 * w + 1;
+    auto lo = [&](std::size_t i) {
+        std::size_t c = i * b / a;
+        return c > w ? c - w : 0;
+    };
+    auto hi = [&](std::size_t i) { return std::min(b, i * b / a + w); };
+    auto run = [](std::size_t len) { return gap_open + static_cast<int>(len - 1) * gap_extend; };
+    std::vector<std::uint8_t> trace((a + 1) * width);
+    std::vector<int> pm(b + 1, never), px(b + 1, never), py(b + 1, never), cm(b + 1, never), cx(b + 1, never),
+        cy(b + 1, never);
+    pm[0] = 0;
+    for (std::size_t j = 1; j <= hi(0); ++j) py[j] = run(j);
+    for (std::size_t i = 1; i <= a; ++i) {
+        const std::size_t l = lo(i), h = hi(i);
+        if (l == 0) cm[0] = never, cy[0] = never, cx[0] = run(i);
+        const Frame f = ref[ri + i - 1];
+        for (std::size_t j = std::max<std::size_t>(l, 1); j <= h; ++j) {
+            std::uint8_t fm, fx, fy;
+            cm[j] = best3(pm[j - 1], px[j - 1], py[j - 1], fm) + score(f, read[rj + j - 1]);
+            cx[j] = best3(pm[j] + gap_open, px[j] + gap_extend, py[j] + gap_switch, fx);
+            cy[j] = best3(cm[j - 1] + gap_open, cx[j - 1] + gap_switch, cy[j - 1] + gap_extend, fy);
+            trace[i * width + (j - l)] = static_cast<std::uint8_t>(fm | fx << 2 | fy << 4);
+        }
+        // Beside this row's band, as far as the next row reads: nothing.
+        if (l > 0) cm[l - 1] = cx[l - 1] = cy[l - 1] = never;
+        for (std::size_t j = h + 1; j <= hi(i + 1); ++j) cm[j] = cx[j] = cy[j] = never;
+        std::swap(pm, cm), std::swap(px, cx), std::swap(py, cy);
+    }
+    std::uint8_t state;
+    best3(pm[b], px[b], py[b], state);
+    trace_back(a, b, state, ri, rj, out, [&](std::size_t i, std::size_t j) { return trace[i * width + (j - lo(i))]; });
 }
 
 // Aligns ref[ri, ri + a) with read[rj, rj + b) by dynamic programming with gaps that cost most where
@@ -90,23 +249,25 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     if (free_start && b > a + 64) rj += b - (a + 64), b = a + 64;
     if (free_end && a > b + 64) a = b + 64;
     if (free_end && b > a + 64) b = a + 64;
-    if ((a + 1) * (b + 1) > max_cells) return;
+    if ((a + 1) * (b + 1) > max_cells) {
+        // Banded where the band stays within bounds; beyond, the frames stand in columns of their own.
+        std::size_t band = 2 * ((a > b ? a - b : b - a) + 96) + 1;
+        if (!free_start && !free_end && max_cells > 0 && (a + 1) * band <= 4 * max_cells)
+            align_banded(ref, read, ri, a, rj, b, out);
+        return;
+    }
     // States: a pair (M), a reference frame unpaired (X), a read frame unpaired (Y). A cell's trace
     // holds where each state came from: bits 0-1 for M, 2-3 for X, 4-5 for Y.
-    enum : std::uint8_t { M = 0, X = 1, Y = 2 };
     constexpr int never = INT_MIN / 4;
     auto run = [](std::size_t len) { return gap_open + static_cast<int>(len - 1) * gap_extend; };
-    std::vector<std::uint8_t> trace((a + 1) * (b + 1));
-    std::vector<int> pm(b + 1, never), px(b + 1, never), py(b + 1, never), cm(b + 1), cx(b + 1), cy(b + 1);
+    // Scratch kept between calls: the stretches between anchors are many and mostly a few frames long.
+    thread_local std::vector<std::uint8_t> trace;
+    thread_local std::vector<int> pm, px, py, cm, cx, cy;
+    trace.assign((a + 1) * (b + 1), 0);
+    pm.assign(b + 1, never), px.assign(b + 1, never), py.assign(b + 1, never);
+    cm.assign(b + 1, 0), cx.assign(b + 1, 0), cy.assign(b + 1, 0);
     pm[0] = 0;
     for (std::size_t j = 1; j <= b; ++j) py[j] = free_start ? 0 : run(j);
-    auto best3 = [](int m, int x, int y, std::uint8_t& from) {
-        from = M;
-        int s = m;
-        if (x > s) s = x, from = X;
-        if (y > s) s = y, from = Y;
-        return s;
-    };
     int best = never;
     std::size_t best_i = a, best_j = b;
     std::uint8_t best_state = M;
@@ -134,41 +295,25 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
     } else {
         best3(pm[b], px[b], py[b], best_state);
     }
-    std::size_t i = best_i, j = best_j;
-    std::uint8_t state = best_state;
-    Pairs stretch;
-    while (i > 0 && j > 0) {
-        std::uint8_t t = trace[i * (b + 1) + j];
-        if (state == M) {
-            stretch.emplace_back(static_cast<std::int32_t>(ri + i - 1), static_cast<std::int32_t>(rj + j - 1));
-            state = t & 3, --i, --j;
-        } else if (state == X) {
-            state = (t >> 2) & 3, --i;
-        } else {
-            state = (t >> 4) & 3, --j;
-        }
-    }
-    out.insert(out.end(), stretch.rbegin(), stretch.rend());
+    trace_back(best_i, best_j, best_state, ri, rj, out,
+               [&](std::size_t i, std::size_t j) { return trace[i * (b + 1) + j]; });
 }
 
 // The pairs of ref and read frames that stand in one column, in order.
-Pairs pair_up(std::span<const Frame> ref, std::span<const Frame> read, const AlignOptions& o, double& anchored_share) {
-    std::size_t k = std::max<std::size_t>(o.anchor_length, 4);
-    auto rr = unique_runs(ref, k), dr = unique_runs(read, k);
-    Pairs anchors;
-    for (std::size_t x = 0, y = 0; x < rr.size() && y < dr.size();) {
-        if (rr[x].first < dr[y].first)
-            ++x;
-        else if (dr[y].first < rr[x].first)
-            ++y;
-        else
-            anchors.emplace_back(rr[x++].second, dr[y++].second);
-    }
+// ref_runs: hashed_runs(ref, anchor_length(o)).
+std::size_t anchor_length(const AlignOptions& o) { return std::max<std::size_t>(o.anchor_length, 4); }
+
+Pairs pair_up(std::span<const Frame> ref, const Runs& ref_runs, std::span<const Frame> read, const AlignOptions& o,
+              double& anchored_share) {
+    const std::size_t k = anchor_length(o);
+    std::size_t could = 0;
+    Pairs repeated;
+    Pairs unique = matching_runs(ref_runs, hashed_runs(read, k), could, repeated);
+    Pairs runs, chained = chain(with_repeats(chain(unique, static_cast<std::int32_t>(k)), repeated),
+                                static_cast<std::int32_t>(k));
+    // How much of what could anchor did: runs that occur as often in each read, in order.
+    anchored_share = could ? std::min(1.0, static_cast<double>(chained.size()) / static_cast<double>(could)) : 0;
     // Each anchor's frames, checked (a hash may collide), become pairs on its diagonal.
-    Pairs runs, chained = chain(std::move(anchors));
-    // How much of what could anchor did: runs that occur once in each read, in order.
-    std::size_t could = std::min(rr.size(), dr.size());
-    anchored_share = could ? static_cast<double>(chained.size()) / static_cast<double>(could) : 0;
     std::int32_t last_i = -1, last_j = -1;
     for (auto [i, j] : chained)
         for (std::int32_t t = 0; t < static_cast<std::int32_t>(k); ++t)
@@ -325,7 +470,8 @@ ReadAlignment refine(std::span<const std::span<const Frame>> reads, const ReadAl
     constexpr std::int32_t longest = 64;
     const std::size_t n_reads = a.reads();
     ReadAlignment out(n_reads, a.reference());
-    for (std::size_t r = 0; r < n_reads; ++r) out.set_shared(r, a.shared(r));
+    out.take_read_facts(a);
+    out.reserve(a.columns() + a.columns() / 64);
     auto solid = [&](std::size_t c) { return unanimous(a, reads, c); };
     std::vector<std::int32_t> column(n_reads), lo(n_reads), len(n_reads);
     auto copy = [&](std::size_t c) {
@@ -394,7 +540,8 @@ ReadAlignment refine(std::span<const std::span<const Frame>> reads, const ReadAl
 ReadAlignment merge_substitutions(const ReadAlignment& a) {
     const std::size_t n = a.reads();
     ReadAlignment out(n, a.reference());
-    for (std::size_t r = 0; r < n; ++r) out.set_shared(r, a.shared(r));
+    out.take_read_facts(a);
+    out.reserve(a.columns());
     auto same_reads = [&](std::size_t x, std::size_t y) {
         for (std::size_t r = 0; r < n; ++r)
             if ((a.frame(x, r) == ReadAlignment::none) != (a.frame(y, r) == ReadAlignment::none)) return false;
@@ -464,60 +611,121 @@ void ReadAlignment::finish() {
         if (first_[r] > end_[r]) first_[r] = end_[r];
 }
 
-ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const AlignOptions& o) {
-    if (reads.empty()) throw Error(Errc::usage, "no reads to align");
-    for (const auto& r : reads)
-        if (r.size() >= static_cast<std::size_t>(INT32_MAX))
-            throw Error(Errc::usage, "a read of 2^31 frames or more is too long to align");
+namespace {
+
+// Every read set against one reference read: its frame in each reference column, its runs of frames
+// between reference frames (few: kept as a list, not a column each), and how much it shares.
+struct AgainstReference {
     std::size_t ref = 0;
-    for (std::size_t r = 1; r < reads.size(); ++r)
-        if (reads[r].size() > reads[ref].size()) ref = r;
-    if (reads[ref].empty()) throw Error(Errc::bad_image, "no read holds any frame");
-    const std::size_t n = reads[ref].size();
-    ReadAlignment out(reads.size(), ref);
-    // For every read: its frame in each reference column, and its runs of frames between reference
-    // frames (few: kept as a list, not a column each).
-    std::vector<std::vector<std::int32_t>> at(reads.size());
-    std::vector<std::vector<Insert>> inserts(reads.size());
+    std::vector<std::vector<std::int32_t>> at;
+    std::vector<std::vector<Insert>> inserts;
+    std::vector<double> shared, anchored;
+    std::vector<bool> related;
+    std::size_t unrelated = 0;
+};
+
+std::size_t punched_count(std::span<const Frame> s) {
+    return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [](Frame f) { return f != blank_frame; }));
+}
+
+AgainstReference against(std::span<const std::span<const Frame>> reads, std::size_t ref, const AlignOptions& o) {
+    AgainstReference out;
+    const std::size_t n_reads = reads.size(), n = reads[ref].size();
+    out.ref = ref;
+    out.at.resize(n_reads), out.inserts.resize(n_reads);
+    out.shared.assign(n_reads, 1.0), out.anchored.assign(n_reads, 1.0), out.related.assign(n_reads, true);
     const auto& rf = reads[ref];
-    for (std::size_t r = 0; r < reads.size(); ++r) {
-        if (r == ref) {
-            at[r].resize(n);
-            for (std::size_t i = 0; i < n; ++i) at[r][i] = static_cast<std::int32_t>(i);
+    const Runs ref_runs = n_reads > 1 ? hashed_runs(rf, anchor_length(o)) : Runs{};
+    for (std::size_t r = 0; r < n_reads; ++r) {
+        // The reference, and reads identical to it (a tape read twice without a fault), stand frame by
+        // frame in its columns.
+        if (r == ref || std::equal(rf.begin(), rf.end(), reads[r].begin(), reads[r].end())) {
+            out.at[r].resize(n);
+            for (std::size_t i = 0; i < n; ++i) out.at[r][i] = static_cast<std::int32_t>(i);
             continue;
         }
-        double anchored_share = 0;
-        at[r] = partners(rf, reads[r], pair_up(rf, reads[r], o, anchored_share));
+        out.at[r] = partners(rf, reads[r], pair_up(rf, ref_runs, reads[r], o, out.anchored[r]));
         std::size_t same = 0;
         // Shared punched frames: blank leader and trailer match on every tape and prove nothing.
         for (std::size_t i = 0; i < n; ++i)
-            if (at[r][i] != ReadAlignment::none)
-                same += rf[i] != blank_frame && rf[i] == reads[r][static_cast<std::size_t>(at[r][i])];
-        auto punched = [](std::span<const Frame> s) {
-            return static_cast<std::size_t>(
-                std::count_if(s.begin(), s.end(), [](Frame f) { return f != blank_frame; }));
-        };
-        std::size_t shorter = std::min(punched(rf), punched(reads[r]));
-        double shared = shorter ? static_cast<double>(same) / static_cast<double>(shorter) : 0;
-        out.set_shared(r, shared);
+            if (out.at[r][i] != ReadAlignment::none)
+                same += rf[i] != blank_frame && rf[i] == reads[r][static_cast<std::size_t>(out.at[r][i])];
+        std::size_t shorter = std::min(punched_count(rf), punched_count(reads[r]));
+        out.shared[r] = shorter ? static_cast<double>(same) / static_cast<double>(shorter) : 0;
         // Two programs share many characters wherever dynamic programming may pair them, but few long
-        // runs that occur once in each; reads of one tape share both. A short tape with much damage
+        // runs that occur as often in each; reads of one tape share both. A short tape with much damage
         // has few such runs left, but its frames still agree nearly all.
-        if (anchored_share < o.min_shared && shared < 0.8)
-            throw Error(Errc::bad_image, "read " + std::to_string(r + 1) + " shares runs of " +
-                                             std::to_string(o.anchor_length) + " frames with read " +
-                                             std::to_string(ref + 1) + " over only " +
-                                             std::to_string(static_cast<int>(anchored_share * 100)) +
-                                             "% of the runs that occur once in each" +
-                                             ": they are reads of different tapes, or too damaged to align");
-        inserts[r] = inserts_of(at[r], reads[r].size());
+        if (out.anchored[r] < o.min_shared && out.shared[r] < 0.8) {
+            out.related[r] = false;
+            ++out.unrelated;
+            out.at[r].assign(n, ReadAlignment::none);
+            continue;
+        }
+        out.inserts[r] = inserts_of(out.at[r], reads[r].size());
+    }
+    return out;
+}
+
+// The reference: the longest read, unless it is related to fewer than half of the others (it is the
+// read of another tape); then the longest of those it is not related to, and so on.
+AgainstReference choose_reference(std::span<const std::span<const Frame>> reads, const AlignOptions& o) {
+    std::vector<std::size_t> order(reads.size());
+    for (std::size_t r = 0; r < reads.size(); ++r) order[r] = r;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t x, std::size_t y) { return reads[x].size() > reads[y].size(); });
+    AgainstReference best = against(reads, order.front(), o);
+    constexpr std::size_t most_tries = 3;
+    for (std::size_t tries = 1; tries < most_tries && best.unrelated * 2 > reads.size() - 1; ++tries) {
+        auto next = std::find_if(order.begin(), order.end(), [&](std::size_t r) { return !best.related[r]; });
+        if (next == order.end()) break;
+        AgainstReference other = against(reads, *next, o);
+        if (other.unrelated >= best.unrelated) break;
+        best = std::move(other);
+    }
+    return best;
+}
+
+std::string percent_text(double share) { return std::to_string(static_cast<int>(share * 100)) + "%"; }
+
+}  // namespace
+
+UnrelatedRead::UnrelatedRead(std::size_t read, std::size_t reference, double anchored)
+    : Error(Errc::bad_image, "read " + std::to_string(read + 1) + " shares runs of frames with read " +
+                                 std::to_string(reference + 1) + " over only " + percent_text(anchored) +
+                                 " of the runs that occur as often in each: they are reads of different tapes, or "
+                                 "too damaged to align"),
+      read_(read),
+      reference_(reference),
+      anchored_(anchored) {}
+
+ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const AlignOptions& o) {
+    if (reads.empty()) throw Error(Errc::usage, "no reads to align");
+    for (std::size_t r = 0; r < reads.size(); ++r)
+        if (reads[r].size() > max_read_frames)
+            throw Error(Errc::usage, "read " + std::to_string(r + 1) + " has " + std::to_string(reads[r].size()) +
+                                         " frames, more than the " + std::to_string(max_read_frames) +
+                                         " (254 km of tape) reads are aligned to");
+    if (std::all_of(reads.begin(), reads.end(), [](std::span<const Frame> r) { return r.empty(); }))
+        throw Error(Errc::bad_image, "no read holds any frame");
+    AgainstReference w = choose_reference(reads, o);
+    if (w.unrelated > 0 && !o.drop_unrelated)
+        for (std::size_t r = 0; r < reads.size(); ++r)
+            if (!w.related[r]) throw UnrelatedRead(r, w.ref, w.anchored[r]);
+    ReadAlignment out(reads.size(), w.ref);
+    std::size_t inserted = 0;  // frames standing between reference frames: at most this many more columns
+    for (const auto& ins : w.inserts)
+        for (const auto& i : ins) inserted += static_cast<std::size_t>(i.count);
+    out.reserve(reads[w.ref].size() + inserted);
+    for (std::size_t r = 0; r < reads.size(); ++r) {
+        out.set_shared(r, w.related[r] ? w.shared[r] : 0);
+        out.set_related(r, w.related[r]);
     }
     std::vector<std::int32_t> no_offset(reads.size(), 0);
-    add_columns(out, n, at, inserts, no_offset);
+    add_columns(out, reads[w.ref].size(), w.at, w.inserts, no_offset);
     out.finish();
-    if (reads.size() == 1) return out;
+    if (reads.size() - w.unrelated == 1) return out;
     // Memory: no more than two alignments at a time (5 reads of 10^6 frames: 20 MB each).
-    at = {}, inserts = {};
+    w = {};
     ReadAlignment refined = refine(reads, out);
     out = ReadAlignment(0, 0);
     return merge_substitutions(refined);

@@ -1,95 +1,44 @@
-// Repair of frames no read has right, checked against the grammar of the block they stand in.
+// Repair of frames no read has right (repair.hpp): the single-hole changes of what the reads saw,
+// held against the block they stand in.
 #include "repair.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <vector>
 
-#include "tape/decode.hpp"
-#include "tape/lint.hpp"
+#include "repair_world.hpp"
 
 namespace tape::detail {
 namespace {
 
-struct Change {
-    std::size_t at;
-    Frame with;
-};
-
-Frame changed_frame(std::span<const Frame> frames, std::span<const Change> changes, std::size_t i) {
-    for (const auto& c : changes)
-        if (c.at == i) return c.with;
-    return frames[i];
-}
-
-// The decoded text of frames [from, to) with the changes made, a bad frame as U+FFFD.
-std::string decoded(const FrameCode& code, std::span<const Frame> frames, std::size_t from, std::size_t to,
-                    std::span<const Change> changes = {}) {
-    std::string s;
-    for (std::size_t i = from; i < to; ++i) {
-        Frame f = changed_frame(frames, changes, i);
-        FrameKind k = code.kind(f);
-        if (k == FrameKind::character)
-            s += code.character(f);
-        else if (is_bad_frame(k))
-            s += bad_frame_marker;
-    }
-    return s;
-}
-
-bool is_end_of_block(const FrameCode& code, Frame f) {
-    return code.kind(f) == FrameKind::character && code.character(f) == '\n';
-}
-
-// The first frame of the line (block) frame at stands in.
-std::size_t line_start(const FrameCode& code, std::span<const Frame> frames, std::size_t at) {
-    while (at > 0 && !is_end_of_block(code, frames[at - 1])) --at;
-    return at;
-}
-
-// True when the block (the line) holding the changed frames, all in one line, reads with no error once
-// they are changed. The next line is loaded too, as context (a '%' line needs the block after it), but
-// only the block's own lines (more, when a change is an end of block) must be free of errors.
-bool fits_block(const FrameCode& code, std::span<const Frame> frames, std::span<const Change> changes, Dialect dialect,
-                const FormatSpec* spec) {
-    std::size_t from = line_start(code, frames, changes.front().at), to = changes.front().at + 1;
-    while (to < frames.size() && !is_end_of_block(code, frames[to])) ++to;
-    std::size_t next = to + 1;
-    while (next < frames.size() && !is_end_of_block(code, frames[next])) ++next;
-    std::string block = decoded(code, frames, from, std::min(to, frames.size()), changes);
-    std::string context = to + 1 < frames.size() ? decoded(code, frames, to + 1, next) : "";
-    auto first = block.find_first_not_of(" \t\r");
-    bool own_start = first != std::string::npos && block[first] == '%';
-    std::uint64_t first_line = own_start ? 1 : 2;
-    std::uint64_t lines = 1 + static_cast<std::uint64_t>(std::count(block.begin(), block.end(), '\n'));
-    LoadedTape t = load((own_start ? "" : "%\n") + block + "\n" + context + "\n", {}, LoadOptions{dialect});
-    for (const auto& f : lint(t, LintOptions{spec})) {
-        std::uint64_t line = f.where.line.value_or(0);
-        if (f.severity == Severity::error && line >= first_line && line < first_line + lines) return false;
-    }
-    return true;
-}
-
-// A character a part program can hold: printable, or the ends of block and tab. Control characters
-// are never taken for a repair (a reader or controller acts on some, and none belongs in a block).
-bool program_character(const FrameCode& code, Frame f) {
-    if (code.kind(f) != FrameKind::character) return false;
+// A frame a part program's text can hold: printable, the ends of block and tab, or one a reader skips
+// (blank tape, DEL). Other control characters are never taken for a repair.
+bool program_frame(const FrameCode& code, Frame f) {
+    FrameKind k = code.kind(f);
+    if (k == FrameKind::blank || k == FrameKind::rubout) return true;
+    if (k != FrameKind::character) return false;
     char c = code.character(f);
     return (c >= 0x20 && c < 0x7F) || c == '\n' || c == '\r' || c == '\t';
 }
 
-// The single-hole changes of what the reads saw that are program characters: those all reads allow,
-// or, where they allow none in common, those any allows.
+// The single-hole changes of what the reads saw that are program frames: those all reads allow, or,
+// where they allow none in common, those any allows. A blank reading among readings with holes says
+// nothing of which character it was (it may have lost its holes), but the frame may be blank tape.
 std::vector<Frame> single_hole_changes(const FrameCode& code, const RestoreProblem& p) {
+    bool holes = std::any_of(p.seen.begin(), p.seen.end(), [](auto& f) { return f && *f != blank_frame; });
     std::vector<Frame> shared, any;
-    bool first = true;
+    bool first = true, blank_seen = false;
     for (const auto& seen : p.seen) {
         if (!seen) continue;
+        if (holes && *seen == blank_frame) {
+            blank_seen = true;
+            continue;
+        }
         std::vector<Frame> mine;
         for (int bit = 0; bit < 8; ++bit) {
             Frame c = static_cast<Frame>(*seen ^ (1U << bit));
-            // Blank tape may stand anywhere (a reader passes over it), so a frame of one hole may be it.
-            if (program_character(code, c) || c == blank_frame) mine.push_back(c);
+            if (program_frame(code, c)) mine.push_back(c);
         }
         for (Frame c : mine)
             if (std::find(any.begin(), any.end(), c) == any.end()) any.push_back(c);
@@ -99,126 +48,331 @@ std::vector<Frame> single_hole_changes(const FrameCode& code, const RestoreProbl
             std::erase_if(shared, [&](Frame c) { return std::find(mine.begin(), mine.end(), c) == mine.end(); });
         first = false;
     }
-    return shared.empty() ? any : shared;
+    std::vector<Frame> out = shared.empty() ? any : shared;
+    if (blank_seen && std::find(out.begin(), out.end(), blank_frame) == out.end()) out.push_back(blank_frame);
+    return out;
 }
 
-void mark_inferred(RestoreResult& out, RestoreProblem& p, Frame f, std::string reason) {
-    p.status = FrameStatus::inferred;
+// A letter, a digit, or what a word is written with (sign, point, space, end of block).
+bool plain(const FrameCode& code, Frame f) {
+    if (code.kind(f) != FrameKind::character) return false;
+    char c = code.character(f);
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '+' || c == '-' || c == ' ' || c == '\n';
+}
+
+// A character that gives a block structure: comments, macros, tabs, block skips and the like.
+bool structural(const FrameCode& code, Frame f) { return code.kind(f) == FrameKind::character && !plain(code, f); }
+
+void set_status(RestoreResult& out, RestoreProblem& p, FrameStatus s, Frame f, std::string reason) {
+    --out.counts[static_cast<std::size_t>(p.status)];
+    ++out.counts[static_cast<std::size_t>(s)];
+    p.status = s;
     p.written = out.frames[static_cast<std::size_t>(*p.frame - 1)] = f;
     p.reason = std::move(reason);
-    --out.counts[static_cast<std::size_t>(FrameStatus::unresolved)];
-    ++out.counts[static_cast<std::size_t>(FrameStatus::inferred)];
 }
 
-// A frame with one hole (in a read that has it) in blank tape: the leader or trailer (no frame of more
-// than one hole before it, or after it), or tape fed between blocks (blank on both sides, past other
-// such frames). Blank tape is the grammar that fits there; no reader acts on it.
-bool hole_in_blank_tape(const RestoreResult& out, const RestoreProblem& p, std::size_t first_punched,
-                        std::size_t last_punched) {
+// A frame with one hole (in every read that has it) in blank tape: the leader or trailer, or tape fed
+// between blocks (blank on both sides, past other such frames). Blank tape is what fits there. Not where
+// another read has it blank: against a hole, a blank reading is a character that may have lost its holes.
+bool hole_in_blank_tape(const RestoreResult& out, const RestoreProblem& p) {
     if (!std::all_of(p.seen.begin(), p.seen.end(),
                      [&](const std::optional<Frame>& f) { return !f || hole_count(*f) == 1; }))
         return false;
     std::size_t at = static_cast<std::size_t>(*p.frame - 1);
-    // Leader or trailer, with a blank frame between it and the punched part (the frame next to it may
-    // be the program's last end of block, misread).
-    auto blank_between = [&](std::size_t from, std::size_t to) {
-        return std::find(out.frames.begin() + static_cast<std::ptrdiff_t>(from),
-                         out.frames.begin() + static_cast<std::ptrdiff_t>(to),
-                         blank_frame) != out.frames.begin() + static_cast<std::ptrdiff_t>(to);
-    };
-    if (at < first_punched && blank_between(at + 1, first_punched)) return true;
-    if (at > last_punched && last_punched < out.frames.size() && blank_between(last_punched + 1, at)) return true;
     std::size_t l = at, r = at + 1;
-    while (l > 0 && hole_count(out.frames[l - 1]) == 1) --l;
-    while (r < out.frames.size() && hole_count(out.frames[r]) == 1) ++r;
-    return (l == 0 || out.frames[l - 1] == blank_frame) && (r == out.frames.size() || out.frames[r] == blank_frame);
+    while (l > 0 && hole_count(out.frames[l - 1]) <= 1 && out.frames[l - 1] != blank_frame) --l;
+    while (r < out.frames.size() && hole_count(out.frames[r]) <= 1 && out.frames[r] != blank_frame) ++r;
+    bool blank_before = l == 0 || out.frames[l - 1] == blank_frame;
+    bool blank_after = r == out.frames.size() || out.frames[r] == blank_frame;
+    return blank_before && blank_after;
 }
 
-// The damaged frames of one block, their candidates tried together: every choice that fits adds its
-// values to each frame's list. More choices than this are tried one frame at a time.
-constexpr std::size_t most_choices = 512;
+// "'1' (the others break unknown-code, block-number)".
+std::string ruled_out(const std::vector<std::string>& rules) {
+    if (rules.empty()) return "";
+    std::string s = ": the others break ";
+    for (std::size_t i = 0; i < rules.size(); ++i) s += (i ? ", " : "") + rules[i];
+    return s;
+}
 
-void repair_block(RestoreResult& out, std::span<RestoreProblem* const> block, const FrameCode& code, Dialect dialect,
-                  const FormatSpec* spec) {
-    std::vector<std::vector<Frame>> options;
-    std::size_t choices = 1;
-    for (const RestoreProblem* p : block) {
-        options.push_back(single_hole_changes(code, *p));
-        choices = std::min(choices * std::max<std::size_t>(options.back().size(), 1), most_choices + 1);
-    }
-    std::vector<std::vector<Frame>> fitting(block.size());
-    auto add = [](std::vector<Frame>& list, Frame f) {
-        if (std::find(list.begin(), list.end(), f) == list.end()) list.push_back(f);
+// The damaged frames of one block, their candidates tried together.
+class BlockRepair {
+public:
+    BlockRepair(const RepairWorld& w, RestoreResult& out, std::vector<RestoreProblem*> block, bool guess)
+        : w_(w), out_(out), block_(std::move(block)), guess_(guess) {}
+
+    void run();
+
+private:
+    struct Tried {
+        std::vector<Frame> choice;  // per damaged frame (as read where it has no candidate)
+        Breaks breaks;
     };
-    std::vector<Change> changes;
-    if (choices <= most_choices) {
-        // Frames with no candidate stay as read; the others take every combination of theirs.
-        std::vector<std::size_t> pick(block.size(), 0);
-        for (std::size_t n = 0; n < choices; ++n) {
-            changes.clear();
-            for (std::size_t k = 0; k < block.size(); ++k)
-                if (!options[k].empty())
-                    changes.push_back({static_cast<std::size_t>(*block[k]->frame - 1), options[k][pick[k]]});
-            if (!changes.empty() && fits_block(code, out.frames, changes, dialect, spec))
-                for (std::size_t k = 0, c = 0; k < block.size(); ++k)
-                    if (!options[k].empty()) add(fitting[k], changes[c++].with);
-            for (std::size_t k = 0; k < block.size(); ++k) {
-                if (options[k].empty()) continue;
-                if (++pick[k] < options[k].size()) break;
-                pick[k] = 0;
+    std::size_t at(std::size_t k) const { return static_cast<std::size_t>(*block_[k]->frame - 1); }
+    void try_all(const BlockJudge* judge, std::size_t from, std::size_t to);
+    void ignore_rules_every_try_breaks();
+    double score(const Tried& t) const;
+    Frame likeliest(std::size_t k, const std::vector<Frame>& values) const;
+    void decide(std::size_t k);
+
+    const RepairWorld& w_;
+    RestoreResult& out_;
+    std::vector<RestoreProblem*> block_;
+    bool guess_;
+    std::vector<std::vector<Frame>> options_;
+    std::vector<Tried> tried_;
+    std::vector<std::string> ruled_out_;
+    const Tried* best_ = nullptr;
+    bool one_at_a_time_ = false;  // too many choices: each frame tried with the others as read
+};
+
+// More choices than this are tried one frame at a time, the others as read.
+constexpr std::size_t most_choices = 2048;
+
+void BlockRepair::try_all(const BlockJudge* judge, std::size_t from, std::size_t to) {
+    std::size_t choices = 1;
+    for (const auto& o : options_) choices = std::min(choices * std::max<std::size_t>(o.size(), 1), most_choices + 1);
+    auto one = [&](const std::vector<Frame>& choice) {
+        Tried t{choice, {}};
+        if (judge) {
+            BlockTry bt{std::vector<Frame>(out_.frames.begin() + static_cast<std::ptrdiff_t>(from),
+                                           out_.frames.begin() + static_cast<std::ptrdiff_t>(to)),
+                        {}};
+            for (std::size_t k = 0; k < block_.size(); ++k) {
+                bt.frames[at(k) - from] = choice[k];
+                bt.decided.push_back(at(k) - from);
             }
+            t.breaks = judge->judge(bt);
         }
-    } else {
-        for (std::size_t k = 0; k < block.size(); ++k)
-            for (Frame f : options[k]) {
-                Change c{static_cast<std::size_t>(*block[k]->frame - 1), f};
-                if (fits_block(code, out.frames, std::span(&c, 1), dialect, spec)) add(fitting[k], f);
+        tried_.push_back(std::move(t));
+    };
+    std::vector<Frame> as_read(block_.size());
+    for (std::size_t k = 0; k < block_.size(); ++k) as_read[k] = out_.frames[at(k)];
+    if (choices > most_choices) {
+        one_at_a_time_ = true;
+        for (std::size_t k = 0; k < block_.size(); ++k)
+            for (Frame f : options_[k]) {
+                auto choice = as_read;
+                choice[k] = f;
+                one(choice);
             }
+        return;
     }
-    for (std::size_t k = 0; k < block.size(); ++k) {
-        RestoreProblem& p = *block[k];
-        p.candidates = fitting[k];
-        if (p.candidates.size() == 1) {
-            mark_inferred(out, p, p.candidates.front(),
-                          block.size() == 1 ? "the one single-hole change that makes a character fitting its block"
-                                            : "the one single-hole change that makes a character fitting its block, "
-                                              "with the other damaged frames of the block");
-        } else {
-            p.reason = p.candidates.empty()
-                           ? "no single-hole change makes a character that fits its block"
-                           : std::to_string(p.candidates.size()) + " single-hole changes fit its block: not guessed";
+    std::vector<std::size_t> pick(block_.size(), 0);
+    for (std::size_t n = 0; n < choices; ++n) {
+        auto choice = as_read;
+        for (std::size_t k = 0; k < block_.size(); ++k)
+            if (!options_[k].empty()) choice[k] = options_[k][pick[k]];
+        one(choice);
+        for (std::size_t k = 0; k < block_.size(); ++k) {
+            if (options_[k].empty()) continue;
+            if (++pick[k] < options_[k].size()) break;
+            pick[k] = 0;
         }
     }
+}
+
+// A rule every try breaks decides nothing: the block breaks it whatever the damaged frames were (the
+// program's own mistake, or a rule that does not hold for this program). Nor does the arc rule where no
+// try closes the arc: a try that only escapes it by making the block no arc is no better.
+void BlockRepair::ignore_rules_every_try_breaks() {
+    bool some_arc_closes = std::any_of(tried_.begin(), tried_.end(), [](const Tried& t) {
+        return std::find(t.breaks.begin(), t.breaks.end(), arc_closes) != t.breaks.end();
+    });
+    for (auto& t : tried_) {
+        std::erase(t.breaks, std::string(arc_closes));
+        if (!some_arc_closes) std::erase(t.breaks, std::string("arc"));
+    }
+    std::vector<std::string> all;
+    for (const auto& t : tried_) all.insert(all.end(), t.breaks.begin(), t.breaks.end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    for (const auto& rule : all) {
+        bool everywhere = std::all_of(tried_.begin(), tried_.end(), [&](const Tried& t) {
+            return std::find(t.breaks.begin(), t.breaks.end(), rule) != t.breaks.end();
+        });
+        if (everywhere)
+            for (auto& t : tried_) std::erase(t.breaks, rule);
+        else
+            ruled_out_.push_back(rule);
+    }
+}
+
+// How likely a try's frames are where they stand, by how the tape goes.
+double BlockRepair::score(const Tried& t) const {
+    auto frame = [&](std::size_t i) {
+        for (std::size_t j = 0; j < block_.size(); ++j)
+            if (at(j) == i) return t.choice[j];
+        return out_.frames[i];
+    };
+    double sum = 0;
+    for (std::size_t k = 0; k < block_.size(); ++k) {
+        Frame near[3] = {blank_frame, blank_frame, blank_frame};  // two before, one after
+        std::size_t found = 0;
+        for (std::size_t i = at(k); i-- > 0 && found < 2;)
+            if (frame(i) != blank_frame) near[1 - found++] = frame(i);
+        for (std::size_t i = at(k) + 1; i < out_.frames.size(); ++i)
+            if (frame(i) != blank_frame) {
+                near[2] = frame(i);
+                break;
+            }
+        sum += w_.chars.score(near[0], near[1], t.choice[k], near[2]);
+    }
+    return sum;
+}
+
+// The likeliest of values for damaged frame k alone, the others as the best fitting try has them.
+Frame BlockRepair::likeliest(std::size_t k, const std::vector<Frame>& values) const {
+    Tried t{best_ ? best_->choice : std::vector<Frame>(block_.size()), {}};
+    if (!best_)
+        for (std::size_t j = 0; j < block_.size(); ++j) t.choice[j] = out_.frames[at(j)];
+    Frame best = values.front();
+    double best_score = -1e300;
+    for (Frame f : values) {
+        t.choice[k] = f;
+        if (double sc = score(t); sc > best_score) best_score = sc, best = f;
+    }
+    return best;
+}
+
+void BlockRepair::decide(std::size_t k) {
+    RestoreProblem& p = *block_[k];
+    std::vector<Frame> fit;
+    for (const auto& t : tried_)
+        if (t.breaks.empty() && std::find(fit.begin(), fit.end(), t.choice[k]) == fit.end()) fit.push_back(t.choice[k]);
+    if (options_[k].empty()) fit.clear();
+    p.candidates = fit;
+    std::string with_others = block_.size() > 1 ? ", with the other damaged frames of its block" : "";
+    // Tried one at a time, a frame is judged beside the others' damage: it may look like it fits alone.
+    // A sign of structure (a comment, a macro, a tab) that alone fits where letters and digits could
+    // stand makes a block fit by hiding or changing what it is: weighed like any other, it decides nothing.
+    bool structural_alone =
+        fit.size() == 1 && structural(w_.setup.code, fit.front()) &&
+        std::any_of(options_[k].begin(), options_[k].end(), [&](Frame f) { return plain(w_.setup.code, f); });
+    if (fit.size() == 1 && !one_at_a_time_ && !structural_alone) {
+        set_status(out_, p, FrameStatus::inferred, fit.front(),
+                   "the one single-hole change that fits its block" + with_others + ruled_out(ruled_out_));
+        return;
+    }
+    if (guess_ && !options_[k].empty()) {
+        const std::vector<Frame>& among = fit.empty() ? options_[k] : fit;
+        Frame g = !one_at_a_time_ && best_ && !fit.empty() ? best_->choice[k] : likeliest(k, among);
+        p.candidates = among;
+        std::erase(p.candidates, g);
+        p.candidates.insert(p.candidates.begin(), g);
+        set_status(out_, p, FrameStatus::guessed, g,
+                   "the likeliest of " + std::to_string(among.size()) + " single-hole changes" +
+                       (fit.empty() ? " (none fits its block)" : " that fit its block") + ", by how the tape goes");
+        return;
+    }
+    p.reason = one_at_a_time_     ? "too many damaged frames in its block to try them together: not repaired"
+               : structural_alone ? "only a character that gives the block another structure fits: not repaired"
+               : fit.empty()      ? "no single-hole change makes a character that fits its block"
+                                  : std::to_string(fit.size()) + " single-hole changes fit its block: not guessed";
+}
+
+void BlockRepair::run() {
+    for (RestoreProblem* p : block_) {
+        options_.push_back(single_hole_changes(w_.setup.code, *p));
+        // A frame a reader skips stands inside a line only where this tape has such frames inside lines.
+        std::erase_if(options_.back(), [&](Frame f) {
+            FrameKind k = w_.setup.code.kind(f);
+            return (k == FrameKind::rubout && !w_.rubouts) || (k == FrameKind::blank && !w_.blank_inside_lines);
+        });
+    }
+    auto range = block_around(w_.setup.code, out_.frames, at(0));
+    if (range && at(block_.size() - 1) >= range->second) range.reset();
+    std::optional<BlockJudge> judge;
+    if (w_.setup.nc && range) {
+        std::vector<std::size_t> damaged;
+        for (std::size_t k = 0; k < block_.size(); ++k) damaged.push_back(at(k));
+        judge.emplace(w_.setup, out_.frames, range->first, range->second, w_.line_of(at(0)), damaged);
+    }
+    // A block longer than any block (the ends of block lost) is judged by the code alone.
+    try_all(judge ? &*judge : nullptr, range ? range->first : 0, range ? range->second : 0);
+    ignore_rules_every_try_breaks();
+    double best_score = -1e300;
+    for (const auto& t : tried_)
+        if (t.breaks.empty() && score(t) > best_score) best_score = score(t), best_ = &t;
+    for (std::size_t k = 0; k < block_.size(); ++k) decide(k);
 }
 
 }  // namespace
 
-void repair_unresolved(RestoreResult& out, std::span<const std::size_t> unresolved, const FrameCode& code,
-                       Dialect dialect, const FormatSpec* spec) {
-    if (dialect == Dialect::automatic) dialect = guess_dialect(decoded(code, out.frames, 0, out.frames.size())).dialect;
-    // The first and last frame of more than one hole: what lies outside is leader and trailer.
-    auto punched = [](Frame f) { return hole_count(f) > 1; };
-    auto first = std::find_if(out.frames.begin(), out.frames.end(), punched);
-    auto last = std::find_if(out.frames.rbegin(), out.frames.rend(), punched);
-    const std::size_t first_punched = static_cast<std::size_t>(first - out.frames.begin());
-    const std::size_t last_punched = out.frames.size() - 1 - static_cast<std::size_t>(last - out.frames.rbegin());
+bool code_does_not_fit(std::span<const Frame> frames, const FrameCode& code) {
+    auto data = punched_part(frames);
+    std::size_t bad = 0;
+    for (Frame f : data) bad += is_bad_frame(code.kind(f));
+    return data.size() >= 8 && bad * 4 > data.size();
+}
+
+// With --guess, good readings the vote could not choose between: the likeliest by how the tape goes (the
+// one a reading failing parity leans to, when there is one, comes first among the candidates).
+void guess_ties(RestoreResult& out, const RepairWorld& w, std::span<RestoreProblem* const> ties) {
+    for (RestoreProblem* p : ties) {
+        std::size_t at = static_cast<std::size_t>(*p->frame - 1);
+        Frame near[3] = {blank_frame, blank_frame, blank_frame};
+        std::size_t found = 0;
+        for (std::size_t i = at; i-- > 0 && found < 2;)
+            if (out.frames[i] != blank_frame) near[1 - found++] = out.frames[i];
+        for (std::size_t i = at + 1; i < out.frames.size(); ++i)
+            if (out.frames[i] != blank_frame) {
+                near[2] = out.frames[i];
+                break;
+            }
+        bool leans = p->reason.find("one hole from") != std::string::npos;
+        Frame best = p->candidates.front();
+        double best_score = w.chars.score(near[0], near[1], best, near[2]);
+        for (Frame c : p->candidates)
+            if (!leans && w.chars.score(near[0], near[1], c, near[2]) > best_score)
+                best = c, best_score = w.chars.score(near[0], near[1], c, near[2]);
+        std::erase(p->candidates, best);
+        p->candidates.insert(p->candidates.begin(), best);
+        set_status(out, *p, FrameStatus::guessed, best,
+                   "the likeliest of " + std::to_string(p->candidates.size()) +
+                       " good readings that disagree, by how the tape goes" +
+                       (leans ? " (a reading failing parity is one hole from it)" : ""));
+    }
+}
+
+void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreOptions& o,
+                       std::unique_ptr<RepairWorld> world) {
+    std::vector<RestoreProblem*> unresolved, ties;
+    std::vector<std::size_t> doubtful;
+    for (auto& p : out.problems) {
+        if (!p.frame) continue;
+        if (p.status != FrameStatus::clean) doubtful.push_back(static_cast<std::size_t>(*p.frame - 1));
+        if (p.status == FrameStatus::unresolved) unresolved.push_back(&p);
+        if (o.guess && (p.status == FrameStatus::contested || p.status == FrameStatus::unstable) &&
+            p.candidates.size() > 1 && !p.run_length)
+            ties.push_back(&p);
+    }
+    if (unresolved.empty() && ties.empty()) return;
+    if (code_does_not_fit(out.frames, code)) {
+        for (RestoreProblem* p : unresolved)
+            p->reason = "not repaired: most frames fail the code, so it is not the tape's";
+        return;
+    }
+    if (!world) world = learn_world(out.frames, doubtful, code, o);
+    guess_ties(out, *world, ties);
     std::vector<RestoreProblem*> block;
-    std::size_t block_start = SIZE_MAX;
+    std::uint64_t block_line = 0;
+    constexpr std::size_t most_damaged = 8;  // frames of one block tried together
     auto flush = [&] {
-        if (!block.empty()) repair_block(out, block, code, dialect, spec);
+        if (!block.empty()) BlockRepair(*world, out, std::move(block), o.guess).run();
         block.clear();
     };
-    for (std::size_t index : unresolved) {
-        RestoreProblem& p = out.problems[index];
-        if (hole_in_blank_tape(out, p, first_punched, last_punched)) {
-            p.candidates = {blank_frame};
-            mark_inferred(out, p, blank_frame, "a hole in blank tape (leader, trailer, or tape fed between blocks)");
+    for (RestoreProblem* p : unresolved) {
+        if (hole_in_blank_tape(out, *p)) {
+            p->candidates = {blank_frame};
+            set_status(out, *p, FrameStatus::inferred, blank_frame,
+                       "a hole in blank tape (leader, trailer, or tape fed between blocks)");
             continue;
         }
-        std::size_t start = line_start(code, out.frames, static_cast<std::size_t>(*p.frame - 1));
-        if (start != block_start) flush();
-        block_start = start;
-        block.push_back(&p);
+        std::uint64_t line = world->line_of(static_cast<std::size_t>(*p->frame - 1));
+        if (line != block_line || block.size() >= most_damaged) flush();
+        block_line = line;
+        block.push_back(p);
     }
     flush();
 }
@@ -231,7 +385,7 @@ void number_lines(RestoreResult& out, const FrameCode& code) {
             if (out.problems[next].frame) out.problems[next].line = line;
             ++next;
         }
-        if (is_end_of_block(code, out.frames[i])) ++line;
+        if (code.kind(out.frames[i]) == FrameKind::character && code.character(out.frames[i]) == '\n') ++line;
     }
 }
 

@@ -1,90 +1,91 @@
-// A restoration scored against the tape its reads were made from (tape/restore.hpp).
+// A restoration scored against the tape its reads were made from (tape/restore.hpp), by the counting
+// rules of restoring's figures: the data only (first to last punched frame), and a frame left out or
+// added in a run of equal frames in doubt when any copy of the run is.
 #include <algorithm>
 
 #include "tape/restore.hpp"
 
 namespace tape {
+namespace {
+
+// What the report says of each output frame of the data, and of the frames it left out.
+struct Doubts {
+    std::vector<bool> frame;  // per output frame: in doubt
+    std::vector<bool> after;  // per output frame count before: a frame left out there is in doubt
+};
+
+Doubts doubts_of(const RestoreResult& r) {
+    Doubts d{std::vector<bool>(r.frames.size(), false), std::vector<bool>(r.frames.size() + 1, false)};
+    for (const auto& p : r.problems) {
+        if (!in_doubt(p.status)) continue;
+        if (p.frame && *p.frame >= 1 && *p.frame <= r.frames.size())
+            d.frame[*p.frame - 1] = true;
+        else if (!p.frame && p.after <= r.frames.size())
+            d.after[p.after] = true;
+    }
+    return d;
+}
+
+// The run of equal frames around output frame i (or, for a frame left out after `written` frames,
+// around that place): in doubt when any copy is, or a frame left out in it is.
+bool run_in_doubt(const RestoreResult& r, const Doubts& d, std::size_t from, std::size_t to, Frame value) {
+    while (from > 0 && r.frames[from - 1] == value) --from;
+    while (to < r.frames.size() && r.frames[to] == value) ++to;
+    for (std::size_t i = from; i < to; ++i)
+        if (d.frame[i]) return true;
+    for (std::size_t i = from; i <= to; ++i)
+        if (d.after[i]) return true;
+    return false;
+}
+
+}  // namespace
 
 bool in_doubt(FrameStatus s) {
     using S = FrameStatus;
-    return s == S::inferred || s == S::contested || s == S::unstable || s == S::unresolved || s == S::missing;
+    return s == S::guessed || s == S::contested || s == S::unstable || s == S::unresolved || s == S::missing;
 }
 
 RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) {
     RestoreCheck out;
     auto a = punched_part(tape), b = punched_part(r.frames);
     out.exact = std::equal(a.begin(), a.end(), b.begin(), b.end());
-    std::vector<std::span<const Frame>> pair{tape, r.frames};
-    ReadAlignment al = align_reads(pair);
-    std::vector<FrameStatus> status(r.frames.size(), FrameStatus::clean);
-    for (const auto& p : r.problems)
-        if (p.frame && *p.frame <= status.size()) status[*p.frame - 1] = p.status;
-    // Frames not written but said to be in doubt, by the restored frame they follow.
-    std::vector<std::uint64_t> doubted;
-    for (const auto& p : r.problems)
-        if (!p.frame && in_doubt(p.status)) doubted.push_back(p.after);
-    auto data = punched_part(tape);
-    const auto first = static_cast<std::int64_t>(data.data() - tape.data());
-    const auto last = first + static_cast<std::int64_t>(data.size()) - 1;  // the last punched frame
+    out.blank_ends = static_cast<std::uint64_t>(
+        std::abs(static_cast<long long>(a.data() - tape.data()) - static_cast<long long>(b.data() - r.frames.data())) +
+        std::abs(
+            static_cast<long long>(tape.size() - a.size() - static_cast<std::size_t>(a.data() - tape.data())) -
+            static_cast<long long>(r.frames.size() - b.size() - static_cast<std::size_t>(b.data() - r.frames.data()))));
+    if (a.empty() || b.empty()) {
+        out.silently_wrong = a.size() + b.size();
+        return out;
+    }
+    const std::size_t offset = static_cast<std::size_t>(b.data() - r.frames.data());
+    const Doubts d = doubts_of(r);
+    std::vector<std::span<const Frame>> pair{a, b};
+    ReadAlignment al = align_reads(pair, AlignOptions{.min_shared = 0, .drop_unrelated = false});
     auto matched = [&](std::size_t c) {
         std::int32_t t = al.frame(c, 0), o = al.frame(c, 1);
         return t != ReadAlignment::none && o != ReadAlignment::none &&
-               tape[static_cast<std::size_t>(t)] == r.frames[static_cast<std::size_t>(o)];
+               a[static_cast<std::size_t>(t)] == b[static_cast<std::size_t>(o)];
     };
-    // A tape frame the output lacks next to an output frame in doubt is that frame, misread: the two
-    // stand in columns of their own when they differ in more than one hole. So a frame left out counts
-    // as in doubt when the stretch of columns that do not match around it holds a frame in doubt.
-    std::vector<bool> stretch_doubted(al.columns(), false);
-    for (std::size_t c = 0; c < al.columns();) {
-        if (matched(c)) {
-            ++c;
-            continue;
-        }
-        std::size_t end = c;
-        bool doubt = false;
-        for (; end < al.columns() && !matched(end); ++end) {
-            std::int32_t o = al.frame(end, 1);
-            doubt |= o != ReadAlignment::none && in_doubt(status[static_cast<std::size_t>(o)]);
-        }
-        std::fill(stretch_doubted.begin() + static_cast<std::ptrdiff_t>(c),
-                  stretch_doubted.begin() + static_cast<std::ptrdiff_t>(end), doubt);
-        c = end;
-    }
-    // A frame left out in doubt after output frame `after` may stand anywhere in the run of equal
-    // frames there: the alignment puts a gap at the end of a run.
-    std::sort(doubted.begin(), doubted.end());
-    auto doubted_here = [&](std::size_t c, std::uint64_t written_before) {
-        std::int32_t t = al.frame(c, 0);
-        for (auto d = std::upper_bound(doubted.begin(), doubted.end(), written_before); d != doubted.begin();) {
-            std::uint64_t after = *--d;
-            if (after == written_before) return true;
-            // Output frames after..written_before - 1 (0-based) all equal to the frame left out.
-            for (std::uint64_t i = after; i < written_before; ++i)
-                if (t == ReadAlignment::none || r.frames[i] != tape[static_cast<std::size_t>(t)]) return false;
-            return true;
-        }
-        return false;
-    };
-    std::uint64_t written_before = 0;
-    std::int64_t tape_before = -1;  // the last tape frame met
+    std::size_t written_before = offset;  // output frames before this column
+    std::size_t tape_at = 0;              // the tape frame of this column, or of the last one before it
     for (std::size_t c = 0; c < al.columns(); ++c) {
         std::int32_t t = al.frame(c, 0), o = al.frame(c, 1);
-        if (o != ReadAlignment::none) ++written_before;
-        if (t != ReadAlignment::none) tape_before = t;
-        bool blank = (t == ReadAlignment::none || tape[static_cast<std::size_t>(t)] == blank_frame) &&
-                     (o == ReadAlignment::none || r.frames[static_cast<std::size_t>(o)] == blank_frame);
-        bool ends = t != ReadAlignment::none ? (t < first || t > last) : (tape_before < first || tape_before >= last);
-        if (blank && ends && (t == ReadAlignment::none || o == ReadAlignment::none)) {
-            ++out.blank_ends;
-            continue;
-        }
+        if (t != ReadAlignment::none) tape_at = static_cast<std::size_t>(t);
         if (matched(c)) {
-            ++out.right;
+            ++out.right, ++written_before;
             continue;
         }
-        bool doubt = o != ReadAlignment::none ? in_doubt(status[static_cast<std::size_t>(o)])
-                                              : !al.covers(1, c) ||  // the ends: reported as missing
-                                                    stretch_doubted[c] || doubted_here(c, written_before);
+        bool doubt;
+        if (o != ReadAlignment::none) {
+            std::size_t i = offset + static_cast<std::size_t>(o);
+            doubt = d.frame[i] || run_in_doubt(r, d, i, i + 1, r.frames[i]);
+            ++written_before;
+        } else {
+            Frame left_out = a[static_cast<std::size_t>(t)];
+            doubt = d.after[written_before] || run_in_doubt(r, d, written_before, written_before, left_out);
+        }
+        if (!doubt) out.silent_at.push_back(static_cast<std::size_t>(a.data() - tape.data()) + tape_at);
         ++(doubt ? out.flagged_wrong : out.silently_wrong);
     }
     return out;

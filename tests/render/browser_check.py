@@ -2,7 +2,8 @@
 """The tape as a browser draws it: `tape render` output opened in headless Chromium, screenshot to PNG,
 and the pixels looked at where the holes of a known tape are and where they are not; then the page of
 `tape restore --html`: it loads with no console message (no script, nothing fetched), and each problem
-frame of the JSON report is marked on the drawn tape in its colour, where the report says.
+frame of the JSON report in the first stretch of tape drawn (the page draws the tape around its problems
+only) is marked in its colour, where the report says, and every problem row links to its frame.
 
 Usage: browser_check.py TAPE_BINARY. Exit 0 passed, 1 failed, 77 skipped (Chromium missing or unable to
 start: the reason is printed). Only the standard library: PNG read with zlib and struct.
@@ -164,6 +165,14 @@ def check_restore_page(tape, chromium, work, failures):
         for p in problems:
             if f'id="p{p["frame"]}"' not in dom or f'href="#f{p["frame"]}"' not in dom:
                 failures.append(f"{name}: frame {p['frame']}: no table row linked to the tape")
+        # The page draws the tape around its problems only: the first stretch drawn is looked at.
+        import re
+        first = re.search(r'id="tape1" data-from="(\d+)" data-to="(\d+)"', open(page).read())
+        if not first:
+            failures.append(f"{name}: no stretch of tape drawn")
+            continue
+        drawn_from, drawn_to = int(first.group(1)), int(first.group(2))
+        problems = [p for p in problems if drawn_from <= p["frame"] <= drawn_to]
         png = os.path.join(work, f"{name}.png")
         screenshot(chromium, page, png, 1300, 1600)  # the page holds strips of 263 mm, 994 px
         w, h, rows = read_png(png)
@@ -179,7 +188,7 @@ def check_restore_page(tape, chromium, work, failures):
         def at(frame, per_strip=100):
             # Between the tape's edge and track 8 (whose holes begin 1.62 mm in): no hole is ever there,
             # only the mark's colour.
-            x, y = hole_centre(frame - 1, 8, per_strip)
+            x, y = hole_centre(frame - drawn_from, 8, per_strip)
             y -= PITCH - 75
             return rows[corner[1] + round((y - top_units) * PX_PER_UNIT)][corner[0] + round((x - LEFT) * PX_PER_UNIT)]
 
@@ -190,7 +199,7 @@ def check_restore_page(tape, chromium, work, failures):
             marked.add(p["frame"])
             if got != want:
                 failures.append(f"{name}: frame {p['frame']} ({p['status']}): {want} mark expected, {got} {at(p['frame'])}")
-        clean = [f for f in range(2, 390, 7) if not ({f - 1, f, f + 1} & marked)]
+        clean = [f for f in range(drawn_from + 1, drawn_to) if not ({f - 1, f, f + 1} & marked)]
         for f in clean:
             if nearest(at(f)) != "paper":
                 failures.append(f"{name}: frame {f} (clean): paper expected, pixel {at(f)}")

@@ -2,6 +2,7 @@
 #include <sys/stat.h>
 
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <string>
@@ -62,11 +63,13 @@ std::string image_text(const tape::ImageFormat& format, std::span<const tape::Fr
 std::string log_lines(const tape::DamageLog& log) {
     std::string out;
     for (const tape::DamageEvent& e : log.events) {
-        out += "{\"kind\": " + cli::json_string(std::string(tape::damage_kind_name(e.kind))) +
-               ", \"frame\": " + std::to_string(e.original + 1) + ", \"read_frame\": " + std::to_string(e.read + 1) +
-               ", \"frames\": " + std::to_string(e.frames);
-        if (e.kind == tape::DamageKind::flip) out += ", \"track\": " + std::to_string(e.track);
-        out += "}\n";
+        nlohmann::ordered_json j;
+        j["kind"] = tape::damage_kind_name(e.kind);
+        j["frame"] = e.original + 1;
+        j["read_frame"] = e.read + 1;
+        j["frames"] = e.frames;
+        if (e.kind == tape::DamageKind::flip) j["track"] = e.track;
+        out += j.dump() + "\n";
     }
     return out;
 }

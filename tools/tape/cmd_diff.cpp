@@ -2,6 +2,7 @@
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
 #include "cli/outputs.hpp"
+#include "cli/restore_inputs.hpp"
 #include "cli/run.hpp"
 #include "commands.hpp"
 #include "restore_report.hpp"
@@ -12,6 +13,7 @@ namespace {
 
 struct DiffArgs {
     std::string first, second, code = "auto";
+    bool strict = false;
 };
 
 std::string side(const std::optional<tape::FrameCode>& code, const std::vector<tape::Frame>& frames, std::int32_t i) {
@@ -19,41 +21,68 @@ std::string side(const std::optional<tape::FrameCode>& code, const std::vector<t
     return "frame " + std::to_string(i + 1) + " " + frame_text(code, frames[static_cast<std::size_t>(i)]);
 }
 
-void run(const DiffArgs& a) {
-    std::vector<TapeInput> reads{read_tape(a.first, ""), read_tape(a.second, "")};
-    const TapeInput &one = reads[0], &two = reads[1];
-    std::string code_name;
-    std::optional<tape::FrameCode> code = code_for_reads(a.code, "even", reads, code_name);
-    std::vector<std::span<const tape::Frame>> spans{one.frames, two.frames};
-    tape::ReadAlignment al = [&] {
-        try {
-            return tape::align_reads(spans);
-        } catch (const tape::Error& e) {
-            fail("", e);
+tape::ReadAlignment aligned(const std::vector<TapeInput>& reads) {
+    std::vector<std::span<const tape::Frame>> spans{reads[0].frames, reads[1].frames};
+    try {
+        return tape::align_reads(spans);
+    } catch (const tape::UnrelatedRead& e) {
+        fail(display_name(reads[e.read()].name), tape::Errc::bad_image, unrelated_text(e, reads));
+    } catch (const tape::Error& e) {
+        fail("", e);
+    }
+}
+
+// Blank leader or trailer: the columns before the first and after the last where either read has holes.
+std::pair<std::size_t, std::size_t> data_columns(const tape::ReadAlignment& al, const std::vector<TapeInput>& reads) {
+    std::size_t from = al.columns(), to = 0;
+    for (std::size_t c = 0; c < al.columns(); ++c)
+        for (std::size_t r = 0; r < 2; ++r) {
+            std::int32_t i = al.frame(c, r);
+            if (i != tape::ReadAlignment::none && reads[r].frames[static_cast<std::size_t>(i)] != tape::blank_frame)
+                from = std::min(from, c), to = c + 1;
         }
-    }();
+    return {from, to};
+}
+
+struct Counts {
+    std::uint64_t differ = 0, only[2] = {0, 0}, ends[2] = {0, 0};
+};
+
+void run(const DiffArgs& a) {
+    std::vector<TapeInput> reads = read_all_bounded({a.first, a.second});
+    std::string code_name;
+    std::optional<tape::FrameCode> code = code_for_reads(a.code, "", reads, code_name);
+    tape::ReadAlignment al = aligned(reads);
+    auto [from, to] = data_columns(al, reads);
     std::string out;
-    std::uint64_t differ = 0, only_one = 0, only_two = 0;
+    Counts n;
     for (std::size_t c = 0; c < al.columns(); ++c) {
         std::int32_t x = al.frame(c, 0), y = al.frame(c, 1);
         bool same = x != tape::ReadAlignment::none && y != tape::ReadAlignment::none &&
-                    one.frames[static_cast<std::size_t>(x)] == two.frames[static_cast<std::size_t>(y)];
+                    reads[0].frames[static_cast<std::size_t>(x)] == reads[1].frames[static_cast<std::size_t>(y)];
         if (same) continue;
-        // Where one read simply has not begun or has ended, it is no difference of the tape.
-        if (x == tape::ReadAlignment::none && !al.covers(0, c)) continue;
-        if (y == tape::ReadAlignment::none && !al.covers(1, c)) continue;
-        if (x == tape::ReadAlignment::none)
-            ++only_two;
-        else if (y == tape::ReadAlignment::none)
-            ++only_one;
+        // Blank leader or trailer one read has longer: no difference of the tape, unless --strict.
+        bool blank_end = (c < from || c >= to) && (x == tape::ReadAlignment::none || y == tape::ReadAlignment::none);
+        std::size_t has = x == tape::ReadAlignment::none ? 1 : 0;
+        if (blank_end) ++n.ends[has];
+        if (blank_end && !a.strict) continue;
+        // Where one read simply has not begun or has ended (within the data), it is no difference of the tape.
+        if (!blank_end && x == tape::ReadAlignment::none && !al.covers(0, c)) continue;
+        if (!blank_end && y == tape::ReadAlignment::none && !al.covers(1, c)) continue;
+        if (x != tape::ReadAlignment::none && y != tape::ReadAlignment::none)
+            ++n.differ;
         else
-            ++differ;
-        out += side(code, one.frames, x) + "  |  " + side(code, two.frames, y) + "\n";
+            ++n.only[has];
+        out += side(code, reads[0].frames, x) + "  |  " + side(code, reads[1].frames, y) + "\n";
     }
-    out += std::to_string(differ) + " frame(s) differ, " + std::to_string(only_one) + " only in " +
-           display_name(one.name) + ", " + std::to_string(only_two) + " only in " + display_name(two.name) + "\n";
+    out += std::to_string(n.differ) + " frame(s) differ, " + std::to_string(n.only[0]) + " only in " +
+           display_name(reads[0].name) + ", " + std::to_string(n.only[1]) + " only in " + display_name(reads[1].name) +
+           "\n";
     write_output("-", out, false, false);
-    if (differ + only_one + only_two) throw Exit{bad_data};
+    if ((n.ends[0] || n.ends[1]) && !a.strict)
+        say("", "note: the leader and trailer differ in length by " + std::to_string(n.ends[0] + n.ends[1]) +
+                    " blank frame(s), which is no difference of the tape (--strict counts them)");
+    if (n.differ + n.only[0] + n.only[1]) throw Exit{bad_data};
 }
 
 }  // namespace
@@ -66,6 +95,8 @@ void add_diff(CLI::App& app) {
     sub->add_option("--code,-c", a->code, "How frames are named: auto, iso, eia, or none (holes only)")
         ->check(CLI::IsMember({"auto", "iso", "eia", "none"}))
         ->capture_default_str();
+    sub->add_flag("--strict", a->strict,
+                  "Count blank leader and trailer of different length as differences (they are a note otherwise)");
     sub->callback([a] { run(*a); });
 }
 

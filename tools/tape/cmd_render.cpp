@@ -12,6 +12,7 @@
 #include "tape/label.hpp"
 #include "tape/picture.hpp"
 #include "tape/render.hpp"
+#include "tape/restore_doubts.hpp"
 #include "tape/scan.hpp"
 
 namespace cli {
@@ -124,6 +125,12 @@ void run(const RenderArgs& a) {
         o.label_first = d.label->first + 1;
         o.label_frames = d.label->frames;
     }
+    // Frames a restoration left in doubt (its doubts file beside the image) in the doubt colour.
+    if (a.input != "-")
+        for (const auto& doubt : tape::doubts_beside(a.input))
+            if (doubt.frame <= d.frames.size())
+                o.marks.push_back({doubt.frame, tape::MarkKind::doubtful,
+                                   "restored in doubt (" + doubt.status + "): " + doubt.reason});
     write_svg(a, d, o, name);
 }
 

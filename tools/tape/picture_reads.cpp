@@ -32,4 +32,19 @@ PictureRead read_picture(const std::string& path) {
     return out;
 }
 
+ReadsAndDoubts read_tapes_or_pictures(const std::vector<std::string>& paths) {
+    ReadsAndDoubts out;
+    for (const auto& path : paths) {
+        if (!is_picture(path)) {
+            out.reads.push_back(read_tape(path, ""));
+            out.doubts.emplace_back();
+            continue;
+        }
+        PictureRead p = read_picture(path);
+        out.reads.push_back(std::move(p.read));
+        out.doubts.push_back(std::move(p.doubts));
+    }
+    return out;
+}
+
 }  // namespace cli

@@ -1,11 +1,15 @@
+// The restore report as text and as JSON (restore_report.hpp).
 #include "restore_report.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
 #include "cli/json.hpp"
 #include "cli/messages.hpp"
+#include "tape/restore_doubts.hpp"
 
 namespace cli {
 namespace {
@@ -16,26 +20,90 @@ std::string cm(std::uint64_t frame) {
     return buf;
 }
 
-bool needs_reread(tape::FrameStatus s) {
-    using S = tape::FrameStatus;
-    return s == S::contested || s == S::unstable || s == S::unresolved || s == S::missing;
+double cm_value(std::uint64_t frame) { return std::round(tape::frame_distance_cm(frame) * 10) / 10; }
+
+constexpr tape::FrameStatus all_statuses[] = {
+    tape::FrameStatus::clean,      tape::FrameStatus::voted,     tape::FrameStatus::inferred,
+    tape::FrameStatus::guessed,    tape::FrameStatus::contested, tape::FrameStatus::unstable,
+    tape::FrameStatus::unresolved, tape::FrameStatus::missing,   tape::FrameStatus::extra};
+
+std::string summary_text(const tape::RestoreResult& r) {
+    std::string s = "frames:";
+    for (auto st : all_statuses)
+        s += std::string(st == tape::FrameStatus::clean ? " " : ", ") + std::string(tape::status_name(st)) + " " +
+             std::to_string(r.count(st));
+    s += "  (extra: read by a minority, not written; missing: ends of the tape no read covers)\n";
+    if (r.run_length_votes)
+        s += "voted on a run length: " + std::to_string(r.run_length_votes) +
+             " run(s) of equal frames whose length the reads disagreed on, decided by the odds of a lost or doubled "
+             "frame or by the program's rules\n";
+    if (r.contested_unwritten)
+        s += "in doubt and not written: " + std::to_string(r.contested_unwritten) + " frame(s) most reads lack\n";
+    return s;
 }
 
-constexpr tape::FrameStatus all_statuses[] = {tape::FrameStatus::clean,    tape::FrameStatus::voted,
-                                              tape::FrameStatus::inferred, tape::FrameStatus::contested,
-                                              tape::FrameStatus::unstable, tape::FrameStatus::unresolved,
-                                              tape::FrameStatus::missing,  tape::FrameStatus::extra};
+std::string problem_text(const RestoreReportInput& in, const tape::RestoreProblem& p) {
+    std::string s = "  " + problem_place(p) + (p.line ? " (line " + std::to_string(*p.line) + ")" : "") +
+                    (p.frame ? ", " + cm(*p.frame) + " cm" : "") + ": " + std::string(tape::status_name(p.status)) +
+                    ": " + p.reason + "\n";
+    for (std::size_t i = 0; i < p.seen.size(); ++i)
+        s += "      read " + std::to_string(i + 1) + ": " +
+             (p.seen[i]      ? frame_text(in.code, *p.seen[i])
+              : p.covered[i] ? "no frame"
+                             : "not read here") +
+             "\n";
+    if (p.status == tape::FrameStatus::missing) return s;
+    s += std::string("      ") + (!p.frame ? "not written: " : "written: ") + frame_text(in.code, p.written) + "\n";
+    if (!p.candidates.empty() && p.status != tape::FrameStatus::inferred) {
+        s += p.status == tape::FrameStatus::guessed ? "      alternatives:" : "      candidates:";
+        for (std::size_t i = p.status == tape::FrameStatus::guessed ? 1 : 0; i < p.candidates.size(); ++i)
+            s += " " + frame_text(in.code, p.candidates[i]) + ";";
+        s.back() = '\n';
+    }
+    return s;
+}
+
+nlohmann::ordered_json problem_json(const tape::RestoreProblem& p) {
+    using nlohmann::ordered_json;
+    ordered_json j;
+    j["status"] = tape::status_name(p.status);
+    j["in_doubt"] = tape::in_doubt(p.status);
+    j["frame"] = p.frame ? ordered_json(*p.frame) : ordered_json(nullptr);
+    j["after"] = p.after;
+    j["line"] = p.line ? ordered_json(*p.line) : ordered_json(nullptr);
+    j["cm"] = p.frame ? ordered_json(cm_value(*p.frame)) : ordered_json(nullptr);
+    j["seen"] = ordered_json::array();
+    for (std::size_t i = 0; i < p.seen.size(); ++i)
+        j["seen"].push_back({{"read", i + 1},
+                             {"covered", static_cast<bool>(p.covered[i])},
+                             {"frame", p.seen[i] ? ordered_json(tape::frame_hex(*p.seen[i])) : ordered_json(nullptr)}});
+    bool written = p.frame && p.status != tape::FrameStatus::missing;
+    j["written"] = written ? ordered_json(tape::frame_hex(p.written)) : ordered_json(nullptr);
+    j["left_out"] = !p.frame ? ordered_json(tape::frame_hex(p.written)) : ordered_json(nullptr);
+    j["candidates"] = ordered_json::array();
+    for (auto c : p.candidates) j["candidates"].push_back(tape::frame_hex(c));
+    j["run_length"] = p.run_length;
+    j["reason"] = p.reason;
+    return j;
+}
 
 }  // namespace
+
+std::string problem_place(const tape::RestoreProblem& p) {
+    return p.frame ? "frame " + std::to_string(*p.frame) : "after frame " + std::to_string(p.after);
+}
 
 std::optional<tape::FrameCode> code_for_reads(const std::string& code, const std::string& parity,
                                               const std::vector<TapeInput>& reads, std::string& name) {
     name = code;
     if (code == "none") return std::nullopt;
-    if (code != "auto") {
-        auto c = *tape::parse_code(code);
-        return tape::FrameCode::make(c, c == tape::Code::eia ? tape::Parity::odd : *tape::parse_parity(parity),
-                                     globals().table());
+    // A parity given alone names the code too: ISO with that parity, as decode takes it.
+    if (code != "auto" || !parity.empty()) {
+        auto c = code == "auto" ? tape::Code::iso : *tape::parse_code(code);
+        auto p = c == tape::Code::eia ? tape::Parity::odd : *tape::parse_parity(parity.empty() ? "even" : parity);
+        auto made = tape::FrameCode::make(c, p, globals().table());
+        name = c == tape::Code::eia ? "EIA" : "ISO with " + std::string(tape::parity_name(made.parity())) + " parity";
+        return made;
     }
     const TapeInput* longest = &reads.front();
     for (const auto& r : reads)
@@ -73,9 +141,10 @@ std::vector<RereadRange> reread_list(const tape::RestoreResult& r) {
     constexpr std::uint64_t margin = 5, join = 20;
     std::vector<RereadRange> out;
     for (const auto& p : r.problems) {
-        if (!needs_reread(p.status) || !p.frame) continue;
-        std::uint64_t from = *p.frame > margin ? *p.frame - margin : 1;
-        std::uint64_t to = std::min<std::uint64_t>(*p.frame + margin, r.frames.size());
+        if (!tape::in_doubt(p.status)) continue;
+        std::uint64_t at = p.frame ? *p.frame : std::max<std::uint64_t>(p.after, 1);
+        std::uint64_t from = at > margin ? at - margin : 1;
+        std::uint64_t to = std::min<std::uint64_t>(at + margin, std::max<std::size_t>(r.frames.size(), 1));
         if (!out.empty() && from <= out.back().to + join)
             out.back().to = std::max(out.back().to, to);
         else
@@ -93,32 +162,13 @@ std::string restore_report_text(const RestoreReportInput& in) {
         char share[16];
         std::snprintf(share, sizeof share, "%.1f", r.shared[i] * 100);
         s += "  read " + std::to_string(i + 1) + ": " + display_name(in.names[i]) + ", " + std::to_string(in.sizes[i]) +
-             " frames, " + share + "% shared with the reference\n";
+             " frames, " +
+             (r.related[i] ? std::string(share) + "% shared with the reference" : "left out: a read of another tape") +
+             "\n";
     }
-    s += "frames:";
-    for (auto st : all_statuses)
-        s += std::string(st == tape::FrameStatus::clean ? " " : ", ") + std::string(tape::status_name(st)) + " " +
-             std::to_string(r.count(st));
-    s += "  (extra: read by a minority, not written; missing: ends of the tape no read covers)\n";
+    s += summary_text(r);
     if (!r.problems.empty()) s += "problems:\n";
-    for (const auto& p : r.problems) {
-        s += "  " + (p.frame ? "frame " + std::to_string(*p.frame) : "after frame " + std::to_string(p.after)) +
-             (p.line ? " (line " + std::to_string(*p.line) + ")" : "") + (p.frame ? ", " + cm(*p.frame) + " cm" : "") +
-             ": " + std::string(tape::status_name(p.status)) + ": " + p.reason + "\n";
-        if (p.status == tape::FrameStatus::missing) continue;
-        for (std::size_t i = 0; i < p.seen.size(); ++i)
-            s += "      read " + std::to_string(i + 1) + ": " +
-                 (p.seen[i]      ? frame_text(in.code, *p.seen[i])
-                  : p.covered[i] ? "no frame"
-                                 : "not read here") +
-                 "\n";
-        s += std::string("      ") + (!p.frame ? "not written: " : "written: ") + frame_text(in.code, p.written) + "\n";
-        if (!p.candidates.empty() && p.status != tape::FrameStatus::inferred) {
-            s += "      candidates:";
-            for (auto c : p.candidates) s += " " + frame_text(in.code, c) + ";";
-            s.back() = '\n';
-        }
-    }
+    for (const auto& p : r.problems) s += problem_text(in, p);
     auto reread = reread_list(r);
     if (!reread.empty()) {
         s += "read again:\n";
@@ -126,50 +176,59 @@ std::string restore_report_text(const RestoreReportInput& in) {
             s += "  frames " + std::to_string(x.from) + "-" + std::to_string(x.to) + ", " + cm(x.from) + "-" +
                  cm(x.to) + " cm from the first feed hole\n";
     }
-    s += r.complete() ? "every frame is clean, voted or inferred\n"
-                      : "not every frame could be restored: the image holds them as read, listed above\n";
+    if (r.code_misfit)
+        s += "most frames fail the code " + in.code_text +
+             ": the reads were voted as frames of no code, nothing "
+             "repaired\n";
+    else if (r.unchecked)
+        s += "one read of a tape in no code: nothing could be checked, so nothing is known to be right\n";
+    else
+        s += r.complete() ? "every frame is clean, voted or inferred\n"
+                          : "not every frame could be restored: the image holds them as read, listed above\n";
     return s;
 }
 
+// The report is one JSON object, its members made by nlohmann-json one by one, so that the problems of a
+// long tape are never all held as JSON values at once.
 std::string restore_report_json(const RestoreReportInput& in) {
+    using nlohmann::ordered_json;
     const tape::RestoreResult& r = *in.result;
-    std::string s =
-        "{\"schema\": \"tape-restore/1\", \"code\": " + (in.code ? json_string(in.code_text) : std::string("null")) +
-        ", \"reads\": [";
+    std::string s = "{";
+    auto member = [&s](const char* key, const ordered_json& value) {
+        s += (s.size() > 1 ? "," : "") + ordered_json(key).dump() + ":" + value.dump();
+    };
+    member("schema", "tape-restore/2");
+    member("code", in.code ? ordered_json(in.code_text) : ordered_json(nullptr));
+    ordered_json reads = ordered_json::array();
     for (std::size_t i = 0; i < in.names.size(); ++i)
-        s += std::string(i ? ", " : "") + "{\"file\": " + json_string(display_name(in.names[i])) +
-             ", \"frames\": " + std::to_string(in.sizes[i]) + ", \"shared\": " + std::to_string(r.shared[i]) + "}";
-    s += "], \"reference\": " + std::to_string(r.reference + 1) + ", \"frames\": " + std::to_string(r.frames.size()) +
-         ", \"complete\": " + (r.complete() ? "true" : "false") + ", \"summary\": {";
-    for (auto st : all_statuses)
-        s += std::string(st == tape::FrameStatus::clean ? "" : ", ") + json_string(std::string(tape::status_name(st))) +
-             ": " + std::to_string(r.count(st));
-    s += "}, \"problems\": [";
-    bool first = true;
-    for (const auto& p : r.problems) {
-        s += std::string(first ? "" : ", ") + "{\"status\": " + json_string(std::string(tape::status_name(p.status))) +
-             ", \"frame\": " + json_number(p.frame) + ", \"after\": " + std::to_string(p.after) +
-             ", \"line\": " + json_number(p.line) + ", \"cm\": " + (p.frame ? cm(*p.frame) : "null") + ", \"seen\": [";
-        first = false;
-        for (std::size_t i = 0; i < p.seen.size(); ++i)
-            s += std::string(i ? ", " : "") + "{\"read\": " + std::to_string(i + 1) +
-                 ", \"covered\": " + (p.covered[i] ? "true" : "false") +
-                 ", \"frame\": " + (p.seen[i] ? json_string(tape::frame_hex(*p.seen[i])) : "null") + "}";
-        s += "], \"written\": " +
-             (p.status == tape::FrameStatus::missing ? std::string("null") : json_string(tape::frame_hex(p.written))) +
-             ", \"candidates\": [";
-        for (std::size_t i = 0; i < p.candidates.size(); ++i)
-            s += std::string(i ? ", " : "") + json_string(tape::frame_hex(p.candidates[i]));
-        s += "], \"reason\": " + json_string(p.reason) + "}";
+        reads.push_back({{"file", display_name(in.names[i])},
+                         {"frames", in.sizes[i]},
+                         {"shared", std::round(r.shared[i] * 1000) / 1000},
+                         {"related", static_cast<bool>(r.related[i])}});
+    member("reads", reads);
+    member("reference", r.reference + 1);
+    member("frames", r.frames.size());
+    member("complete", r.complete());
+    member("checked", !r.unchecked);
+    ordered_json summary;
+    for (auto st : all_statuses) summary[std::string(tape::status_name(st))] = r.count(st);
+    summary["run_length_votes"] = r.run_length_votes;
+    summary["in_doubt_not_written"] = r.contested_unwritten;
+    member("summary", summary);
+    s += ",\"problems\":[";
+    for (std::size_t i = 0; i < r.problems.size(); ++i) s += (i ? "," : "") + problem_json(r.problems[i]).dump();
+    s += "]";
+    ordered_json reread = ordered_json::array();
+    for (const auto& x : reread_list(r))
+        reread.push_back({{"from", x.from}, {"to", x.to}, {"from_cm", cm_value(x.from)}, {"to_cm", cm_value(x.to)}});
+    member("reread", reread);
+    if (!in.image_name.empty() && in.image_name != "-") {
+        auto bytes = std::span(reinterpret_cast<const std::uint8_t*>(in.image_bytes.data()), in.image_bytes.size());
+        member(
+            "image",
+            {{"file", in.image_name}, {"bytes", in.image_bytes.size()}, {"fnv1a64", tape::image_fingerprint(bytes)}});
     }
-    s += "], \"reread\": [";
-    auto reread = reread_list(r);
-    for (std::size_t i = 0; i < reread.size(); ++i)
-        s += std::string(i ? ", " : "") + "{\"from\": " + std::to_string(reread[i].from) +
-             ", \"to\": " + std::to_string(reread[i].to) + ", \"from_cm\": " + cm(reread[i].from) +
-             ", \"to_cm\": " + cm(reread[i].to) + "}";
-    s += "]}\n";
-    return s;
+    return s + "}\n";
 }
 
 }  // namespace cli

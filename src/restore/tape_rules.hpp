@@ -1,0 +1,152 @@
+// What a tape's own program says about how it is written, learned from its blocks that no damage
+// touches, for repair to hold a candidate against (repair.cpp): the word formats it keeps, its block
+// numbers' step, the G and M codes it uses, the values its feeds, speeds and tools take, where the tool
+// stands before each damaged block (for arcs), which findings it has anyway, and how its characters
+// follow one another (for guesses).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "tape/format_spec.hpp"
+#include "tape/frame.hpp"
+#include "tape/lint.hpp"
+#include "tape/program.hpp"
+
+namespace tape::detail {
+
+/// How a word is written: its sign, and the digits before and after an explicit point (without one,
+/// all its digits and after = -1).
+struct WordShape {
+    char sign = 0;
+    int before = 0, after = -1;
+    auto operator<=>(const WordShape&) const = default;
+};
+/// The shape of a plain word; nullopt for a macro value or a word with no digits.
+std::optional<WordShape> shape_of(const Word& w);
+
+/// The machine's state where a block begins, as far as the blocks before it tell.
+struct MotionState {
+    std::array<std::optional<double>, 3> at{};  ///< X, Y, Z
+    std::array<bool, 3> pointed{};              ///< the coordinate was written with a decimal point
+    bool absolute = true;                       ///< G90 (G91: incremental)
+    int plane = 17;                             ///< G17, G18, G19
+    int motion = -1;                            ///< the modal motion G code (0-3), or -1
+};
+
+/// Moves state through one block: G90/G91, the plane, the motion code, and X, Y, Z. A block whose
+/// axis words mean something else (a dwell, a reference return, a setting), or whose values are
+/// macro expressions, leaves the axes it names unknown.
+void advance(MotionState& state, const Block& block);
+
+/// For a G02/G03 block with a centre (I, J, K) or a radius (R): true when its start (state) and end lie
+/// on one circle within the controller's tolerance, false when they do not; nullopt when the block is
+/// no arc or where the tool stands is not known.
+std::optional<bool> arc_agrees(const MotionState& before, const Block& block);
+
+/// Learned as the loader streams the program's text through it (load_each), so that no block is held:
+/// then finish() with that text.
+class TapeRules : public ProgramVisitor {
+public:
+    /// damaged_lines: the lines (from 1) whose blocks are left out of what is learned; the motion state
+    /// before each is kept.
+    TapeRules(const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec);
+    ~TapeRules() override;
+
+    void dialect(const DialectChoice& choice) override { lint_->dialect(choice); }
+    void program_start(const Program& header) override;
+    void block(const Block& b) override;
+    void after_end(std::string_view text, const Location& where) override { lint_->after_end(text, where); }
+    void finding(const Finding& f) override { lint_->finding(f); }
+    void end(const Location& where) override { lint_->end(where); }
+    /// The findings the undamaged program has anyway, once the whole text went through.
+    void finish(std::string_view text);
+
+    /// A word of this shape breaks how the tape writes the address (at least enough_words times, every
+    /// time so): its point style (always or never a point), its number of decimals, a fixed width
+    /// (zeros punched), its sign style (never '+', or always a sign).
+    bool format_broken(char address, const WordShape& shape) const;
+    /// G or M code value (code_value form) used in an undamaged block.
+    bool code_used(char letter, std::string_view value) const;
+    /// The number a damaged block's N word must have where its neighbours keep a steady step: the
+    /// block numbers before and after line, and the step, agree.
+    std::optional<long long> expected_number(std::uint64_t line) const;
+    /// A feed, speed or tool number far outside the values the tape gives that address.
+    bool value_out_of_range(char address, double value) const;
+    /// A finding the undamaged program has too: its rule and what it is about (the code, or the
+    /// character where it points).
+    bool excused(const std::string& key) const { return excused_.count(key) > 0; }
+    /// The motion state where a damaged line begins, if the blocks before it tell.
+    const MotionState* state_before(std::uint64_t line) const;
+    /// The tape's own undamaged arcs close as arc_agrees checks them (at least three, nine in ten): only
+    /// then does arc geometry judge a repair (a controller may read I, J, K otherwise).
+    bool arcs_trusted() const { return arcs_checked_ >= 3 && arcs_open_ * 10 <= arcs_checked_; }
+    const FormatSpec* spec() const { return spec_; }
+    /// The dialect's grammar fits the undamaged program: lint finds errors in at most one block in five.
+    /// Where it does not (no known dialect fits: an Okuma or Siemens program read as another), repairs
+    /// are not judged by it.
+    bool grammar_fits() const { return error_lines_ * 5 <= std::max<std::size_t>(blocks_, 1); }
+    /// The program writes explicit points somewhere (for a format spec's checks).
+    bool points() const { return points_; }
+    static constexpr std::size_t enough_words = 5;
+
+private:
+    void learn_block(const Block& b, bool damaged);
+    void learn_step();
+
+    const std::set<std::uint64_t>& damaged_lines_;
+    std::unique_ptr<LintVisitor> lint_;
+    MotionState state_;
+
+    std::map<char, std::map<WordShape, std::size_t>> shapes_;
+    std::map<char, std::size_t> words_;
+    std::set<std::string> codes_;
+    std::vector<std::pair<std::uint64_t, long long>> numbers_;  // (line, N) of undamaged blocks
+    std::map<char, std::pair<double, double>> ranges_;          // F S T: least and most
+    std::map<char, std::size_t> range_words_;
+    std::set<std::string> excused_;
+    std::map<std::uint64_t, MotionState> before_;
+    const FormatSpec* spec_;
+    bool points_ = false;
+    long long step_ = 0;  // the block numbers' steady step, 0 for none
+    std::size_t arcs_checked_ = 0, arcs_open_ = 0;
+    std::size_t blocks_ = 0, error_lines_ = 0;
+};
+
+/// How a tape's frames follow one another, for guesses: counts of one, two and three frames in a row
+/// (blank tape skipped, as a reader skips it; DEL counted, as DEC tapes punch it after every tab), the
+/// three mixed so that a frame seen often but never in this company still counts.
+class CharModel {
+public:
+    void learn(std::span<const Frame> frames);
+    /// How likely f is between the two frames before it and the one after (blank tape skipped), by how
+    /// the tape goes: a log-odds score, higher is likelier.
+    double score(Frame before2, Frame before1, Frame f, Frame after) const;
+
+private:
+    double chance(Frame a, Frame b, Frame c) const;  // of c after a b
+
+    std::unordered_map<std::uint32_t, std::uint32_t> trigrams_;  // (a, b, c) -> count
+    std::unordered_map<std::uint32_t, std::uint32_t> bigrams_;   // (a, b) -> count
+    std::array<std::uint64_t, 256> unigrams_{};
+    std::uint64_t total_ = 0;
+};
+
+/// The key of a finding for TapeRules::excused: its rule, and the code (unknown-code) or the character
+/// at its column in text otherwise.
+std::string finding_key(const Finding& f, std::string_view line_text);
+
+/// True when text reads as an NC program: most of its letters outside comments are addresses followed
+/// by a value, as words are. DEC MACRO source, Elliott SIR and other text get no NC grammar.
+bool looks_like_nc_program(std::string_view text);
+
+}  // namespace tape::detail
