@@ -30,7 +30,7 @@ install(TARGETS tape RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runti
 # Built by `cmake --build build`, not by the demo's build of the tape target alone: installed when built.
 install(TARGETS tape-damage tape-adapter-sim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime OPTIONAL)
 install(FILES ${TAPE_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions COMPONENT runtime)
-install(FILES data/eia-rs244.tab data/ita2.tab data/mtk2.tab DESTINATION ${CMAKE_INSTALL_DATADIR}/tape
+install(FILES data/eia-rs244.tab data/ita2.tab data/mtk2.tab data/elliott900.tab data/elliott920.tab DESTINATION ${CMAKE_INSTALL_DATADIR}/tape
         COMPONENT runtime)
 # tape dnc's systemd unit (with the installed binary's path) and its sample configuration; the unit goes to the
 # prefix's lib/systemd/system, systemd's own folder when the prefix is /usr.

@@ -249,3 +249,47 @@ TEST(Decode, BadFrameNamesItsLine) {
     ASSERT_EQ(out.diagnostics.size(), 1U);
     EXPECT_EQ(out.diagnostics[0].where.line, 500U);
 }
+
+TEST(DecodeEnding, ATapeCutInsideABlockOrWithoutTrailerIsSaid) {
+    auto ending_of = [](const std::vector<Frame>& t) {
+        Decoder d(DecodeOptions{});
+        DecodeResult r;
+        d.feed(t, r);
+        d.finish(r);
+        return d.ending();
+    };
+    EXPECT_TRUE(ending_of(encode("%\nN1 G01\nM02\n%\n", EncodeOptions{})).empty());
+    EXPECT_TRUE(ending_of(encode("%\nN1 G01\nM02\n%", EncodeOptions{})).empty()) << "a closing % ends it";
+    auto cut = encode("%\nN1 G01\nN2 X1", EncodeOptions{.leader = 10, .trailer = 0});
+    auto findings = ending_of(cut);
+    ASSERT_EQ(findings.size(), 1U);
+    EXPECT_EQ(findings[0].severity, Severity::warning);
+    EXPECT_EQ(findings[0].where.frame, cut.size());
+    EXPECT_NE(findings[0].message.find("ends inside a block, at a punched frame without a blank trailer"),
+              std::string::npos);
+    auto mid = encode("%\nN1\nN2 X1", EncodeOptions{.leader = 10, .trailer = 5});
+    ASSERT_EQ(ending_of(mid).size(), 1U);
+    EXPECT_NE(ending_of(mid)[0].message.find("ends inside a block:"), std::string::npos);
+    auto no_trailer = encode("%\nN1\n", EncodeOptions{.leader = 10, .trailer = 0});
+    ASSERT_EQ(ending_of(no_trailer).size(), 1U);
+    EXPECT_NE(ending_of(no_trailer)[0].message.find("without a blank trailer"), std::string::npos);
+    EXPECT_TRUE(ending_of(std::vector<Frame>(20, 0)).empty()) << "blank tape ends well";
+}
+
+TEST(FiveTrackUnshiftOnSpace, ASpaceReturnsToLettersWhenAsked) {
+    // "1 W": FIGS 1 SP W, as a teleprinter with unshift-on-space punches it (no LTRS after the space).
+    std::vector<Frame> t = {0x1B, 0x17, 0x04, 0x13};
+    DecodeOptions o;
+    o.code = Code::ita2;
+    EXPECT_EQ(decode(t, o).text, "1 2") << "without it the figures register holds";
+    o.unshift_on_space = true;
+    EXPECT_EQ(decode(t, o).text, "1 W");
+    o.code = Code::mtk2;
+    EXPECT_THROW(Decoder{o}, Error);
+    // Punched so that both kinds of teleprinter read it right: FIGS again after the space.
+    EncodeOptions e{.code = Code::ita2, .leader = 0, .trailer = 0};
+    auto frames = encode("1 2", e);
+    EXPECT_EQ(frames, (std::vector<Frame>{0x1B, 0x17, 0x04, 0x1B, 0x13}));
+    DecodeOptions usos{.code = Code::ita2, .unshift_on_space = true};
+    EXPECT_EQ(decode(frames, usos).text, "1 2");
+}

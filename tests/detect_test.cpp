@@ -164,3 +164,18 @@ TEST(ParityCounts, MixedWhenNoRuleFitsNineInTen) {
     EXPECT_FALSE(count_parity(t).dominant());
     EXPECT_FALSE(count_parity(std::vector<Frame>(3, 0)).dominant());
 }
+
+TEST(DetectCode, AnEiaTapeStartingWithEndsOfBlockIsEia) {
+    auto t = read_frames(sample_path("16k20f3s5-turning.eia.ptp"));
+    std::vector<Frame> eob_first(25, 0x80);
+    eob_first.insert(eob_first.end(), t.begin(), t.end());
+    auto d = detect_code(eob_first);
+    EXPECT_EQ(d.kind, TapeKind::eia) << d.reason;
+}
+
+TEST(DetectCode, Koi7LettersAreSeen) {
+    auto d = detect_code(read_frames(sample_path("koi7-comment.iso.ptp")));
+    EXPECT_EQ(d.kind, TapeKind::iso);
+    EXPECT_TRUE(looks_like_koi7(d.evidence)) << d.evidence.koi7_letters;
+    EXPECT_FALSE(looks_like_koi7(detect_code(read_frames(sample_path("16k20f3s5-turning.iso.ptp"))).evidence));
+}

@@ -223,3 +223,46 @@ TEST(Encode, SkipsAByteOrderMarkAtTheStart) {
         EXPECT_NE(std::string(e.what()).find("U+FEFF"), std::string::npos) << e.what();
     }
 }
+
+TEST(Encode, DosEndOfFileMarksAreNotPunched) {
+    EncodeOptions o{.leader = 0, .trailer = 0};
+    std::string text = "%\r\nN1 G01\r\nM30\r\n%\r\n";
+    for (std::string marks : {"\x1A", "\x1A\x1A"}) {
+        std::string with_marks = text + marks;
+        for (std::size_t cut = 0; cut <= with_marks.size(); ++cut) {
+            Encoder e(o);
+            std::vector<Frame> frames;
+            e.feed(std::string_view(with_marks).substr(0, cut), frames);
+            e.feed(std::string_view(with_marks).substr(cut), frames);
+            e.finish(frames);
+            ASSERT_EQ(frames, encode(text, o)) << "cut at " << cut;
+            ASSERT_TRUE(e.skipped_end_of_file_mark());
+            EXPECT_EQ(e.skipped_end_of_file_mark()->describe(), "line 5, column 1");
+        }
+    }
+    // With text after it, a mark is the character SUB, punched where it stands.
+    auto sub = encode(
+        "N1\x1A"
+        "N2\n",
+        o);
+    ASSERT_EQ(sub.size(), 6U);
+    EXPECT_EQ(sub[2], Frame{0x9A});
+    Encoder plain(o);
+    std::vector<Frame> frames;
+    plain.feed(text, frames);
+    plain.finish(frames);
+    EXPECT_FALSE(plain.skipped_end_of_file_mark());
+}
+
+TEST(Encode, CrLfGivesACrLfTapeBack) {
+    EncodeOptions lf{.leader = 0, .trailer = 0};
+    EncodeOptions crlf = lf;
+    crlf.crlf = true;
+    auto tape = encode("%\nN1\n%\n", crlf);
+    EXPECT_EQ(tape.size(), 10U);
+    DecodeOptions d;
+    auto text = decode(tape, d).text;
+    EXPECT_EQ(text, "%\r\nN1\r\n%\r\n");
+    EXPECT_EQ(encode(text, crlf), tape) << "decode then encode --crlf: the same tape";
+    EXPECT_NE(encode(text, lf), tape) << "without it every CR is dropped";
+}

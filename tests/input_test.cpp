@@ -294,3 +294,45 @@ TEST(Input, DetectionReadsAheadABoundedAmount) {
     for (auto f = in.next_frames(); !f.empty(); f = in.next_frames()) back += f.size();
     EXPECT_EQ(back, frames.size());
 }
+
+TEST(Input, ADosEndOfFileMarkEndsTheTextWithANote) {
+    std::string program = "%\r\nN1 G01 X10\r\nM30\r\n%\r\n";
+    for (std::string marks : {"\x1A", "\x1A\x1A\x1A"}) {
+        for (std::size_t piece : {1, 3, 1 << 20}) {
+            auto in = open_bytes(program + marks, "p.nc", InputOptions{}, piece);
+            ASSERT_FALSE(in.is_image()) << "a text program, not an ASCII tape with space parity";
+            EXPECT_EQ(text_of(in), program);
+            ASSERT_EQ(in.notes().size(), 1U);
+            EXPECT_EQ(in.notes()[0].where.line, 5U);
+            EXPECT_EQ(in.notes()[0].where.byte, program.size());
+            EXPECT_NE(in.notes()[0].message.find("Ctrl-Z"), std::string::npos);
+        }
+    }
+    // Text after the mark: the mark is a control character in a text program, as any other.
+    auto in = open_bytes(
+        "%\nN1\n\x1A"
+        "N2\n",
+        "p.nc", InputOptions{.kind = InputKind::text}, 2);
+    try {
+        text_of(in);
+        FAIL();
+    } catch (const Error& e) {
+        EXPECT_EQ(e.code(), Errc::bad_text);
+        EXPECT_EQ(e.where().describe(), "line 3, column 1");
+    }
+}
+
+TEST(Input, TheCodeAHeaderNamesIsTaken) {
+    std::string hex5 = "# tape hex5 image: one 5-track frame a line, two hex digits (bit 0 = track 1)\n# code: mtk2\n";
+    for (int f : {0x00, 0x00, 0x1F, 0x03, 0x13, 0x08, 0x02})
+        hex5 += (f < 16 ? "0" : "") + [&] {
+            char b[4];
+            std::snprintf(b, sizeof b, "%X", f);
+            return std::string(b);
+        }() + "\n";
+    auto in = open_bytes(hex5, "t.hex5");
+    ASSERT_TRUE(in.is_image());
+    EXPECT_EQ(in.declared_code(), Code::mtk2);
+    EXPECT_EQ(in.decode_options().code, Code::mtk2);
+    EXPECT_EQ(text_of(in), "AW\n");
+}

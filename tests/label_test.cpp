@@ -202,3 +202,28 @@ TEST(Label, ALeaderTooShortForTheLabelIsAUsageErrorSayingHowLong) {
         EXPECT_NE(std::string(e.what()).find("33 frames"), std::string::npos) << e.what();
     }
 }
+
+TEST(LeaderTitle, ATitleInAnotherFontIsFoundNotRead) {
+    // "AL" drawn seven holes high, a column a frame, as on the Elliott 900 archive's tapes.
+    std::vector<Frame> t(30, 0);
+    for (Frame f :
+         {0x7E, 0x09, 0x09, 0x09, 0x7E, 0x00, 0x7F, 0x40, 0x40, 0x40, 0x60, 0x00, 0x7F, 0x49, 0x49, 0x49, 0x41})
+        t.push_back(f);
+    t.insert(t.end(), 40, 0);
+    auto program = encode("%\nN1\n", EncodeOptions{.leader = 0, .trailer = 10});
+    t.insert(t.end(), program.begin(), program.end());
+    auto label = find_label(t);
+    ASSERT_TRUE(label);
+    EXPECT_EQ(label->font, LabelFont::title);
+    EXPECT_EQ(label->first, 30U);
+    EXPECT_EQ(label->frames, 17U);
+    EXPECT_TRUE(label->text.empty());
+    // A program with short lines between blank frames is no title.
+    std::vector<Frame> lines(30, 0);
+    for (const char* line : {"%\n", "N1\n", "N2\n", "M2\n"}) {
+        auto f = encode(line, EncodeOptions{.leader = 0, .trailer = 5});
+        lines.insert(lines.end(), f.begin(), f.end());
+    }
+    lines.insert(lines.end(), 30, 0);
+    EXPECT_FALSE(find_title(lines));
+}

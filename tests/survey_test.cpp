@@ -33,3 +33,10 @@ TEST(Survey, EiaFramesOutsideTheTableAreCountedApart) {
     EXPECT_EQ(s.program_starts, 1U);
     EXPECT_EQ(s.data, 4U);
 }
+
+TEST(Survey, TheClosingPercentStartsNoProgram) {
+    auto one = survey(encode("%\nO1\nG01 X1\nM30\n%\n", EncodeOptions{}), FrameCode::iso());
+    EXPECT_EQ(one.program_starts, 1U);
+    auto two = survey(encode("%\nO1\nM30\n%\n%\nO2\nM30\n%", EncodeOptions{}), FrameCode::iso());
+    EXPECT_EQ(two.program_starts, 2U);
+}

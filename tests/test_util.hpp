@@ -26,6 +26,14 @@ struct TempDir {
 
 inline std::string sample_path(const std::string& name) { return std::string(TAPE_SOURCE_DIR) + "/tapes/" + name; }
 
+/// Where the real data from outside lies (other people's files, never in the project): ../shared/data beside
+/// the repository, or beside the main checkout of a worktree one folder deeper; "" when it is absent.
+inline std::string shared_data_dir() {
+    for (const char* up : {"/../shared/data", "/../../shared/data"})
+        if (std::filesystem::exists(std::string(TAPE_SOURCE_DIR) + up)) return std::string(TAPE_SOURCE_DIR) + up;
+    return "";
+}
+
 inline std::string read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};

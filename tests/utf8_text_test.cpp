@@ -51,3 +51,26 @@ TEST(Visible, SpellsOutWhatATerminalWouldHideOrActOn) {
     EXPECT_EQ(visible("\xE2\x80\x8B"), "U+200B");
     EXPECT_EQ(visible("ДЕТАЛЬ | o oo. |"), "ДЕТАЛЬ | o oo. |");
 }
+
+TEST(TextFault, DosEndOfFileMarksEndATextAndAreNoFault) {
+    EXPECT_EQ(dos_end_of_file_at(bytes_of("%\nM30\n%\n\x1A\x1A")), 8U);
+    EXPECT_EQ(dos_end_of_file_at(bytes_of("%\n")), 2U);
+    EXPECT_TRUE(is_program_text(bytes_of("%\r\nM30\r\n%\r\n\x1A")));
+    auto inside = find_text_fault(bytes_of("%\n\x1A\nM30\n"));
+    ASSERT_TRUE(inside);
+    EXPECT_EQ(inside->what, "the control character \\x1A");
+    // In pieces: a mark at a piece's end waits for what follows.
+    TextChecker ends;
+    EXPECT_FALSE(ends.check(bytes_of("%\nM30\n\x1A")));
+    EXPECT_FALSE(ends.check(bytes_of("\x1A")));
+    EXPECT_FALSE(ends.finish());
+    ASSERT_TRUE(ends.end_of_file_mark());
+    EXPECT_EQ(ends.end_of_file_mark()->offset, 6U);
+    EXPECT_EQ(ends.end_of_file_mark()->where.line, 3U);
+    TextChecker goes_on;
+    EXPECT_FALSE(goes_on.check(bytes_of("%\nM30\x1A")));
+    auto fault = goes_on.check(bytes_of("\n"));
+    ASSERT_TRUE(fault);
+    EXPECT_EQ(fault->where.describe(), "line 2, column 4");
+    EXPECT_EQ(fault->offset, 5U);
+}

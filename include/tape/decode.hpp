@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -25,6 +26,7 @@ struct DecodeOptions {
     Parity parity = Parity::even;          ///< ISO only; EIA parity is fixed (odd, track 5), 5-track has none
     Charset charset = Charset::ascii;      ///< ISO only: МТК-2 has its own Russian register
     bool keep_going = false;               ///< report every bad frame instead of stopping at the first
+    bool unshift_on_space = false;         ///< ITA2: a space returns the reader to letters, as on many teleprinters
     bool positions = false;                ///< fill DecodeResult::frame_of
     std::size_t max_diagnostics = 0;       ///< keep at most this many of each kind, count the rest (0: all)
     const CodeTable* eia_table = nullptr;  ///< a corrected EIA table; nullptr = built-in
@@ -52,8 +54,9 @@ struct DecodeResult {
 /// the decoding unless keep_going, in which case the frame is marked in the text.
 /// 5-track codes follow their shifts (the letters register first): CR LF (CR CR LF) reads as one LF,
 /// any other CR as CR; a frame with tracks 6-8 punched, or one with no agreed character in its
-/// register (ITA2's national figures), is Errc::not_in_code. Throws Error(Errc::usage) for a parity
-/// or character set given with a 5-track code.
+/// register (ITA2's national figures), is Errc::not_in_code. The Elliott telecodes give their own
+/// characters (£, º, ⑩). Throws Error(Errc::usage) for a parity or character set given with a 5-track
+/// code or a telecode, and for unshift_on_space with another code than ITA2.
 DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options);
 
 /// The same, a chunk at a time, in bounded memory: frame numbers, the КОИ-7 shift, the 5-track
@@ -71,6 +74,11 @@ public:
     /// The tape has ended: appends what was held back (a 5-track CR that an LF might have followed).
     void finish(DecodeResult& out);
 
+    /// How the tape ended, after finish(): one warning when its last character is no line or block end
+    /// (LF, CR, another control, '%', a telecode's halt), so that it may have been cut inside a block,
+    /// or when its last frame is punched (no blank trailer), or both. Empty for a tape that ends well.
+    std::vector<Diagnostic> ending() const;
+
     std::uint64_t frames_seen() const { return next_index_; }
     /// Bad frames in all, listed or not.
     std::uint64_t bad_frames() const { return parity_seen_ + other_seen_; }
@@ -80,8 +88,15 @@ public:
 private:
     void note_bad(Frame f, std::uint64_t index, std::uint64_t line, DecodeResult& out);
     void finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from);
+    struct ChunkStart {  // where a chunk's text, positions and findings begin in the result
+        std::size_t text = 0, positions = 0, diagnostics = 0;
+    };
+    void settle_chunk(DecodeResult& out, ChunkStart at, bool marked);
     bool feed_five_track(std::span<const Frame> frames, DecodeResult& out);  // decode_five_track.cpp
     void put_held_cr(DecodeResult& out);
+    void put_text(std::string_view text, std::uint64_t index, DecodeResult& out);
+    void five_track_bad(Frame f, std::uint64_t index, const std::string& what, DecodeResult& out);
+    void note_trailer(std::span<const Frame> frames);  // decode_ending.cpp
     std::size_t note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out);
     void after_blanks(Frame f, FrameKind kind, DecodeResult& out);
     void block_start_blanks(DecodeResult& out);
@@ -105,8 +120,12 @@ private:
     std::uint64_t lines_ = 0;  // LFs decoded so far: a bad frame stands in line lines_ + 1
     bool cyrillic_ = false;
     bool stopped_ = false;
-    int register_ = 0;                    // 5-track: the register the last shift chose
-    std::vector<std::uint64_t> held_cr_;  // 5-track: frames of CRs not yet known to end a line
+    std::uint64_t trailer_ = 0;                  // blank frames since the last punched one
+    std::optional<std::uint64_t> last_punched_;  // 0-based index of the last punched frame
+    std::optional<char> last_char_;              // the last character decoded
+    std::optional<std::uint64_t> last_bad_;      // 0-based index of the last bad frame
+    int register_ = 0;                           // 5-track: the register the last shift chose
+    std::vector<std::uint64_t> held_cr_;         // 5-track: frames of CRs not yet known to end a line
 };
 
 /// The hot loop, for callers that bring their own buffer. Decodes frames into out (room for

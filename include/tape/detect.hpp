@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tape/binary_tape.hpp"
 #include "tape/code.hpp"
 #include "tape/error.hpp"
 #include "tape/frame.hpp"
@@ -23,8 +24,9 @@ enum class TapeKind {
     iso,         ///< ISO 7-bit, even parity on track 8
     eia,         ///< EIA RS-244, odd parity on track 5
     ascii,       ///< ISO/ASCII positions with another parity convention (DEC-era: mark, space, odd)
+    telecode,    ///< a computer maker's 8-track code (the Elliott 920 telecode, parity on track 5)
     five_track,  ///< tracks 6-8 never punched: a 5-track telegraph tape (ITA2, МТК-2)
-    binary,      ///< most frames fail every character code: a computer's binary tape (DEC BIN/RIM)
+    binary,      ///< most frames fail every character code: a computer's binary tape (tape/binary_tape.hpp)
     text,        ///< the bytes are a text program, not frames
     unknown,     ///< none of the above fits well enough
 };
@@ -36,7 +38,7 @@ struct Reading {
     Parity parity = Parity::even;  ///< odd for EIA
     bool operator==(const Reading&) const = default;
 };
-/// "ISO with even parity", "EIA", "ASCII with mark parity".
+/// "ISO with even parity", "EIA", "ASCII with mark parity", "Elliott 920 telecode".
 std::string reading_name(Reading r);
 
 /// The frames decoded one way: what went wrong, what came out.
@@ -59,20 +61,28 @@ struct TapeEvidence {
     std::uint64_t iso_lf = 0;            ///< 0x0A, the ISO end of block
     std::uint64_t eia_eob = 0;           ///< 0x80, the EIA end of block
     bool text = false;                   ///< the frames, taken as the bytes of a file, are clean UTF-8 text with lines
-    /// ISO even, EIA, then ASCII mark, space and odd: each decoded over the frames looked at.
-    std::array<ReadingFit, 5> fits{};
+    /// ISO even, EIA, then ASCII mark, space and odd, then the Elliott 920 telecode: each decoded over
+    /// the frames looked at.
+    std::array<ReadingFit, 6> fits{};
+    std::uint64_t koi7_letters = 0;  ///< ISO letters between SO and SI: КОИ-7 Cyrillic
+    /// A binary loader format that explains the tape (PDP-8 RIM or BIN, PDP-11 absolute loader).
+    std::optional<BinaryTape> binary;
     bool whole_tape = true;  ///< false when only the start of the tape was looked at
 };
 
 struct CodeDetection {
     TapeKind kind = TapeKind::unknown;
-    std::optional<Code> code;        ///< set for ISO (and blank tape) and EIA: the code to decode with
+    std::optional<Code> code;        ///< set for ISO (and blank tape), EIA and a telecode: the code to decode with
     std::optional<Reading> reading;  ///< the reading the tape fits best, when one fits
     bool clean = false;              ///< decoding with `reading` gives no bad frames (or almost none)
     std::string reason;              ///< the verdict with its evidence, in words a machinist understands
     Hint hint{};                     ///< only when following it reads the tape cleanly
     TapeEvidence evidence;
 };
+
+/// True when the ISO reading of the evidence holds КОИ-7 text (letters shifted by SO ... SI), which
+/// reads as Latin letters without --charset koi7.
+bool looks_like_koi7(const TapeEvidence& e);
 
 /// The tape's frames looked at a chunk at a time, in bounded memory, every reading tried at once; the
 /// verdict is the same however the tape is cut.
@@ -83,15 +93,21 @@ public:
     void feed(std::span<const Frame> frames);
     /// Marks the verdict as drawn from the start of the tape only.
     void partial() { evidence_.whole_tape = false; }
+    /// The whole tape was fed: what waits for the tape's end (a binary section without its trailer) counts.
+    void finish() { binary_.finish(); }
     CodeDetection result() const;
-    /// The counts of the tape read one of the five ways (see TapeEvidence::fits).
+    /// The counts of the tape read one of the ways of TapeEvidence::fits.
     TapeSurvey survey(Reading r) const;
 
 private:
+    void note_koi7(Frame f);
+
     TapeEvidence evidence_;
     std::vector<Surveyor> surveyors_;  // one for each of evidence_.fits
-    std::array<std::uint64_t, 5> controls_{};
+    std::array<std::uint64_t, 6> controls_{};
+    BinaryDetector binary_;
     std::uint64_t run_0x80_ = 0;
+    bool shifted_ = false;  // after an SO, before its SI
     bool bytes_are_frames_;
     bool text_ok_;
     TextChecker text_checker_;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -34,7 +35,8 @@ struct EncodeOptions {
 };
 
 /// Each text line is a block: LF or CR LF in the text, LF (EIA: EOB) on tape. A UTF-8 byte-order
-/// mark at the start of the text is skipped.
+/// mark at the start of the text is skipped, and so are DOS end-of-file marks (Ctrl-Z) at its end;
+/// one with text after it is the character SUB.
 /// Throws Error(Errc::bad_text) naming line and column of the first character the code cannot carry,
 /// Error(Errc::usage) for a leader or trailer over max_blank_frames, for a label the font cannot draw or
 /// a leader too short to hold it with label_blank_around blank frames each side (the message says how long).
@@ -42,6 +44,7 @@ struct EncodeOptions {
 /// stands before the first character that needs a register and wherever the register changes, so a
 /// reader in any state reads the tape right. The codes have no case: lower-case letters are punched as
 /// capitals (and read back so). Error(Errc::usage) for a parity or character set with a 5-track code.
+/// The Elliott telecodes punch each character at its value, a table's alias at the value it stands for.
 std::vector<Frame> encode(std::string_view text, const EncodeOptions& options);
 
 /// The same, a chunk at a time, in bounded memory: the text may be cut anywhere (inside a UTF-8
@@ -57,11 +60,14 @@ public:
     void finish(std::vector<Frame>& out);
     /// True once a UTF-8 byte-order mark at the start of the text was skipped.
     bool skipped_byte_order_mark() const { return skipped_bom_; }
+    /// After finish(): where the DOS end-of-file marks (Ctrl-Z) that ended the text stood, unpunched.
+    const std::optional<Position>& skipped_end_of_file_mark() const { return skipped_marks_; }
 
 private:
     void encode_piece(std::string_view text, std::vector<Frame>& out);
     void to_seven_bit(std::string_view text);
     void encode_five_track(std::string_view text, std::vector<Frame>& out);  // encode_five_track.cpp
+    void encode_telecode(std::string_view text, std::vector<Frame>& out);    // encode_telecode.cpp
 
     EncodeOptions options_;
     FrameCode code_;
@@ -71,7 +77,9 @@ private:
     int register_ = -1;     ///< 5-track: the register the last shift frame chose; -1 before the first
     bool at_start_ = true;  ///< nothing of the text taken yet: a byte-order mark may come
     bool skipped_bom_ = false;
-    std::string held_;                           ///< an unfinished character or CR from the end of the last chunk
+    std::string held_;            ///< an unfinished character or CR from the end of the last chunk
+    std::size_t held_marks_ = 0;  ///< DOS end-of-file marks that ended the text so far
+    std::optional<Position> skipped_marks_;
     Position position_{.line = 1, .column = 1};  ///< of the next byte, for messages
     std::string converted_;
     std::vector<std::size_t> origin_;

@@ -58,6 +58,8 @@ public:
     std::string label(int r, Frame f) const;
 
 private:
+    class Reader;  // five_track_table.cpp: parse() in its steps
+
     int registers_ = 0;
     std::array<std::string, max_registers> register_names_{};
     std::array<Frame, max_registers> shift_frames_{};

@@ -31,6 +31,9 @@ public:
     virtual void read(std::span<const std::uint8_t> bytes, std::vector<Frame>& out) = 0;
     /// The file has ended: appends the frames of what was kept.
     virtual void finish(std::vector<Frame>& out) = 0;
+    /// The code the file's header comment names ("# code: mtk2", as this tool's writers put it), once the
+    /// header has been read; nullopt when it names none or the format has no header.
+    virtual std::optional<Code> declared_code() const { return std::nullopt; }
 };
 
 /// Writes one image format a piece at a time; the output is the concatenation of what it appends.

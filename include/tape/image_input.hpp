@@ -37,6 +37,10 @@ public:
     /// A leader label's frames are read as blank tape for the verdict.
     CodeDetection detect(const CodeTable* eia_table = nullptr);
 
+    /// The code the image's header names ("# code: mtk2" in hex5, hex8 and holes files this tool wrote),
+    /// looked for in the first chunk; nullopt when it names none.
+    std::optional<Code> declared_code();
+
     /// The label in the tape's leader (tape/label.hpp), looked for once, before the first next(), in a
     /// read-ahead of the leader and label_search_frames more (given again by next()); nullopt when
     /// there is none or next() had already given frames.

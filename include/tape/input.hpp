@@ -59,9 +59,12 @@ public:
     std::optional<LeaderLabel> label();
 
     /// How an image is decoded: decided on first use, detecting the code when asked (the frames read
-    /// for it are given again). Throws Error(Errc::unknown_code), with the verdict, when the tape is
+    /// for it are given again); a code the image's header names is taken unless it is ISO, whose parity
+    /// the header does not say. Throws Error(Errc::unknown_code), with the verdict, when the tape is
     /// neither ISO nor EIA (another parity, 5-track, binary, a text file).
     const DecodeOptions& decode_options();
+    /// The code an image's header names (tape/image_input.hpp); nullopt for none and for a text program.
+    std::optional<Code> declared_code();
     /// How the code was detected, once it was.
     const std::optional<CodeDetection>& detection() const { return detection_; }
     /// The verdict on an image (detect_code) from a read-ahead of its start, the whole of most tapes
@@ -74,7 +77,8 @@ public:
     /// is. False at the end, or once decoding stopped at a bad frame (out.complete is then false).
     /// A text program that is not clean UTF-8 throws Error(Errc::bad_text) at the byte.
     bool next_text(DecodeResult& out);
-    /// What was noticed on the way that is not wrong (a skipped byte-order mark), for the caller to say.
+    /// What was noticed on the way that is not wrong (a skipped byte-order mark, a text ending with DOS
+    /// end-of-file marks), for the caller to say: those known once the input is opened are there then.
     const std::vector<Diagnostic>& notes() const { return notes_; }
     /// The decoder of an image, for the counts of bad frames; nullptr before next_text or for text.
     const Decoder* decoder() const { return decoder_.get(); }
@@ -99,6 +103,7 @@ private:
     std::unique_ptr<Decoder> decoder_;
     std::vector<Diagnostic> notes_;
     bool ended_ = false;
+    bool mark_noted_ = false;            // the DOS end-of-file mark was noted when the text was opened
     std::uint64_t decoded_frames_ = 0;   // frames given to the decoder: where the next chunk starts
     std::vector<Frame> unlabelled_;      // a chunk with the label's frames blanked
     std::vector<DoubtfulFrame> doubts_;  // from the doubts file beside the image, by frame

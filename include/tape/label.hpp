@@ -48,18 +48,31 @@ std::vector<Frame> label_frames(std::string_view text, const FrameCode& code);
 /// empty when the font has no such character.
 std::vector<std::string> label_glyph(char32_t c);
 
+/// Whose letters a label is punched in.
+enum class LabelFont {
+    letters,  ///< this tool's font (the layout above): read back as text
+    title,    ///< another's: a title of letters of holes (as on the Elliott 900 archive's tapes), found, not read
+};
+
 /// A label found in a tape's leader.
 struct LeaderLabel {
-    std::string text;          ///< UTF-8, capitals, as punched (spaces kept, none added)
+    std::string text;          ///< UTF-8, capitals, as punched (spaces kept, none added); empty for a title
     std::uint64_t first = 0;   ///< 0-based index of its first frame
     std::uint64_t frames = 0;  ///< how many frames it takes
     Code code = Code::iso;     ///< the layout it was punched in
+    LabelFont font = LabelFont::letters;
 };
 
 /// The label in the leader of a tape whose first frames are `frames`: after the blank frames at the
-/// start, a whole label (ISO or EIA layout) followed by a blank frame.
-/// nullopt when the tape does not start so. Never throws.
+/// start, a whole label (ISO or EIA layout) followed by a blank frame; else a title in another font (see
+/// find_title). nullopt when the tape does not start so. Never throws.
 std::optional<LeaderLabel> find_label(std::span<const Frame> frames);
+
+/// A title in another font at the start of the tape: after the blank leader, at least three glyphs of
+/// one to eight frames with one to fifteen blank frames between them, then blank tape again (sixteen
+/// frames or more). Its frames are pictures, not characters: they hold both even and odd numbers of holes
+/// and columns that are control characters no text has. nullopt when there is none.
+std::optional<LeaderLabel> find_title(std::span<const Frame> frames);
 
 /// frames (a tape's frames from 0-based index `at` on) with those of label made blank: a copy in
 /// scratch when any of them is in the label, else frames itself. What decoding reads instead of a label.

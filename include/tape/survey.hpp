@@ -36,7 +36,7 @@ struct TapeSurvey {
     std::uint64_t blank_inside = 0;    ///< blank frames between leader and trailer
     std::uint64_t parity_errors = 0;   ///< frames failing the code's parity rule
     std::uint64_t not_in_code = 0;     ///< frames with good parity that are no character of the code
-    std::uint64_t program_starts = 0;  ///< '%' marks (a run such as "%%" counts once)
+    std::uint64_t program_starts = 0;  ///< '%' marks that a program follows (not the closing one; "%%" once)
     std::uint64_t end_of_blocks = 0;   ///< LF (EIA: EOB)
     ParityCounts parity;               ///< what the punched frames fit
 };
@@ -56,7 +56,7 @@ private:
     TapeSurvey s_;
     std::uint64_t blank_run_ = 0;  // blank frames since the last punched one
     bool punched_ = false;         // a punched frame seen: blanks from now on are inside or trailer
-    bool after_percent_ = false;
+    bool percent_ = false;         // a '%' with no program after it yet
 };
 
 /// Counts the tape's frames as read with code. Never throws on bad frames: they are counted.

@@ -1,12 +1,14 @@
 // Code tables as data, and the frame code lookup tables built from them.
 #include "tape/code.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <sstream>
 #include <vector>
 
 #include "tape/error.hpp"
 #include "tape/five_track.hpp"
+#include "tape/telecode.hpp"
 
 namespace tape {
 namespace detail {
@@ -76,8 +78,17 @@ std::string_view code_name(Code c) {
             return "ita2";
         case Code::mtk2:
             return "mtk2";
+        case Code::elliott900:
+            return "elliott900";
+        case Code::elliott920:
+            return "elliott920";
     }
     return "?";
+}
+
+std::span<const Code> all_codes() {
+    static constexpr Code codes[] = {Code::iso, Code::eia, Code::ita2, Code::mtk2, Code::elliott900, Code::elliott920};
+    return codes;
 }
 
 std::string_view parity_name(Parity p) {
@@ -97,7 +108,7 @@ std::string_view parity_name(Parity p) {
 }
 
 std::optional<Code> parse_code(std::string_view name) {
-    for (Code c : {Code::iso, Code::eia, Code::ita2, Code::mtk2})
+    for (Code c : all_codes())
         if (code_name(c) == name) return c;
     return std::nullopt;
 }
@@ -166,6 +177,7 @@ std::optional<char> CodeTable::char_for(Frame f) const {
 
 FrameCode FrameCode::iso(Parity parity) {
     FrameCode fc;
+    fc.frame_.fill(none);
     fc.code_ = Code::iso;
     fc.parity_ = parity;
     for (int f = 0; f < 256; ++f) {
@@ -224,6 +236,7 @@ FrameCode FrameCode::iso(Parity parity) {
 
 FrameCode FrameCode::eia(const CodeTable& table) {
     FrameCode fc;
+    fc.frame_.fill(none);
     fc.code_ = Code::eia;
     fc.parity_ = Parity::odd;
     auto del = table.frame_for(0x7F);
@@ -269,14 +282,46 @@ FrameCode FrameCode::five_track(Code code) {
     return fc;
 }
 
+FrameCode FrameCode::telecode(Code code) {
+    using Kind = TelecodeTable::Kind;
+    FrameCode fc;
+    fc.frame_.fill(none);
+    fc.code_ = code;
+    fc.parity_ = Parity::even;
+    fc.telecode_ = &TelecodeTable::builtin(code);
+    const auto& wide = fc.telecode_->wide_characters();
+    for (int f = 0; f < 256; ++f) {
+        const auto& e = fc.telecode_->entry(static_cast<Frame>(f));
+        FrameKind k = e.kind == Kind::blank       ? FrameKind::blank
+                      : e.kind == Kind::rubout    ? FrameKind::rubout
+                      : e.kind == Kind::character ? FrameKind::character
+                                                  : FrameKind::not_in_code;
+        if (hole_count(static_cast<Frame>(f)) % 2) k = FrameKind::parity_error;
+        fc.kind_[f] = static_cast<std::int8_t>(k);
+        if (k != FrameKind::character) continue;
+        auto at = std::find(wide.begin(), wide.end(), e.text);
+        auto byte = at == wide.end() ? static_cast<unsigned char>(e.text[0]) : 0x81 + (at - wide.begin());
+        fc.char_[f] = static_cast<std::uint8_t>(byte);
+        fc.frame_[byte] = static_cast<std::int16_t>(f);
+    }
+    return fc;
+}
+
+std::string_view FrameCode::wide_character(unsigned char byte) const {
+    if (telecode_ && byte > 0x80 && byte - 0x81U < telecode_->wide_characters().size())
+        return telecode_->wide_characters()[byte - 0x81];
+    return {};
+}
+
 FrameCode FrameCode::make(Code code, Parity parity, const CodeTable* eia_table) {
     if (is_five_track(code)) return five_track(code);
+    if (is_telecode(code)) return telecode(code);
     if (code == Code::iso) return iso(parity);
     return eia(eia_table ? *eia_table : CodeTable::builtin_eia());
 }
 
 std::optional<Frame> FrameCode::frame_for(unsigned char c) const {
-    if (c >= 128 || frame_[c] == none) return std::nullopt;
+    if (frame_[c] == none) return std::nullopt;
     return static_cast<Frame>(frame_[c]);
 }
 
@@ -290,6 +335,7 @@ std::string FrameCode::label(Frame f) const {
     }
     switch (kind(f)) {
         case FrameKind::character:
+            if (auto wide = wide_character(char_[f]); !wide.empty()) return std::string(wide);
             return char_label(character(f));
         case FrameKind::blank:
             return "NUL";
@@ -298,7 +344,9 @@ std::string FrameCode::label(Frame f) const {
         case FrameKind::parity_error:
             return "parity error";
         case FrameKind::not_in_code:
-            return code_ == Code::eia ? "not an EIA character" : "not an ISO character";
+            return code_ == Code::eia ? "not an EIA character"
+                   : telecode_        ? "not in the " + telecode_->name()
+                                      : "not an ISO character";
     }
     return "?";
 }

@@ -145,6 +145,10 @@ Decoder::Decoder(const DecodeOptions& options)
         throw Error(Errc::usage, "5-track codes carry no parity");
     if (is_five_track(options.code) && options.charset != Charset::ascii)
         throw Error(Errc::usage, "КОИ-7 is a character set of the 7-bit code; МТК-2 has its own Russian register");
+    if (is_telecode(options.code) && (options.parity != Parity::even || options.charset != Charset::ascii))
+        throw Error(Errc::usage, "the Elliott telecodes have a parity and a character set of their own");
+    if (options.unshift_on_space && options.code != Code::ita2)
+        throw Error(Errc::usage, "unshift-on-space is a habit of ITA2 teleprinters; for other codes it is not known");
 }
 
 std::map<Errc, std::uint64_t> Decoder::unlisted() const {
@@ -162,11 +166,13 @@ std::map<Errc, std::uint64_t> Decoder::unlisted() const {
 void Decoder::note_bad(Frame f, std::uint64_t index, std::uint64_t line, DecodeResult& out) {
     std::uint64_t& seen = code_.kind(f) == FrameKind::parity_error ? parity_seen_ : other_seen_;
     ++seen;
+    last_bad_ = index;
     if (options_.max_diagnostics == 0 || seen <= options_.max_diagnostics)
         out.diagnostics.push_back(bad_frame_diagnostic(code_, f, index, line));
 }
 
-// Only КОИ-7 text and text with a bad frame marked need this second pass; plain text is final as decoded.
+// Only КОИ-7 text, a telecode's text (its characters that are not ASCII) and text with a bad frame marked
+// need this second pass; plain text is final as decoded.
 void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t positions_from) {
     std::string_view added(out.text.data() + from, out.text.size() - from);
     bool positions = options_.positions;
@@ -176,16 +182,19 @@ void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t posit
     for (std::size_t i = 0; i < added.size(); ++i) {
         auto c = static_cast<unsigned char>(added[i]);
         std::string_view piece(&added[i], 1);
-        if (c == static_cast<unsigned char>(bad_sentinel))
+        if (c == static_cast<unsigned char>(bad_sentinel)) {
             piece = bad_frame_marker;
-        else if (options_.charset == Charset::koi7 && c == 0x0E) {
+        } else if (options_.charset == Charset::koi7 && c == 0x0E) {
             cyrillic_ = true;
             continue;
         } else if (options_.charset == Charset::koi7 && c == 0x0F) {
             cyrillic_ = false;
             continue;
-        } else if (cyrillic_ && !koi7_cyrillic(c).empty())
+        } else if (cyrillic_ && !koi7_cyrillic(c).empty()) {
             piece = koi7_cyrillic(c);
+        } else if (auto wide = code_.wide_character(c); !wide.empty()) {
+            piece = wide;
+        }
         text += piece;
         if (positions) pos.insert(pos.end(), piece.size(), out.frame_of[positions_from + i]);
     }
@@ -269,6 +278,7 @@ void Decoder::blank_run(std::uint64_t from, std::uint64_t n, const std::string& 
 
 bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     if (stopped_) return false;
+    note_trailer(frames);
     if (code_.five_track_table()) return feed_five_track(frames, out);  // once a chunk: ISO and EIA pay nothing
     std::size_t diagnostics_from = note_blanks(frames, next_index_, out);
     std::size_t from = out.text.size(), positions_from = out.frame_of.size();
@@ -322,10 +332,17 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     line_at(w);
     out.text.resize(w);
     next_index_ += frames.size();
-    if (stopped_) out.complete = false;
-    if (out.diagnostics.size() > diagnostics_from) in_tape_order(out.diagnostics, diagnostics_from, stopped_);
-    if (marked || options_.charset == Charset::koi7) finish_text(out, from, positions_from);
+    settle_chunk(out, ChunkStart{from, positions_from, diagnostics_from}, marked);
     return !stopped_;
+}
+
+// A chunk decoded: what it leaves for the tape's end, its findings in tape order, its text finished.
+void Decoder::settle_chunk(DecodeResult& out, ChunkStart at, bool marked) {
+    if (stopped_) out.complete = false;
+    // As decoded: a telecode's character is still its byte.
+    if (out.text.size() > at.text) last_char_ = out.text.back();
+    if (out.diagnostics.size() > at.diagnostics) in_tape_order(out.diagnostics, at.diagnostics, stopped_);
+    if (marked || options_.charset == Charset::koi7 || code_.telecode_table()) finish_text(out, at.text, at.positions);
 }
 
 DecodeResult decode(std::span<const Frame> frames, const DecodeOptions& options) {

@@ -4,9 +4,9 @@
 namespace tape {
 namespace {
 
-constexpr std::array<Reading, 5> readings = {Reading{Code::iso, Parity::even}, Reading{Code::eia, Parity::odd},
+constexpr std::array<Reading, 6> readings = {Reading{Code::iso, Parity::even}, Reading{Code::eia, Parity::odd},
                                              Reading{Code::iso, Parity::mark}, Reading{Code::iso, Parity::space},
-                                             Reading{Code::iso, Parity::odd}};
+                                             Reading{Code::iso, Parity::odd},  Reading{Code::elliott920, Parity::even}};
 
 // Control characters that turn up on tapes of text: blank and rubout, BS, HT, LF, FF, CR, the КОИ-7
 // shifts SO/SI and the Teletype's reader and punch controls DC1-DC4. Any other (BEL, ESC...) in
@@ -46,6 +46,7 @@ void Detector::feed(std::span<const Frame> frames) {
     TapeEvidence& e = evidence_;
     e.frames += frames.size();
     for (auto& s : surveyors_) s.feed(frames);
+    binary_.feed(frames);
     ParityCounts p = count_parity(frames);
     e.parity.frames += p.frames;
     e.parity.even += p.even;
@@ -65,9 +66,20 @@ void Detector::feed(std::span<const Frame> frames) {
         if (!text_control(static_cast<char>(f & 0x7F)))
             for (std::size_t i = 0; i < readings.size(); ++i)
                 if (readings[i].code == Code::iso && surveyors_[i].kind(f) == FrameKind::character) ++controls_[i];
+        note_koi7(f);
     }
     if (text_ok_ && !frames.empty()) text_ok_ = !text_checker_.check(frames);
 }
+
+// КОИ-7 shifts Russian letters with SO ... SI; read as ASCII, the letters between them look Latin.
+void Detector::note_koi7(Frame f) {
+    if (surveyors_[0].kind(f) != FrameKind::character) return;
+    char c = static_cast<char>(f & 0x7F);
+    if (c == 0x0E || c == 0x0F || c == '\n') shifted_ = c == 0x0E;
+    evidence_.koi7_letters += shifted_ && c >= 0x40 && c <= 0x7E;
+}
+
+bool looks_like_koi7(const TapeEvidence& e) { return e.koi7_letters >= 3; }
 
 TapeSurvey Detector::survey(Reading r) const {
     for (std::size_t i = 0; i < readings.size(); ++i)
@@ -78,6 +90,7 @@ TapeSurvey Detector::survey(Reading r) const {
 CodeDetection detect_code(std::span<const Frame> frames, const CodeTable* eia_table) {
     Detector d(eia_table);
     d.feed(frames);
+    d.finish();
     return d.result();
 }
 

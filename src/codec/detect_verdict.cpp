@@ -2,14 +2,22 @@
 #include <algorithm>
 
 #include "tape/detect.hpp"
+#include "tape/telecode.hpp"
 
 namespace tape {
 namespace {
 
-// A reading fits when at most one frame in ten fails it or decodes to a control no text holds (a
-// damaged tape still fits: decoding then names each bad frame); it is clean when decoding that way
+// A reading fits when at most one frame in ten fails it and there are not many stray controls (more than
+// one in fifty, and ten at least): a damaged tape still fits, decoding then names each bad frame, but a
+// tape of another code read as ISO is full of controls no text holds. It is clean when decoding that way
 // finds no bad frame, or one in a thousand, and almost no stray controls.
-bool fits(std::uint64_t score, std::uint64_t frames) { return score * 10 <= frames; }
+constexpr std::uint64_t many_controls = 10;
+bool too_many_controls(const ReadingFit& f, std::uint64_t frames) {
+    return f.controls >= many_controls && f.controls * 50 > frames;
+}
+bool fits(const ReadingFit& f, std::uint64_t frames) {
+    return (f.bad_frames + f.controls) * 10 <= frames && !too_many_controls(f, frames);
+}
 bool clean(const ReadingFit& f, std::uint64_t frames) {
     return f.bad_frames * 1000 <= frames && f.controls * 20 <= frames;
 }
@@ -33,7 +41,7 @@ std::string counts_text(const TapeEvidence& e) {
 }
 
 Hint hint_for(Reading r) {
-    if (r.code == Code::eia) return Hint{Hint::Action::use_code, "eia"};
+    if (r.code != Code::iso) return Hint{Hint::Action::use_code, code_name(r.code)};
     if (r.parity == Parity::even) return Hint{Hint::Action::use_code, "iso"};
     return Hint{Hint::Action::use_iso_parity, parity_name(r.parity)};
 }
@@ -51,6 +59,102 @@ std::string parity_words(Parity p) {
     }
 }
 
+CodeDetection blank_verdict(CodeDetection d) {
+    d.kind = TapeKind::blank;
+    d.code = Code::iso;
+    d.reason = "blank tape: none of the " + frames_text(d.evidence.frames) + " is punched; read as ISO";
+    return d;
+}
+
+CodeDetection text_verdict(CodeDetection d) {
+    const TapeEvidence& e = d.evidence;
+    d.kind = TapeKind::text;
+    d.reason = "this is a text program, not a tape image: " + n(e.frames) + " bytes of UTF-8 text in " + n(e.iso_lf) +
+               " lines, with no blank leader and no parity on track 8";
+    d.hint = Hint{Hint::Action::encode_text};
+    return d;
+}
+
+CodeDetection five_track_verdict(CodeDetection d) {
+    const TapeEvidence& e = d.evidence;
+    d.kind = TapeKind::five_track;
+    d.reason = "5-track tape: none of the " + n(e.punched) + " punched frames has a hole in tracks 6, 7 or 8; as ISO " +
+               n(e.fits[0].bad_frames) + " of them fail even parity, as EIA " + n(e.fits[1].bad_frames) + " fail; " +
+               counts_text(e);
+    d.hint = Hint{Hint::Action::use_five_track_code};
+    return d;
+}
+
+// The tape read as a character code that fits it.
+CodeDetection reading_verdict(CodeDetection d, const ReadingFit& best, std::uint64_t frames) {
+    const TapeEvidence& e = d.evidence;
+    Reading r = best.reading;
+    d.reading = r;
+    d.clean = clean(best, frames);
+    std::string damage = best.bad_frames ? ", " + n(best.bad_frames) + " bad frame(s)" : "";
+    if (r.code == Code::eia) {
+        d.kind = TapeKind::eia;
+        d.code = Code::eia;
+        d.reason = "EIA: odd parity on track 5 in " + n(e.parity.odd) + " of " + n(e.punched) + " punched frames" +
+                   damage + ", end of block " + n(best.end_of_blocks) + " track 8 alone, " + n(e.iso_lf) + " LF (ISO)" +
+                   whole_text(e);
+    } else if (is_telecode(r.code)) {
+        d.kind = TapeKind::telecode;
+        d.code = r.code;
+        // Decoding with auto takes this code: no advice to give it.
+        d.reason = reading_name(r) + ", not ISO: " + n(e.punched - best.bad_frames) + " of " + n(e.punched) +
+                   " punched frames are its characters, " + n(best.end_of_blocks) + " newlines; read as ISO " +
+                   n(e.fits[0].controls) + " of them would be control characters no text holds" + whole_text(e);
+    } else if (r.parity == Parity::even) {
+        d.kind = TapeKind::iso;
+        d.code = Code::iso;
+        d.reason = "ISO: even parity on track 8 in " + n(e.parity.even) + " of " + n(e.punched) + " punched frames" +
+                   damage + ", end of block " + n(best.end_of_blocks) + " LF, " + n(e.eia_eob) +
+                   " track 8 alone (EIA)" + whole_text(e);
+    } else {
+        d.kind = TapeKind::ascii;
+        d.reason = "neither ISO nor EIA: an ASCII tape with " + parity_words(r.parity) + ": " +
+                   n(e.punched - e.parity.misfits(r.parity)) + " of " + n(e.punched) + " punched frames fit it, " +
+                   n(best.end_of_blocks) + " line ends (LF)";
+        if (!d.clean)
+            d.reason += "; but read that way " + n(best.bad_frames) + " frame(s) fail and " + n(best.controls) +
+                        " are control characters";
+        d.reason += "; " + counts_text(e);
+        if (d.clean) d.hint = hint_for(r);
+    }
+    return d;
+}
+
+// A binary loader format explains the tape: its checksums (or RIM's pairs) say so.
+CodeDetection binary_verdict(CodeDetection d) {
+    const TapeEvidence& e = d.evidence;
+    d.kind = TapeKind::binary;
+    d.reason = "binary tape, not a character code: " + e.binary->summary() + "; " + counts_text(e);
+    return d;
+}
+
+// No character code fits: a binary tape, or a code the tool does not know.
+CodeDetection no_code_verdict(CodeDetection d, const ReadingFit& best, std::uint64_t frames) {
+    const TapeEvidence& e = d.evidence;
+    std::string closest = "no character code fits; the closest, " + reading_name(best.reading) + ", fails " +
+                          n(score(best)) + " of " + frames_text(frames);
+    if (too_many_controls(best, frames) && best.bad_frames * 10 <= frames)
+        closest = "not " + reading_name(best.reading) + ": too many control characters (" + n(best.controls) + " of " +
+                  frames_text(frames) + " are controls no text holds, such as BEL or ESC)";
+    if (score(best) * 2 > frames || e.longest_0x80_run >= leader_run) {
+        d.kind = TapeKind::binary;
+        d.reason = "binary tape, not a character code: " + closest;
+        if (e.longest_0x80_run >= leader_run)
+            d.reason += "; " + n(e.longest_0x80_run) +
+                        " frames with track 8 alone in a row, the leader of DEC BIN and RIM loader tapes";
+        d.reason += "; " + counts_text(e);
+        return d;
+    }
+    d.kind = TapeKind::unknown;
+    d.reason = "neither ISO nor EIA: " + closest + "; " + counts_text(e);
+    return d;
+}
+
 }  // namespace
 
 std::string_view tape_kind_name(TapeKind k) {
@@ -63,6 +167,8 @@ std::string_view tape_kind_name(TapeKind k) {
             return "eia";
         case TapeKind::ascii:
             return "ascii";
+        case TapeKind::telecode:
+            return "telecode";
         case TapeKind::five_track:
             return "5-track";
         case TapeKind::binary:
@@ -77,6 +183,7 @@ std::string_view tape_kind_name(TapeKind k) {
 
 std::string reading_name(Reading r) {
     if (r.code == Code::eia) return "EIA";
+    if (is_telecode(r.code)) return TelecodeTable::builtin(r.code).name();
     if (r.parity == Parity::even) return "ISO with even parity";
     return "ASCII with " + std::string(parity_name(r.parity)) + " parity";
 }
@@ -92,82 +199,23 @@ CodeDetection Detector::result() const {
         f.controls = controls_[i];
         f.end_of_blocks = s.end_of_blocks;
         f.program_starts = s.program_starts;
-        if (f.reading.code == Code::eia && e.longest_0x80_run >= leader_run) f.bad_frames += e.longest_0x80_run;
     }
     e.text = bytes_are_frames_ && text_ok_ && e.iso_lf > 0 && e.punched == e.frames;
-    std::string counts = counts_text(e);
     const std::uint64_t frames = std::max<std::uint64_t>(e.significant, 1);
-    const ReadingFit& iso = e.fits[0];
-    const ReadingFit& eia = e.fits[1];
     const ReadingFit* best = &e.fits[0];
     for (const auto& f : e.fits)
         if (score(f) < score(*best)) best = &f;
 
-    if (e.punched == 0) {
-        d.kind = TapeKind::blank;
-        d.code = Code::iso;
-        d.reason = "blank tape: none of the " + frames_text(e.frames) + " is punched; read as ISO";
-        return d;
+    if (e.punched == 0) return blank_verdict(std::move(d));
+    if (e.text) return text_verdict(std::move(d));
+    if (e.five_track == e.punched && !clean(e.fits[0], frames) && !clean(e.fits[1], frames))
+        return five_track_verdict(std::move(d));
+    if (const BinaryTape* binary = binary_.tape()) {
+        e.binary = *binary;
+        return binary_verdict(std::move(d));
     }
-    if (e.text) {
-        d.kind = TapeKind::text;
-        d.reason = "this is a text program, not a tape image: " + n(e.frames) + " bytes of UTF-8 text in " +
-                   n(e.iso_lf) + " lines, with no blank leader and no parity on track 8";
-        d.hint = Hint{Hint::Action::encode_text};
-        return d;
-    }
-    if (e.five_track == e.punched && !clean(iso, frames) && !clean(eia, frames)) {
-        d.kind = TapeKind::five_track;
-        d.reason = "5-track tape: none of the " + n(e.punched) +
-                   " punched frames has a hole in tracks 6, 7 or 8; as ISO " + n(iso.bad_frames) +
-                   " of them fail even parity, as EIA " + n(eia.bad_frames) + " fail; " + counts;
-        d.hint = Hint{Hint::Action::use_five_track_code};
-        return d;
-    }
-    if (fits(score(*best), frames)) {
-        Reading r = best->reading;
-        d.reading = r;
-        d.clean = clean(*best, frames);
-        std::string damage = best->bad_frames ? ", " + n(best->bad_frames) + " bad frame(s)" : "";
-        if (r.code == Code::eia) {
-            d.kind = TapeKind::eia;
-            d.code = Code::eia;
-            d.reason = "EIA: odd parity on track 5 in " + n(e.parity.odd) + " of " + n(e.punched) + " punched frames" +
-                       damage + ", end of block " + n(best->end_of_blocks) + " track 8 alone, " + n(e.iso_lf) +
-                       " LF (ISO)" + whole_text(e);
-        } else if (r.parity == Parity::even) {
-            d.kind = TapeKind::iso;
-            d.code = Code::iso;
-            d.reason = "ISO: even parity on track 8 in " + n(e.parity.even) + " of " + n(e.punched) +
-                       " punched frames" + damage + ", end of block " + n(best->end_of_blocks) + " LF, " +
-                       n(e.eia_eob) + " track 8 alone (EIA)" + whole_text(e);
-        } else {
-            d.kind = TapeKind::ascii;
-            d.reason = "neither ISO nor EIA: an ASCII tape with " + parity_words(r.parity) + ": " +
-                       n(e.punched - e.parity.misfits(r.parity)) + " of " + n(e.punched) + " punched frames fit it, " +
-                       n(best->end_of_blocks) + " line ends (LF)";
-            if (!d.clean)
-                d.reason += "; but read that way " + n(best->bad_frames) + " frame(s) fail and " + n(best->controls) +
-                            " are control characters";
-            d.reason += "; " + counts;
-            if (d.clean) d.hint = hint_for(r);
-        }
-        return d;
-    }
-    std::string closest = "no character code fits; the closest, " + reading_name(best->reading) + ", fails " +
-                          n(score(*best)) + " of " + frames_text(frames);
-    if (score(*best) * 2 > frames || e.longest_0x80_run >= leader_run) {
-        d.kind = TapeKind::binary;
-        d.reason = "binary tape, not a character code: " + closest;
-        if (e.longest_0x80_run >= leader_run)
-            d.reason += "; " + n(e.longest_0x80_run) +
-                        " frames with track 8 alone in a row, the leader of DEC BIN and RIM loader tapes";
-        d.reason += "; " + counts;
-        return d;
-    }
-    d.kind = TapeKind::unknown;
-    d.reason = "neither ISO nor EIA: " + closest + "; " + counts;
-    return d;
+    if (fits(*best, frames)) return reading_verdict(std::move(d), *best, frames);
+    return no_code_verdict(std::move(d), *best, frames);
 }
 
 std::optional<Diagnostic> other_reading(const CodeDetection& d, Reading forced) {

@@ -253,6 +253,8 @@ Encoder::Encoder(const EncodeOptions& options)
         throw Error(Errc::usage, "5-track codes carry no parity");
     if (is_five_track(options.code) && options.charset != Charset::ascii)
         throw Error(Errc::usage, "КОИ-7 is a character set of the 7-bit code; МТК-2 has its own Russian register");
+    if (is_telecode(options.code) && (options.parity != Parity::even || options.charset != Charset::ascii))
+        throw Error(Errc::usage, "the Elliott telecodes have a parity and a character set of their own");
     if (!options.label.empty()) {
         label_ = label_frames(options.label, code_);
         std::size_t need = label_.size() + 2 * label_blank_around;
@@ -316,6 +318,10 @@ void Encoder::encode_piece(std::string_view text, std::vector<Frame>& out) {
         encode_five_track(text, out);  // once a piece: ISO and EIA pay nothing
         return;
     }
+    if (code_.telecode_table()) {
+        encode_telecode(text, out);
+        return;
+    }
     if (plain_iso_) {
         // The plain start in one pass; the rest (an error, or text from the first NUL, DEL or non-ASCII
         // byte on) goes the general way below, from the position reached.
@@ -365,12 +371,27 @@ void Encoder::feed(std::string_view text, std::vector<Frame>& out) {
             at_start_ = false;  // else the start of one, cut by the chunk's end: held below, looked at again
         }
     }
+    // DOS end-of-file marks wait: at the end of the text they are not punched; text after them makes
+    // them SUB characters. What stands before them is whole (nothing can follow it but marks).
+    auto bytes = std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
+    std::size_t marks_at = dos_end_of_file_at(bytes);
+    if (held_marks_ && marks_at > 0) {
+        encode_piece(std::string(held_marks_, static_cast<char>(dos_end_of_file)), out);
+        held_marks_ = 0;
+    }
+    if (marks_at < text.size()) {
+        encode_piece(text.substr(0, marks_at), out);
+        held_marks_ += text.size() - marks_at;
+        return;
+    }
     std::size_t keep = unfinished_tail(text);
     encode_piece(text.substr(0, text.size() - keep), out);
     held_ = std::string(text.substr(text.size() - keep));
 }
 
 void Encoder::finish(std::vector<Frame>& out) {
+    if (held_marks_) skipped_marks_ = position_;
+    held_marks_ = 0;
     std::string rest = std::move(held_);
     held_.clear();
     encode_piece(rest, out);  // a lone CR at the very end is the CR character; a cut UTF-8 character an error

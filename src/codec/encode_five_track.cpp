@@ -68,6 +68,9 @@ void Encoder::encode_five_track(std::string_view text, std::vector<Frame>& out) 
         if (cp && !place) place = table.place_of(capital(*cp));
         if (!place) cannot_punch(ch, position_, options_.code);
         punch(*place);
+        // Teleprinters with unshift-on-space return to letters at a space: the figure after it gets its
+        // shift again, so that the tape reads the same on them and on the others.
+        if (*cp == U' ' && register_ >= 0 && table.register_name(register_) == "FIGS") register_ = -1;
         ++*position_.column;
         i += ch.size();
     }

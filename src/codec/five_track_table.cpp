@@ -37,79 +37,86 @@ std::string holes_text(Frame f) {
 
 }  // namespace
 
-FiveTrackTable FiveTrackTable::parse(std::string_view text) {
+// A table's text read line by line into the table, then checked whole: the shifts, where each character
+// is punched, the aliases. Every complaint names the line it concerns, or none.
+class FiveTrackTable::Reader {
+public:
     FiveTrackTable t;
-    std::array<std::array<std::uint64_t, five_track_frames>, max_registers> given{};  // the line, 0: not given
-    std::istringstream in{std::string(text)};
-    std::string line;
     std::uint64_t line_no = 0;
-    auto fail = [&](const std::string& why) { throw Error(Errc::bad_table, Position{.line = line_no}, why); };
-    // A register's name as a shift entry, or -1.
-    auto register_of = [&](std::string_view name) {
-        for (int r = 0; r < t.registers_; ++r)
-            if (t.register_names_[static_cast<std::size_t>(r)] == name) return r;
-        return -1;
-    };
-    std::vector<std::pair<std::string, std::string>> aliases;
-    std::vector<std::uint64_t> alias_lines;
-    while (std::getline(in, line)) {
-        ++line_no;
-        std::istringstream fields(line);
-        std::vector<std::string> tokens;
-        for (std::string tok; fields >> tok;) {
-            if (tok[0] == '#') break;
-            tokens.push_back(tok);
-        }
-        if (tokens.empty()) continue;
-        if (tokens[0] == "registers") {
-            if (t.registers_ != 0) fail("the registers are given twice");
-            if (tokens.size() < 2 || tokens.size() > max_registers + 1) fail("a code has one to three registers");
-            for (std::size_t i = 1; i < tokens.size(); ++i) {
-                bool known = false;
-                for (auto k : known_registers) known |= k == tokens[i];
-                if (!known) fail("'" + tokens[i] + "' is no register: LTRS, FIGS or RUS");
-                if (register_of(tokens[i]) >= 0) fail("register " + tokens[i] + " is given twice");
-                t.register_names_[static_cast<std::size_t>(t.registers_++)] = tokens[i];
-            }
-            continue;
-        }
+
+    [[noreturn]] void fail(const std::string& why) const {
+        throw Error(Errc::bad_table, Position{.line = line_no}, why);
+    }
+
+    void line(const std::vector<std::string>& tokens) {
+        if (tokens[0] == "registers") return registers(tokens);
         if (t.registers_ == 0) fail("the registers line must come before the frames");
         if (tokens[0] == "alias") {
             if (tokens.size() != 3) fail("an alias is: alias CHAR OTHER");
-            aliases.emplace_back(tokens[1], tokens[2]);
-            alias_lines.push_back(line_no);
-            continue;
+            aliases_.emplace_back(tokens[1], tokens[2]);
+            alias_lines_.push_back(line_no);
+            return;
         }
+        frame(tokens);
+    }
+
+    void check_shifts();
+    void place_characters();
+    void apply_aliases();
+
+private:
+    // A register's name as a shift entry, or -1.
+    int register_of(std::string_view name) const {
+        for (int r = 0; r < t.registers_; ++r)
+            if (t.register_names_[static_cast<std::size_t>(r)] == name) return r;
+        return -1;
+    }
+
+    void registers(const std::vector<std::string>& tokens) {
+        if (t.registers_ != 0) fail("the registers are given twice");
+        if (tokens.size() < 2 || tokens.size() > max_registers + 1) fail("a code has one to three registers");
+        for (std::size_t i = 1; i < tokens.size(); ++i) {
+            bool known = false;
+            for (auto k : known_registers) known |= k == tokens[i];
+            if (!known) fail("'" + tokens[i] + "' is no register: LTRS, FIGS or RUS");
+            if (register_of(tokens[i]) >= 0) fail("register " + tokens[i] + " is given twice");
+            t.register_names_[static_cast<std::size_t>(t.registers_++)] = tokens[i];
+        }
+    }
+
+    Meaning meaning_of(const std::string& e) const {
+        if (e == "SP" || e == "CR" || e == "LF") return {Kind::character, 0, e == "SP" ? " " : e == "CR" ? "\r" : "\n"};
+        if (e == "BLANK") return {Kind::blank, 0, ""};
+        if (e == "NONE") return {Kind::none, 0, ""};
+        if (int s = register_of(e); s >= 0) return {Kind::shift, static_cast<std::uint8_t>(s), ""};
+        if (utf8::length(e, 0) == e.size() && utf8::decode(e)) return {Kind::character, 0, e};
+        fail("'" + e + "' is neither one character nor SP CR LF BLANK NONE or a register name");
+    }
+
+    void frame(const std::vector<std::string>& tokens) {
         auto f = parse_holes(tokens[0]);
         if (!f) fail("'" + tokens[0] + "' is not five holes 0/1 for tracks 1..5, such as 10000");
         std::size_t entries = tokens.size() - 1;
         if (entries != 1 && entries != static_cast<std::size_t>(t.registers_))
             fail("frame " + tokens[0] + " needs one entry for every register, or one for all");
         for (int r = 0; r < t.registers_; ++r) {
-            const std::string& e = tokens[entries == 1 ? 1 : static_cast<std::size_t>(r) + 1];
             auto ur = static_cast<std::size_t>(r);
             if (given[ur][*f]) fail("frame " + tokens[0] + " is given twice");
             given[ur][*f] = line_no;
-            Meaning m;
-            if (e == "SP" || e == "CR" || e == "LF") {
-                m = {Kind::character, 0, e == "SP" ? " " : e == "CR" ? "\r" : "\n"};
-            } else if (e == "BLANK") {
-                m.kind = Kind::blank;
-            } else if (e == "NONE") {
-                m.kind = Kind::none;
-            } else if (int s = register_of(e); s >= 0) {
-                m = {Kind::shift, static_cast<std::uint8_t>(s), ""};
-            } else if (utf8::length(e, 0) == e.size() && utf8::decode(e)) {
-                m = {Kind::character, 0, e};
-            } else {
-                fail("'" + e + "' is neither one character nor SP CR LF BLANK NONE or a register name");
-            }
-            t.meanings_[ur][*f] = m;
+            t.meanings_[ur][*f] = meaning_of(tokens[entries == 1 ? 1 : ur + 1]);
         }
     }
-    if (t.registers_ == 0) fail("the table has no registers line");
-    // What is checked from here on is said at the line of the frame it concerns, or at none.
-    // Shifts: one frame each, the same in every register, so that a reader in any state follows them.
+
+public:
+    std::array<std::array<std::uint64_t, five_track_frames>, max_registers> given{};  // the line, 0: not given
+
+private:
+    std::vector<std::pair<std::string, std::string>> aliases_;
+    std::vector<std::uint64_t> alias_lines_;
+};
+
+// Shifts: one frame each, the same in every register, so that a reader in any state follows them.
+void FiveTrackTable::Reader::check_shifts() {
     for (int r = 0; r < t.registers_; ++r) {
         int found = 0;
         for (Frame f = 0; f < five_track_frames; ++f) {
@@ -128,7 +135,10 @@ FiveTrackTable FiveTrackTable::parse(std::string_view text) {
             throw Error(Errc::bad_table,
                         "register " + std::string(t.register_name(r)) + " needs exactly one shift frame");
     }
-    // Where each character is punched: in one register, or in all where the frame means it in all.
+}
+
+// Where each character is punched: in one register, or in all where the frame means it in all.
+void FiveTrackTable::Reader::place_characters() {
     for (Frame f = 0; f < five_track_frames; ++f) {
         bool same = true;
         for (int r = 1; r < t.registers_; ++r)
@@ -143,9 +153,12 @@ FiveTrackTable FiveTrackTable::parse(std::string_view text) {
         }
     }
     if (!t.places_.count(U'\n')) throw Error(Errc::bad_table, "the table has no LF");
-    for (std::size_t i = 0; i < aliases.size(); ++i) {
-        line_no = alias_lines[i];
-        auto [name, other] = aliases[i];
+}
+
+void FiveTrackTable::Reader::apply_aliases() {
+    for (std::size_t i = 0; i < aliases_.size(); ++i) {
+        line_no = alias_lines_[i];
+        auto [name, other] = aliases_[i];
         auto c = utf8::length(name, 0) == name.size() ? utf8::decode(name) : std::nullopt;
         auto o = utf8::length(other, 0) == other.size() ? utf8::decode(other) : std::nullopt;
         if (!c || !o) fail("an alias is one character for another");
@@ -153,7 +166,27 @@ FiveTrackTable FiveTrackTable::parse(std::string_view text) {
         if (!t.places_.count(*o)) fail("'" + other + "' is not in the table");
         t.places_[*c] = t.places_[*o];
     }
-    return t;
+}
+
+FiveTrackTable FiveTrackTable::parse(std::string_view text) {
+    Reader r;
+    std::istringstream in{std::string(text)};
+    for (std::string line; std::getline(in, line);) {
+        ++r.line_no;
+        std::istringstream fields(line);
+        std::vector<std::string> tokens;
+        for (std::string tok; fields >> tok;) {
+            if (tok[0] == '#') break;
+            tokens.push_back(tok);
+        }
+        if (!tokens.empty()) r.line(tokens);
+    }
+    if (r.t.registers_ == 0) r.fail("the table has no registers line");
+    // What is checked from here on is said at the line of the frame it concerns, or at none.
+    r.check_shifts();
+    r.place_characters();
+    r.apply_aliases();
+    return std::move(r.t);
 }
 
 const FiveTrackTable& FiveTrackTable::builtin_ita2() {

@@ -211,7 +211,7 @@ std::optional<LeaderLabel> find_label(std::span<const Frame> frames) {
     if (first == frames.size()) return std::nullopt;
     for (const Layout* layout : {&iso_layout, &eia_layout})
         if (auto label = read_label(*layout, frames, first)) return label;
-    return std::nullopt;
+    return find_title(frames);
 }
 
 }  // namespace tape

@@ -75,9 +75,15 @@ void Surveyor::feed(std::span<const Frame> frames) {
         }
         ++s_.data;
         char c = code_.character(f);
-        if (c == '%' && !after_percent_) ++s_.program_starts;
+        // A '%' starts a program only when one follows it: the '%' that closes the last program (the
+        // rewind stop) is followed by nothing but line ends and blank tape. A run such as "%%" counts once.
+        if (c == '%') {
+            percent_ = true;
+        } else if (c != ' ' && c != '\n' && c != '\r') {
+            s_.program_starts += percent_;
+            percent_ = false;
+        }
         if (c == '\n') ++s_.end_of_blocks;
-        if (c != ' ') after_percent_ = c == '%';
     }
 }
 

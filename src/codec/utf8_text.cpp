@@ -30,7 +30,21 @@ std::string code_point_name(char32_t cp) {
 
 }  // namespace
 
+std::size_t dos_end_of_file_at(std::span<const std::uint8_t> bytes) {
+    std::size_t at = bytes.size();
+    while (at > 0 && bytes[at - 1] == dos_end_of_file) --at;
+    return at;
+}
+
+Diagnostic dos_end_of_file_note(const Position& where) {
+    return Diagnostic{.code = Errc::bad_text,
+                      .where = where,
+                      .message = "the text ends with a DOS end-of-file mark (Ctrl-Z): not part of the program",
+                      .severity = Severity::note};
+}
+
 std::optional<TextFault> find_text_fault(std::span<const std::uint8_t> bytes) {
+    bytes = bytes.first(dos_end_of_file_at(bytes));
     std::string_view s(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     std::uint64_t line = 1, column = 1;
     for (std::size_t i = 0; i < s.size();) {
@@ -78,10 +92,23 @@ std::optional<TextFault> TextChecker::check(std::span<const std::uint8_t> piece)
     // A character cut by the piece's end is checked with the next piece.
     std::size_t cut = utf8::whole_prefix({reinterpret_cast<const char*>(piece.data()), piece.size()});
     carry_.assign(piece.begin() + static_cast<std::ptrdiff_t>(cut), piece.end());
-    return check_whole(piece.first(cut));
+    auto whole = piece.first(cut);
+    // End-of-file marks wait for what follows: the end of the text, or text that makes the first a fault.
+    std::size_t marks_at = dos_end_of_file_at(whole);
+    if (marks_ && (marks_at > 0 || !carry_.empty())) {
+        mark_.what = "the control character \\x1A (Ctrl-Z, the DOS end-of-file mark, with text after it)";
+        return mark_;
+    }
+    if (!marks_) {
+        if (auto fault = check_whole(whole.first(marks_at))) return fault;
+        mark_ = TextFault{Position{.line = lines_before_ + 1, .column = columns_before_ + 1}, bytes_before_, {}};
+    }
+    marks_ += whole.size() - marks_at;
+    return std::nullopt;
 }
 
 std::optional<TextFault> TextChecker::finish() {
+    if (marks_ && !carry_.empty()) return check(std::span<const std::uint8_t>{});
     auto fault = check_whole(carry_);
     carry_.clear();
     return fault;

@@ -12,7 +12,8 @@ namespace {
 
 // In the order content detection tries them; one line per format.
 const ImageFormat formats[] = {
-    holes_image_format(), hex_image_format(), hex8_image_format(), hex5_image_format(), raw_image_format(),
+    holes_image_format(), hex_image_format(),  hex8_image_format(),
+    hex5_image_format(),  dump_image_format(), raw_image_format(),
 };
 
 std::string lower(std::string_view s) {
@@ -56,6 +57,18 @@ const ImageFormat& detect_image_format(std::span<const std::uint8_t> prefix) {
         }
     }
     return *best;
+}
+
+std::optional<Code> header_code(std::string_view comment) {
+    constexpr std::string_view key = "code:";
+    auto hash = comment.find_first_not_of(" \t");
+    if (hash == std::string_view::npos || comment[hash] != '#') return std::nullopt;
+    comment.remove_prefix(hash + 1);
+    comment.remove_prefix(std::min(comment.find_first_not_of(" \t"), comment.size()));
+    if (!comment.starts_with(key)) return std::nullopt;
+    comment.remove_prefix(key.size());
+    comment.remove_prefix(std::min(comment.find_first_not_of(" \t"), comment.size()));
+    return parse_code(comment.substr(0, comment.find_first_of(" \t,;\r")));
 }
 
 // raw: what simulators, punches and other tools take.

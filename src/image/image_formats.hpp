@@ -10,5 +10,10 @@ ImageFormat holes_image_format();
 ImageFormat hex_image_format();
 ImageFormat hex8_image_format();
 ImageFormat hex5_image_format();
+ImageFormat dump_image_format();
+
+/// The code a header comment line names: "# code: ita2" or "# code: iso, parity even; ...", as the writers
+/// put it; nullopt for another line.
+std::optional<Code> header_code(std::string_view comment);
 
 }  // namespace tape

@@ -91,12 +91,17 @@ public:
     void finish(std::vector<Frame>& out) override {
         if (!line_.empty()) take(out);  // the last line may lack its LF
     }
+    std::optional<Code> declared_code() const override { return declared_; }
 
 private:
     void take(std::vector<Frame>& out) {
         ++line_no_;
+        if (!declared_ && frames_ == 0) declared_ = header_code(line_);  // the header comes before the frames
         try {
-            if (auto f = parse_line(line_, tracks_)) out.push_back(*f);
+            if (auto f = parse_line(line_, tracks_)) {
+                out.push_back(*f);
+                ++frames_;
+            }
         } catch (const LineFault& fault) {
             fail(line_no_, fault.why);
         }
@@ -108,7 +113,8 @@ private:
 
     int tracks_;
     std::string line_;  // the line being read: a chunk may end inside it
-    std::uint64_t line_no_ = 0;
+    std::uint64_t line_no_ = 0, frames_ = 0;
+    std::optional<Code> declared_;
 };
 
 class LinesWriter : public ImageWriter {

@@ -48,8 +48,11 @@ std::string_view trim_left(std::string_view s) {
     return s;
 }
 
-template <typename Fn>
-void for_each_line(std::span<const std::uint8_t> bytes, Fn fn) {
+void no_comment(std::string_view) {}
+
+// fn(line, line_no, last) for each picture line until it returns false; comment(line) for each comment.
+template <typename Fn, typename Comment = void (*)(std::string_view)>
+void for_each_line(std::span<const std::uint8_t> bytes, Fn fn, Comment comment = no_comment) {
     std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     std::uint64_t line_no = 0;
     while (!text.empty()) {
@@ -59,6 +62,7 @@ void for_each_line(std::span<const std::uint8_t> bytes, Fn fn) {
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         ++line_no;
         line = trim_left(line);
+        if (!line.empty() && line[0] == '#') comment(line);
         if (line.empty() || line[0] == '#') continue;
         if (!fn(line, line_no, text.empty())) return;
     }
@@ -96,22 +100,30 @@ public:
         parse(pending_, out);
         pending_.clear();
     }
+    std::optional<Code> declared_code() const override { return declared_; }
 
 private:
     void parse(std::span<const std::uint8_t> lines, std::vector<Frame>& out) {
         std::uint64_t lines_before = lines_before_;
-        for_each_line(lines, [&](std::string_view line, std::uint64_t line_no, bool) {
+        auto header = [&](std::string_view comment) {
+            if (!declared_ && !framed_) declared_ = header_code(comment);  // the header comes before the frames
+        };
+        auto picture = [&](std::string_view line, std::uint64_t line_no, bool) {
             std::string why;
             auto f = parse_picture(line, &why);
             if (!f) throw Error(Errc::bad_image, Position{.line = lines_before + line_no}, why);
             out.push_back(*f);
+            framed_ = true;
             return true;
-        });
+        };
+        for_each_line(lines, picture, header);
         lines_before_ += static_cast<std::uint64_t>(std::count(lines.begin(), lines.end(), '\n'));
     }
 
     std::vector<std::uint8_t> pending_;  // an unfinished line
     std::uint64_t lines_before_ = 0;     // lines already parsed, so that errors count from the file's start
+    std::optional<Code> declared_;
+    bool framed_ = false;  // a frame was read: later comments are no header
 };
 
 class HolesWriter : public ImageWriter {

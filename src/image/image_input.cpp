@@ -89,8 +89,16 @@ CodeDetection ImageInput::detect(const CodeTable* eia_table) {
     Detector detector(eia_table, format_->bytes_are_frames);
     std::vector<Frame> scratch;
     detector.feed(without_label(ahead_, 0, given_any_ ? std::nullopt : label(), scratch));
-    if (!ended_) detector.partial();
+    if (ended_)
+        detector.finish();
+    else
+        detector.partial();
     return detector.result();
+}
+
+std::optional<Code> ImageInput::declared_code() {
+    if (ahead_.empty() && !given_any_) fill();  // the header comes first: one chunk holds it
+    return reader_->declared_code();
 }
 
 const std::optional<LeaderLabel>& ImageInput::label() {

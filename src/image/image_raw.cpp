@@ -5,7 +5,8 @@
 namespace tape {
 namespace {
 
-constexpr std::string_view raw_extensions[] = {".ptp", ".bin", ".tape", ".raw", ".ptr"};
+// .ptap is DEC's paper-tape image; .rim and .bn hold PDP-8 RIM and BIN loader tapes.
+constexpr std::string_view raw_extensions[] = {".ptp", ".bin", ".tape", ".raw", ".ptr", ".ptap", ".rim", ".bn"};
 
 int raw_match(std::span<const std::uint8_t>) { return 1; }  // any bytes are a raw tape
 

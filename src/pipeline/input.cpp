@@ -88,6 +88,16 @@ void Input::open(std::unique_ptr<ByteSource> source, const std::string& name) {
         text_ahead_.erase(text_ahead_.begin(), text_ahead_.begin() + static_cast<std::ptrdiff_t>(utf8_bom.size()));
         notes_.push_back(byte_order_mark_note());
     }
+    // A text read whole by the look above: its DOS end-of-file mark is said now, with the other notes.
+    if (text_ahead_.size() < kind_prefix_bytes && options_.kind == InputKind::automatic) {
+        std::size_t mark = dos_end_of_file_at(text_ahead_);
+        if (mark < text_ahead_.size() && is_program_text(text_ahead_)) {
+            auto head = std::span(text_ahead_).first(mark);
+            auto lines = static_cast<std::uint64_t>(std::count(head.begin(), head.end(), '\n'));
+            notes_.push_back(dos_end_of_file_note(Position{.line = lines + 1, .byte = mark}));
+            mark_noted_ = true;
+        }
+    }
 }
 
 std::span<const Frame> Input::next_frames() {
@@ -104,7 +114,10 @@ std::optional<LeaderLabel> Input::label() {
 const DecodeOptions& Input::decode_options() {
     if (decode_) return *decode_;
     DecodeOptions o = options_.decode;
-    if (image_ && options_.detect_code) {
+    auto declared = image_ && options_.detect_code ? image_->declared_code() : std::nullopt;
+    if (declared && *declared != Code::iso) {
+        o.code = *declared;
+    } else if (image_ && options_.detect_code) {
         if (image_->format().tracks == 5) {
             // Every frame is a character in both 5-track codes: only the reader can tell them apart.
             throw Error(Errc::unknown_code,
@@ -123,8 +136,15 @@ const DecodeOptions& Input::decode_options() {
         throw Error(Errc::usage, "parity is for ISO tapes; EIA parity is always odd on track 5");
     if (is_five_track(o.code) && o.parity != Parity::even)
         throw Error(Errc::usage, "parity is for ISO tapes; 5-track codes carry none");
+    if (is_telecode(o.code) && o.parity != Parity::even)
+        throw Error(Errc::usage, "parity is for ISO tapes; the Elliott telecodes have their own");
     decode_ = o;
     return *decode_;
+}
+
+std::optional<Code> Input::declared_code() {
+    if (!image_) return std::nullopt;
+    return image_->declared_code();
 }
 
 const CodeDetection& Input::detect() {
@@ -169,9 +189,13 @@ bool Input::next_text(DecodeResult& out) {
     if (piece.empty()) {
         ended_ = true;
         if (auto fault = text_checker_.finish()) throw text_fault_error(*fault);
+        if (auto mark = text_checker_.end_of_file_mark(); mark && !mark_noted_)
+            notes_.push_back(dos_end_of_file_note(Position{.line = mark->where.line, .byte = mark->offset}));
         return false;
     }
     if (auto fault = text_checker_.check(piece)) throw text_fault_error(*fault);
+    // The checker lets DOS end-of-file marks through only where they end the text: they are not given.
+    piece = piece.first(dos_end_of_file_at(piece));
     out.text.append(reinterpret_cast<const char*>(piece.data()), piece.size());
     text_ahead_.clear();
     return true;

@@ -10,6 +10,7 @@
 #include "cli/numbers.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
+#include "code_option.hpp"
 #include "commands.hpp"
 #include "tape/encode.hpp"
 #include "tape/file_io.hpp"
@@ -22,7 +23,7 @@ struct EncodeArgs {
     std::string input = "-", output = "-", format, label;
     CodeChoice choice;
     std::size_t leader = tape::default_leader, trailer = tape::default_trailer;
-    bool force = false;
+    bool crlf = false, force = false;
 };
 
 tape::EncodeOptions encode_options(const EncodeArgs& a, const std::string& in_name) {
@@ -32,12 +33,15 @@ tape::EncodeOptions encode_options(const EncodeArgs& a, const std::string& in_na
     o.charset = *tape::parse_charset(a.choice.charset);
     o.leader = a.leader;
     o.trailer = a.trailer;
+    o.crlf = a.crlf;
     o.eia_table = globals().table();
     o.label = a.label;
     if (o.code == tape::Code::eia && o.parity != tape::Parity::even)
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; EIA parity is always odd on track 5");
     if (tape::is_five_track(o.code) && o.parity != tape::Parity::even)
         fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; 5-track codes carry none");
+    if (tape::is_telecode(o.code) && o.parity != tape::Parity::even)
+        fail(in_name, tape::Errc::usage, "--parity is for ISO tapes; the Elliott telecodes have their own");
     return o;
 }
 
@@ -133,6 +137,7 @@ void run(const EncodeArgs& a) {
     auto source = open_source(a.input);
     encode_chunks(*source, *encoder, out, in_name);
     out.commit();
+    if (const auto& mark = encoder->skipped_end_of_file_mark()) say_note(in_name, tape::dos_end_of_file_note(*mark));
     if (globals().verbosity > 0)
         say(in_name, std::to_string(out.written()) + " frames written as " + std::string(format.id));
 }
@@ -145,12 +150,16 @@ void add_encode(CLI::App& app) {
     sub->add_option("input", a->input, "Text program; - or nothing for stdin");
     sub->add_option("-o,--output", a->output, "Tape image to write; - for stdout (raw refuses a terminal)");
     add_code_options(sub, a->choice, false, true);
+    widen_code_option(sub, false);
     sub->add_option("--leader", a->leader, "Blank frames before the program (10 frames = 25.4 mm)")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str();
     sub->add_option("--trailer", a->trailer, "Blank frames after the program")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str();
+    sub->add_flag("--crlf", a->crlf,
+                  "End each block with CR LF on tape (ISO and the Elliott codes; 5-track tapes always have it), as "
+                  "`tape decode` says a CR LF tape does: decode, then encode --crlf, gives the tape back");
     sub->add_option("--format,-f", a->format,
                     "Image format: " + format_choices(true) + " (default: by extension of OUT, else raw)")
         ->check(format_check(true));

@@ -4,8 +4,10 @@
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
 #include "cli/run.hpp"
+#include "code_option.hpp"
 #include "commands.hpp"
 #include "tape/survey.hpp"
+#include "tape_report.hpp"
 
 namespace cli {
 namespace {
@@ -41,7 +43,10 @@ void run(const ShowArgs& a) {
     }
     writer->finish(picture);
     write_output("-", picture, false, false);
-    if (label) say(name, "leader label " + label_text(*label) + ": letters of holes, not characters");
+    if (label && label->font == tape::LabelFont::title)
+        say(name, "in the leader, " + leader_label_words(*label) + ": not characters");
+    else if (label)
+        say(name, "leader label " + label_text(*label) + ": letters of holes, not characters");
     auto s = surveyor.result();
     if (s.parity_errors + s.not_in_code > 0) {
         say(name, std::to_string(s.parity_errors) + " parity error(s), " + std::to_string(s.not_in_code) +
@@ -57,6 +62,7 @@ void add_show(CLI::App& app) {
     auto* sub = app.add_subcommand("show", "Draw the tape: holes, frame numbers, characters, bad frames marked '!'");
     sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
     add_code_options(sub, a->choice, true, true);
+    widen_code_option(sub, true);
     sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))
         ->check(format_check(false));
     sub->callback([a] { run(*a); });

@@ -17,7 +17,7 @@
 namespace cli {
 
 void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
-    add_code_options(sub, p.choice, true);
+    add_code_options(sub, p.choice, true, true);  // a text program may be sent in ITA2 or МТК-2
     sub->add_option("--leader", p.leader, "Blank frames (NUL) before the program")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str()
@@ -50,7 +50,7 @@ namespace {
 tape::FeedOptions feed_options(const FeedProfile& p) {
     tape::InputOptions io = feed_input_options(p);
     tape::FeedOptions o;
-    o.encode.code = p.choice.code == "eia" ? tape::Code::eia : tape::Code::iso;
+    o.encode.code = tape::parse_code(p.choice.code).value_or(tape::Code::iso);  // auto: a text program in ISO
     o.encode.parity = io.decode.parity;
     o.encode.charset = io.decode.charset;
     o.encode.leader = p.leader;
