@@ -167,7 +167,10 @@ TEST(DevicePty, SenderObeysXonXoffAndLosesNothing) {
     EXPECT_EQ(sender.error, "");
     EXPECT_EQ(got, frames);
     EXPECT_EQ(pauses, pause_at.size());
-    EXPECT_EQ(result.pauses, pauses);
+    // A DC3 and its DC1 can reach the sender in one read when it was off the processor for the whole
+    // pause (a busy machine): it never stopped then, and rightly counts no pause for that one.
+    EXPECT_LE(result.pauses, pauses);
+    EXPECT_GT(result.pauses, 0U);
     EXPECT_EQ(line.writes_while_paused, 0U) << "frames written after the sender had read DC3";
     // Frames already on their way when DC3 was sent: how many depends on how long this thread was
     // off the processor between reading the line and sending DC3, so the bound is only a sanity check.
