@@ -89,6 +89,15 @@ protected:
     int made_ = 0;
 };
 
+// The tape processes a test starts talk to the fake adapter through umockdev's preload, for the
+// test's length.
+struct ChildPreload {
+    ChildPreload() { ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1); }
+    ~ChildPreload() { ::unsetenv("LD_PRELOAD"); }
+    ChildPreload(const ChildPreload&) = delete;
+    ChildPreload& operator=(const ChildPreload&) = delete;
+};
+
 TEST_P(AdapterBackend, AnswersInfoWithItsSerialAndCapabilities) {
     fake::Adapter a(options({}, "INFO-" + std::string(fake::link_name(GetParam()))));
     tape::AdapterInfo info = tape::adapter_info(a.device());
@@ -281,10 +290,7 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
     TempDir dir;
     auto tape = pattern(5000, 6);
     // The child sees the umockdev devices through the same preload library.
-    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
-    struct Unset {
-        ~Unset() { ::unsetenv("LD_PRELOAD"); }
-    } unset;
+    ChildPreload preload;
     {
         fake::Adapter a(options(tape));
         Process read({"read", a.device(), "-o", dir.file("whole.ptp")}, dir);
@@ -322,10 +328,7 @@ TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsP
     auto o = options();
     o.sim.control = tapesim::ControlOptions{.stops = 4, .pause_min_us = 2000, .pause_max_us = 4000};
     fake::Adapter a(o);
-    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
-    struct Unset {
-        ~Unset() { ::unsetenv("LD_PRELOAD"); }
-    } unset;
+    ChildPreload preload;
     Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
     auto end = std::chrono::steady_clock::now() + 30s;
     while (a.control_taken().size() < 2 * program.size() && std::chrono::steady_clock::now() < end)
@@ -356,10 +359,7 @@ TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
     auto o = options();
     o.sim.control = tapesim::ControlOptions{.rewind_after = 70, .reverse_after = 40, .reverse_frames = 10};
     fake::Adapter a(o);
-    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
-    struct Unset {
-        ~Unset() { ::unsetenv("LD_PRELOAD"); }
-    } unset;
+    ChildPreload preload;
     Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
     auto end = std::chrono::steady_clock::now() + 30s;
     while (a.control_taken().size() < 100 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(20ms);
@@ -416,10 +416,7 @@ TEST(AdapterDevices, TapeDevicesListsUsbAndHidAdaptersBySerialAndProbesThem) {
     TempDir dir;
     fake::Adapter bulk(fake::Options{.link = Link::usb, .serial = "TP-BULK-7"});
     fake::Adapter hid(fake::Options{.link = Link::hid, .serial = "TP-HID-9"});
-    ::setenv("LD_PRELOAD", fake::child_preload().c_str(), 1);
-    struct Unset {
-        ~Unset() { ::unsetenv("LD_PRELOAD"); }
-    } unset;
+    ChildPreload preload;
     Process devices({"devices", "--probe"}, dir);
     EXPECT_EQ(devices.wait(60s), 0) << devices.err();
     std::string out = read_text(dir.file("stdout"));
