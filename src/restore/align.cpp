@@ -466,6 +466,22 @@ void realign_window(std::span<const std::span<const Frame>> reads, std::span<con
 
 // The alignment with every stretch where the reads disagree aligned again (realign_window). Stretches
 // at a read's start or end, and long ones (a leader, a torn stretch), are kept as they are.
+// The end of the stretch of disagreement starting at column c. A frame that happens to equal a neighbour
+// can stand solid inside one slip (a stain read as "39" next to a real "39"): short solid runs between
+// disagreements are part of the stretch.
+std::size_t stretch_end(std::span<const std::span<const Frame>> reads, const ReadAlignment& a, std::size_t c) {
+    constexpr std::size_t bridged = 2;
+    auto solid = [&](std::size_t x) { return unanimous(a, reads, x); };
+    std::size_t end = c;
+    for (;;) {
+        while (end < a.columns() && !solid(end)) ++end;
+        std::size_t next = end;
+        while (next < a.columns() && next - end <= bridged && solid(next)) ++next;
+        if (next == end || next >= a.columns() || next - end > bridged) return end;
+        end = next;
+    }
+}
+
 ReadAlignment refine(std::span<const std::span<const Frame>> reads, const ReadAlignment& a) {
     constexpr std::int32_t longest = 64;
     const std::size_t n_reads = a.reads();
@@ -483,17 +499,7 @@ ReadAlignment refine(std::span<const std::span<const Frame>> reads, const ReadAl
             copy(c++);
             continue;
         }
-        // A frame that happens to equal a neighbour can stand solid inside one slip (a stain read as
-        // "39" next to a real "39"): short solid runs between disagreements are part of the stretch.
-        constexpr std::size_t bridged = 2;
-        std::size_t end = c;
-        for (;;) {
-            while (end < a.columns() && !solid(end)) ++end;
-            std::size_t next = end;
-            while (next < a.columns() && next - end <= bridged && solid(next)) ++next;
-            if (next == end || next >= a.columns() || next - end > bridged) break;
-            end = next;
-        }
+        std::size_t end = stretch_end(reads, a, c);
         // Every read covers the whole stretch, or none of it; each has a few frames in it.
         bool simple = true;
         for (std::size_t r = 0; r < n_reads && simple; ++r) {

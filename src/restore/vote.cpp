@@ -120,6 +120,9 @@ private:
     void only_misreadings(std::size_t c);
     void run_column(std::size_t c, const RunDecision& d, bool writes, const Heard& h);
     bool presence(std::size_t c, const Heard& h);
+    bool alone_beside(std::size_t c) const;
+    bool gaps_are_lone(std::size_t c) const;
+    void half_present(std::size_t c, const Heard& h);
     void values(std::size_t c, const Heard& h);
 
     const VoteContext& v_;
@@ -212,6 +215,37 @@ void Voter::run_column(std::size_t c, const RunDecision& d, bool writes, const H
 
 // Whether a frame stands in this column at all, where the reads disagree on it and no run decides:
 // true when that was settled here (not written, or written in doubt).
+// The read alone here is alone in a neighbouring column too.
+bool Voter::alone_beside(std::size_t c) const {
+    auto al = v_.alone[c];
+    return al != ReadAlignment::none &&
+           ((c > 0 && v_.alone[c - 1] == al) || (c + 1 < v_.alone.size() && v_.alone[c + 1] == al));
+}
+
+// Every read without a frame here has one in both neighbouring columns: a lone gap, not a stretch missing.
+bool Voter::gaps_are_lone(std::size_t c) const {
+    for (std::size_t r = 0; r < v_.a.reads(); ++r) {
+        if (!v_.a.covers(r, c) || v_.a.frame(c, r) != ReadAlignment::none) continue;
+        auto gap = [&](std::size_t x) { return v_.a.covers(r, x) && v_.a.frame(x, r) == ReadAlignment::none; };
+        if ((c > 0 && gap(c - 1)) || (c + 1 < v_.a.columns() && gap(c + 1))) return false;
+    }
+    return true;
+}
+
+// Half the reads covering column c have a good frame there, half none. A frame like its neighbour may be
+// one read twice; one unlike them cannot be. (A read lacking a whole stretch, torn or slipped, is decided
+// as one: written.)
+void Voter::half_present(std::size_t c, const Heard& h) {
+    const auto& front = h.tally.front();
+    bool dropped = h.repeat && !alone_beside(c) && front.value != blank_frame && gaps_are_lone(c);
+    set(c, FrameStatus::contested, front.value,
+        std::string("half the reads that cover this place have a frame here, half do not; ") +
+            (dropped    ? "like its neighbour, it may be read twice: not written"
+             : h.repeat ? "the others lack a stretch here: written"
+                        : "unlike its neighbours, it cannot be read twice: written"),
+        !dropped);
+}
+
 bool Voter::presence(std::size_t c, const Heard& h) {
     const auto& front = h.tally.front();
     const std::size_t reads = v_.a.reads();
@@ -221,16 +255,11 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         reads > 1 && h.tally.size() == 1 && front.value == blank_frame && h.covering < reads && h.present * 2 <= reads;
     std::size_t lost = lone_blank ? reads - h.present : h.lost;
     std::size_t present = front.good ? h.present_good : h.present;
-    auto alone_beside = [&] {  // the read alone here is alone in a neighbouring column too
-        auto al = v_.alone[c];
-        return al != ReadAlignment::none &&
-               ((c > 0 && v_.alone[c - 1] == al) || (c + 1 < v_.alone.size() && v_.alone[c + 1] == al));
-    };
     if (lone_blank && present >= lost) return false;
     // One read has a frame unlike its neighbours (no double), and read well around it; the others lost
     // it, or a splice put it there. (Several such frames in a row are a stretch one read misread.)
     if (present == 1 && lost > 1 && front.good && !h.repeat && front.value != blank_frame && !lone_blank &&
-        !alone_beside()) {
+        !alone_beside(c)) {
         set(c, FrameStatus::contested, front.value,
             of_reads(1, h.covering, "has this frame") +
                 ", not as a neighbour read twice: the others lost it, or a splice put it there; written",
@@ -255,21 +284,7 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         return true;
     }
     if (present == lost && front.good) {
-        // A frame like its neighbour may be one read twice; one unlike them cannot be. (A read lacking
-        // a whole stretch, torn or slipped, is decided as one: written.)
-        bool lone_gaps = true;
-        for (std::size_t r = 0; r < reads && lone_gaps; ++r) {
-            if (!v_.a.covers(r, c) || v_.a.frame(c, r) != ReadAlignment::none) continue;
-            auto gap = [&](std::size_t x) { return v_.a.covers(r, x) && v_.a.frame(x, r) == ReadAlignment::none; };
-            lone_gaps = !((c > 0 && gap(c - 1)) || (c + 1 < v_.a.columns() && gap(c + 1)));
-        }
-        bool dropped = h.repeat && !alone_beside() && front.value != blank_frame && lone_gaps;
-        set(c, FrameStatus::contested, front.value,
-            std::string("half the reads that cover this place have a frame here, half do not; ") +
-                (dropped    ? "like its neighbour, it may be read twice: not written"
-                 : h.repeat ? "the others lack a stretch here: written"
-                            : "unlike its neighbours, it cannot be read twice: written"),
-            !dropped);
+        half_present(c, h);
         return true;
     }
     if (lost > 0 && h.repeat && h.good_values == 1 && front.good) {
