@@ -54,6 +54,44 @@ std::string config_text(const tape::AdapterConfig& c) {
     return out;
 }
 
+// The unit's line settings (a CONFIG): polarities, timing, tape width, the watchdog.
+void add_line_options(CLI::App& cfg, tape::AdapterConfig& c, std::string& strobe, std::string& drive) {
+    cfg.add_option("--invert", c.data_invert, "Data lines that read a hole as a low level: a mask, bit n for track n+1")
+        ->check(line_mask())
+        ->capture_default_str();
+    cfg.add_option("--tracks", c.tracks, "Tape width: rows are masked to this many tracks")
+        ->check(whole_number(5, 8))
+        ->capture_default_str();
+    cfg.add_flag("--sprocket-low", c.sprocket_low, "The sprocket signal is active low");
+    cfg.add_option("--strobe", strobe, "The sprocket edge that marks a stable row")
+        ->check(CLI::IsMember({"rising", "falling"}))
+        ->capture_default_str();
+    cfg.add_option("--sample-delay", c.sample_delay_us, "Microseconds from the sprocket edge to sampling the data")
+        ->check(whole_number(0, 5000))
+        ->capture_default_str();
+    cfg.add_option("--drive", drive, "Start and stop as a level, or as pulses of --drive-pulse")
+        ->check(CLI::IsMember({"level", "pulse"}))
+        ->capture_default_str();
+    cfg.add_option("--drive-pulse", c.drive_pulse_us, "Start and stop pulse length in microseconds")
+        ->check(whole_number(10, 50000))
+        ->capture_default_str();
+    cfg.add_flag("--drive-low", c.drive_low, "Start/stop and direction lines are active low");
+    cfg.add_flag("--status-low", c.status_low, "Tape-out and fault inputs are active low");
+    cfg.add_flag("--punch-ready-low", c.punch_ready_low, "The punch's ready (sync) input is active low");
+    cfg.add_flag("--punch-magnet-low", c.punch_magnet_low, "The punch magnets are driven by a low level");
+    cfg.add_option("--punch-pulse", c.punch_pulse_us, "Microseconds the punch magnets are held")
+        ->check(whole_number(100, 50000))
+        ->capture_default_str();
+    cfg.add_option("--sprocket-timeout", c.sprocket_timeout_ms,
+                   "Milliseconds without a sprocket while driving before the tape counts as torn")
+        ->check(whole_number(1, 65535))
+        ->capture_default_str();
+    cfg.add_option("--watchdog", c.watchdog_ms,
+                   "Milliseconds the host may be silent before the adapter stops reader and punch (0: never)")
+        ->check(whole_number(0, 65535))
+        ->capture_default_str();
+}
+
 void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
     auto c = std::make_shared<tape::AdapterConfig>();
     auto strobe = std::make_shared<std::string>("rising");
@@ -64,41 +102,7 @@ void add_config(CLI::App& sub, std::shared_ptr<std::string> device) {
         "not given) and, when any emulate option is given, how it is wired to a control's reader input (a WIRING), "
         "and print them");
     cfg->add_option("device", *device, "Device string: adapter:/dev/ttyACM0")->required();
-    cfg->add_option("--invert", c->data_invert,
-                    "Data lines that read a hole as a low level: a mask, bit n for track n+1")
-        ->check(line_mask())
-        ->capture_default_str();
-    cfg->add_option("--tracks", c->tracks, "Tape width: rows are masked to this many tracks")
-        ->check(whole_number(5, 8))
-        ->capture_default_str();
-    cfg->add_flag("--sprocket-low", c->sprocket_low, "The sprocket signal is active low");
-    cfg->add_option("--strobe", *strobe, "The sprocket edge that marks a stable row")
-        ->check(CLI::IsMember({"rising", "falling"}))
-        ->capture_default_str();
-    cfg->add_option("--sample-delay", c->sample_delay_us, "Microseconds from the sprocket edge to sampling the data")
-        ->check(whole_number(0, 5000))
-        ->capture_default_str();
-    cfg->add_option("--drive", *drive, "Start and stop as a level, or as pulses of --drive-pulse")
-        ->check(CLI::IsMember({"level", "pulse"}))
-        ->capture_default_str();
-    cfg->add_option("--drive-pulse", c->drive_pulse_us, "Start and stop pulse length in microseconds")
-        ->check(whole_number(10, 50000))
-        ->capture_default_str();
-    cfg->add_flag("--drive-low", c->drive_low, "Start/stop and direction lines are active low");
-    cfg->add_flag("--status-low", c->status_low, "Tape-out and fault inputs are active low");
-    cfg->add_flag("--punch-ready-low", c->punch_ready_low, "The punch's ready (sync) input is active low");
-    cfg->add_flag("--punch-magnet-low", c->punch_magnet_low, "The punch magnets are driven by a low level");
-    cfg->add_option("--punch-pulse", c->punch_pulse_us, "Microseconds the punch magnets are held")
-        ->check(whole_number(100, 50000))
-        ->capture_default_str();
-    cfg->add_option("--sprocket-timeout", c->sprocket_timeout_ms,
-                    "Milliseconds without a sprocket while driving before the tape counts as torn")
-        ->check(whole_number(1, 65535))
-        ->capture_default_str();
-    cfg->add_option("--watchdog", c->watchdog_ms,
-                    "Milliseconds the host may be silent before the adapter stops reader and punch (0: never)")
-        ->check(whole_number(0, 65535))
-        ->capture_default_str();
+    add_line_options(*cfg, *c, *strobe, *drive);
     auto wiring = std::make_shared<WiringArgs>();
     add_wiring_options(*cfg, wiring);
     cfg->callback([device, c, strobe, drive, wiring, cfg] {
