@@ -52,21 +52,17 @@ std::string fit_text(const tape::ReadingFit& f) {
            std::to_string(f.end_of_blocks) + " end of blocks";
 }
 
-std::string evidence_json(const tape::TapeEvidence& e) {
-    std::ostringstream o;
-    o << "{\"frames\": " << e.frames << ", \"punched\": " << e.punched << ", \"even\": " << e.parity.even
-      << ", \"odd\": " << e.parity.odd << ", \"track8\": " << e.parity.mark << ", \"five_track\": " << e.five_track
-      << ", \"iso_lf\": " << e.iso_lf << ", \"eia_eob\": " << e.eia_eob
-      << ", \"longest_track8_run\": " << e.longest_0x80_run << ", \"text\": " << (e.text ? "true" : "false")
-      << ", \"readings\": [";
-    for (std::size_t i = 0; i < e.fits.size(); ++i) {
-        const auto& f = e.fits[i];
-        o << (i ? ", " : "") << "{\"reading\": " << json_string(tape::reading_name(f.reading))
-          << ", \"bad_frames\": " << f.bad_frames << ", \"controls\": " << f.controls
-          << ", \"end_of_blocks\": " << f.end_of_blocks << "}";
-    }
-    o << "]}";
-    return o.str();
+Json evidence_info(const tape::TapeEvidence& e) {
+    Json readings = Json::array();
+    for (const auto& f : e.fits)
+        readings.push_back({{"reading", tape::reading_name(f.reading)},
+                            {"bad_frames", f.bad_frames},
+                            {"controls", f.controls},
+                            {"end_of_blocks", f.end_of_blocks}});
+    return {{"frames", e.frames},  {"punched", e.punched},    {"even", e.parity.even},
+            {"odd", e.parity.odd}, {"track8", e.parity.mark}, {"five_track", e.five_track},
+            {"iso_lf", e.iso_lf},  {"eia_eob", e.eia_eob},    {"longest_track8_run", e.longest_0x80_run},
+            {"text", e.text},      {"readings", readings}};
 }
 
 // Every frame goes through the detector, which decodes it each way at once (and tries the binary loader
@@ -135,24 +131,33 @@ std::string verdict_text(const InfoFacts& f) {
 
 std::string json_report(const InfoFacts& f) {
     const auto& s = f.s;
-    std::string code_text = f.code ? std::string(tape::code_name(*f.code)) : "unknown";
-    std::ostringstream out;
-    out << "{\"file\": " << json_string(f.name) << ", \"format\": " << json_string(f.format)
-        << ", \"code\": " << (f.code ? json_string(code_text) : "null")
-        << ", \"code_reason\": " << json_string(f.reason)
-        << ", \"kind\": " << json_string(std::string(tape::tape_kind_name(f.d.kind)))
-        << ", \"verdict\": " << json_string(verdict_text(f)) << ", \"leader_label\": " << leader_label_json(f.label)
-        << ", \"advice\": " << (f.advice.empty() ? "null" : json_string(f.advice))
-        << ", \"other_reading\": " << (f.other ? json_string(with_hint(f.other->message, f.other->hint)) : "null")
-        << ", \"binary\": " << (f.d.evidence.binary ? binary_json(*f.d.evidence.binary) : "null")
-        << ", \"evidence\": " << evidence_json(f.d.evidence)
-        << ", \"parity\": " << json_string(parity_found(f.d.evidence.parity))
-        << ", \"parity_rule\": " << json_string(std::string(tape::parity_name(f.rule)))
-        << ", \"frames\": {\"total\": " << s.frames << ", \"leader\": " << s.leader << ", \"data\": " << s.data
-        << ", \"del\": " << s.rubouts << ", \"blank_inside\": " << s.blank_inside << ", \"trailer\": " << s.trailer
-        << ", \"parity_errors\": " << s.parity_errors << ", \"not_in_code\": " << s.not_in_code
-        << "}, \"program_starts\": " << s.program_starts << ", \"end_of_blocks\": " << s.end_of_blocks << "}\n";
-    return out.str();
+    auto text_or_null = [](bool given, const std::string& text) { return given ? Json(text) : Json(nullptr); };
+    Json frames = {{"total", s.frames},
+                   {"leader", s.leader},
+                   {"data", s.data},
+                   {"del", s.rubouts},
+                   {"blank_inside", s.blank_inside},
+                   {"trailer", s.trailer},
+                   {"parity_errors", s.parity_errors},
+                   {"not_in_code", s.not_in_code}};
+    Json report = {
+        {"file", f.name},
+        {"format", f.format},
+        {"code", f.code ? Json(std::string(tape::code_name(*f.code))) : Json(nullptr)},
+        {"code_reason", f.reason},
+        {"kind", std::string(tape::tape_kind_name(f.d.kind))},
+        {"verdict", verdict_text(f)},
+        {"leader_label", leader_label_info(f.label)},
+        {"advice", text_or_null(!f.advice.empty(), f.advice)},
+        {"other_reading", text_or_null(f.other.has_value(), f.other ? with_hint(f.other->message, f.other->hint) : "")},
+        {"binary", f.d.evidence.binary ? binary_info(*f.d.evidence.binary) : Json(nullptr)},
+        {"evidence", evidence_info(f.d.evidence)},
+        {"parity", parity_found(f.d.evidence.parity)},
+        {"parity_rule", std::string(tape::parity_name(f.rule))},
+        {"frames", frames},
+        {"program_starts", s.program_starts},
+        {"end_of_blocks", s.end_of_blocks}};
+    return json_text(report) + "\n";
 }
 
 std::string evidence_lines(const InfoFacts& f) {

@@ -22,11 +22,11 @@ std::string leader_label_words(const tape::LeaderLabel& label) {
     return label_text(label);
 }
 
-std::string leader_label_json(const std::optional<tape::LeaderLabel>& label) {
-    if (!label) return "null";
+Json leader_label_info(const std::optional<tape::LeaderLabel>& label) {
+    if (!label) return nullptr;
     Json json = label_value(label);
     json["kind"] = label->font == tape::LabelFont::title ? "title" : "letters";
-    return json_text(json);
+    return json;
 }
 
 std::string binary_block_line(const tape::BinaryBlock& b) {
@@ -68,7 +68,7 @@ std::string binary_block_lines(const tape::BinaryTape& t, bool every, const std:
     return out;
 }
 
-std::string binary_json(const tape::BinaryTape& t) {
+Json binary_info(const tape::BinaryTape& t) {
     Json blocks = Json::array();
     for (const auto& b : t.blocks) {
         Json checksum = nullptr;
@@ -93,7 +93,7 @@ std::string binary_json(const tape::BinaryTape& t) {
         {"start", t.start ? Json(*t.start) : Json(nullptr)},
         {"stray_frames", t.stray_frames},
         {"blocks", blocks}};
-    return json_text(json);
+    return json;
 }
 
 }  // namespace cli

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/json.hpp"
 #include "tape/binary_tape.hpp"
 #include "tape/label.hpp"
 
@@ -14,13 +15,13 @@ namespace cli {
 /// punched as letters of holes, not read (frames 181-372): `tape show` draws it".
 std::string leader_label_words(const tape::LeaderLabel& label);
 /// {"text", "first_frame", "frames", "code", "kind"} or null.
-std::string leader_label_json(const std::optional<tape::LeaderLabel>& label);
+Json leader_label_info(const std::optional<tape::LeaderLabel>& label);
 
 /// One line a block: "block 3: frames 120-172, load 000704, 46 bytes, checksum holds (stored 123)".
 std::string binary_block_line(const tape::BinaryBlock& b);
 /// The blocks worth a line: all when every is true or there are few, else those whose checksum does not hold.
 std::string binary_block_lines(const tape::BinaryTape& t, bool every, const std::string& indent);
 /// {"format", "name", "summary", "blocks": [...], "checksums": {...}, "start", "stray_frames"}.
-std::string binary_json(const tape::BinaryTape& t);
+Json binary_info(const tape::BinaryTape& t);
 
 }  // namespace cli
