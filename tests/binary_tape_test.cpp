@@ -208,8 +208,9 @@ TEST(Pdp8Rim, AddressWordPairsWithoutChecksum) {
 
 TEST(Pdp8Bin, ATapeWithoutItsTrailerChecksNothing) {
     auto t = pdp8_bin(0200, {07300, 01276});
-    t.resize(t.size() - 30);   // no trailer
-    t.insert(t.end(), 50, 0);  // blank runout, not words of 0000
+    ASSERT_GT(t.size(), 30U);
+    t.erase(t.end() - 30, t.end());  // no trailer
+    t.insert(t.end(), 50, 0);        // blank runout, not words of 0000
     BinaryTape b = read_as(BinaryReader::Family::pdp8, t);
     ASSERT_EQ(b.block_count, 1U);
     EXPECT_EQ(b.blocks[0].checksum->state, ChecksumSpan::State::missing);
