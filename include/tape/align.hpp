@@ -16,10 +16,6 @@
 
 namespace tape {
 
-/// The longest read align_reads takes, in frames: 10^8 frames is 254 km of tape, more than any reel
-/// holds; a longer input is no read of a paper tape.
-inline constexpr std::size_t max_read_frames = max_tape_frames;
-
 struct AlignOptions {
     std::size_t anchor_length = 12;  ///< frames in an anchor: a run that occurs once in each read
     /// A stretch between anchors larger than this many cells (frames x frames) is not aligned inside:
@@ -102,10 +98,10 @@ inline std::optional<Frame> frame_at(const ReadAlignment& a, std::span<const std
 /// True when every read that covers column has a frame there, and they are all the same.
 bool unanimous(const ReadAlignment& a, std::span<const std::span<const Frame>> reads, std::size_t column);
 
-/// Aligns reads (each a whole image's frames, at most max_read_frames). Throws UnrelatedRead (an
+/// Aligns reads (each a whole image's frames, at most max_tape_frames). Throws UnrelatedRead (an
 /// Error(Errc::bad_image)) naming the read when one shares too little with the reference to be of the
 /// same tape (unless options.drop_unrelated), Error(Errc::bad_image) when no read has frames, and
-/// Error(Errc::usage) for a read longer than max_read_frames. One read alone is its own alignment.
+/// Error(Errc::usage) for a read longer than max_tape_frames. One read alone is its own alignment.
 ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const AlignOptions& options = {});
 
 }  // namespace tape

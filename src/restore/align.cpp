@@ -707,9 +707,9 @@ UnrelatedRead::UnrelatedRead(std::size_t read, std::size_t reference, double anc
 ReadAlignment align_reads(std::span<const std::span<const Frame>> reads, const AlignOptions& o) {
     if (reads.empty()) throw Error(Errc::usage, "no reads to align");
     for (std::size_t r = 0; r < reads.size(); ++r)
-        if (reads[r].size() > max_read_frames)
+        if (reads[r].size() > max_tape_frames)
             throw Error(Errc::usage, "read " + std::to_string(r + 1) + " has " + std::to_string(reads[r].size()) +
-                                         " frames, more than the " + std::to_string(max_read_frames) +
+                                         " frames, more than the " + std::to_string(max_tape_frames) +
                                          " (254 km of tape) reads are aligned to");
     if (std::all_of(reads.begin(), reads.end(), [](std::span<const Frame> r) { return r.empty(); }))
         throw Error(Errc::bad_image, "no read holds any frame");
