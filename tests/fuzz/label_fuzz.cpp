@@ -1,6 +1,7 @@
 // libFuzzer target: leader labels (letters of holes in a tape's leader). Any bytes as a tape's first
 // frames: a label found lies within them, and its frames are those the font punches for its text (for
-// ISO, track 8 aside: a label is read whatever parity rule it was punched with). Any bytes as a label's
+// ISO, track 8 aside: a label is read whatever parity rule it was punched with); a title in another font
+// (tape/label.hpp) has no text and lies between blank tape. Any bytes as a label's
 // text: what is punched is found again, with that text in capitals.
 #include <cstddef>
 #include <cstdint>
@@ -12,11 +13,33 @@
 #include "tape/error.hpp"
 #include "tape/label.hpp"
 
+namespace {
+
+// A title in another font is found, not read: no text; blank leader before it, punched frames at both of
+// its ends, and at least 16 blank frames after it.
+void check_title(std::span<const tape::Frame> frames, const tape::LeaderLabel& title) {
+    if (!title.text.empty()) __builtin_trap();
+    for (std::size_t i = 0; i < title.first; ++i)
+        if (frames[i] != tape::blank_frame) __builtin_trap();
+    std::size_t end = title.first + title.frames;
+    if (frames[title.first] == tape::blank_frame || frames[end - 1] == tape::blank_frame) __builtin_trap();
+    if (end + 16 > frames.size()) __builtin_trap();
+    for (std::size_t i = end; i < end + 16; ++i)
+        if (frames[i] != tape::blank_frame) __builtin_trap();
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) return 0;
     std::span<const tape::Frame> frames(data + 1, size - 1);
     if (auto found = tape::find_label(frames)) {
-        if (found->text.empty() || found->frames == 0 || found->first + found->frames > frames.size()) __builtin_trap();
+        if (found->frames == 0 || found->first + found->frames > frames.size()) __builtin_trap();
+        if (found->font == tape::LabelFont::title) {
+            check_title(frames, *found);
+            return 0;
+        }
+        if (found->text.empty()) __builtin_trap();
         auto code = tape::FrameCode::make(found->code, tape::Parity::even);
         auto punched = tape::label_frames(found->text, code);  // throws for a text the font lacks: a bug
         if (punched.size() != found->frames) __builtin_trap();
