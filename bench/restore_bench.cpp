@@ -74,6 +74,7 @@ struct OneReadTally {
             bool ok = r.frames[i] == t.frames[i];
             auto s = status.count(i + 1) ? status[i + 1] : tape::FrameStatus::clean;
             ++bad, right += ok;
+            if (!ok && std::getenv("RESTORE_BENCH_SHOW")) show_one(t, read, r, i);
             if (t.nc) ++nc_bad, nc_right += ok;
             if (t.code[i]) ++code_bad, code_right += ok;
             inferred += s == tape::FrameStatus::inferred;
@@ -82,6 +83,30 @@ struct OneReadTally {
             guessed += s == tape::FrameStatus::guessed, guessed_right += ok && s == tape::FrameStatus::guessed;
             unmarked += guess && s != tape::FrameStatus::inferred && s != tape::FrameStatus::guessed;
         }
+    }
+    static char printable(char c) { return c >= 32 && c < 127 ? c : '?'; }
+    // RESTORE_BENCH_SHOW: each damaged frame not restored right, with its block, status, reason and
+    // candidates: "tape-name, frame, original, read, written, status, candidates, block, reason" (tab-separated).
+    static void show_one(const CorpusTape& t, const std::vector<tape::Frame>& read, const tape::RestoreResult& r,
+                         std::size_t i) {
+        std::size_t a = i, b = i;
+        while (a > 0 && (t.frames[a - 1] & 0x7F) != '\n' && i - a < 60) --a;
+        while (b + 1 < t.frames.size() && (t.frames[b] & 0x7F) != '\n' && b - i < 60) ++b;
+        std::string block;
+        for (std::size_t k = a; k <= std::max(b, i); ++k) {
+            if (k == i) block += '[';
+            block += printable(static_cast<char>(t.frames[k] & 0x7F));
+            if (k == i) block += ']';
+        }
+        const tape::RestoreProblem* problem = nullptr;
+        for (const auto& p : r.problems)
+            if (p.frame && *p.frame == i + 1) problem = &p;
+        std::string candidates;
+        if (problem)
+            for (tape::Frame c : problem->candidates) candidates += printable(static_cast<char>(c & 0x7F));
+        std::fprintf(stderr, "%s\t%zu\t%02x\t%02x\t%02x\t%s\t%s\t%s\t%s\n", t.name.c_str(), i, t.frames[i], read[i],
+                     r.frames[i], problem ? std::string(tape::status_name(problem->status)).c_str() : "clean",
+                     candidates.c_str(), block.c_str(), problem ? problem->reason.c_str() : "");
     }
     void report(benchmark::State& state) const {
         state.counters["damaged"] = per_run(bad);

@@ -205,11 +205,14 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
         }
     for (const Word* w : words) {
         std::string value = w->text.substr(1);
+        if (rules.address_unused(w->address)) out.push_back("unused-address");
+        if (rules.case_broken(*w)) out.push_back("letter-case");
         if ((w->address == 'G' || w->address == 'M') && !code_known(s_.dialect, w->address, code_value(value)) &&
             !rules.code_used(w->address, code_value(value)))
             out.push_back("unknown-code");
         auto shape = shape_of(*w);
-        if (shape && rules.format_broken(w->address == ':' ? 'N' : w->address, *shape)) out.push_back("word-format");
+        if ((shape && rules.format_broken(w->address == ':' ? 'N' : w->address, *shape)) || rules.form_broken(*w))
+            out.push_back("word-format");
         if (s_.spec)
             for (const auto& [rule, message] : check_word(*w, *s_.spec, rules.points()))
                 out.push_back(std::string(rule));
@@ -221,6 +224,8 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
                     w->address, std::strtod(w->digits().c_str(), nullptr) / std::pow(10.0, std::max(shape->after, 0))))
                 out.push_back("value-range");
     }
+    // Where the neighbours say which number the block has, a try that leaves it none breaks the sequence.
+    if (first && !first->number && rules.expected_number(line_)) out.push_back("block-number");
     if (const MotionState* state = rules.state_before(line_); state && first && rules.arcs_trusted())
         if (auto agrees = arc_agrees(*state, *first)) out.push_back(std::string(*agrees ? arc_closes : "arc"));
 }

@@ -129,8 +129,18 @@ void TapeRules::finish(std::string_view text) {
 }
 
 void TapeRules::learn_block(const Block& b, bool damaged) {
-    numbers_.emplace_back(b.where.line, damaged || !b.number || !b.number->integer() ? -1 : *b.number->integer());
+    numbers_.emplace_back(b.where.line, damaged                             ? damaged_number
+                                        : !b.number || !b.number->integer() ? no_number
+                                                                            : *b.number->integer());
     if (damaged) return;
+    ++undamaged_blocks_;
+    if (b.number) ++addresses_[b.number->address];
+    for (const auto& w : b.words) {
+        ++addresses_[w.address];
+        unreadable_[w.address] += !w.known;
+        bool lower = !w.text.empty() && std::islower(static_cast<unsigned char>(w.text.front()));
+        ++(lower ? lower_words_ : upper_words_);
+    }
     if (b.number)  // block numbers keep a format too (N001, :005): under 'N'
         if (auto s = shape_of(*b.number)) ++shapes_['N'][*s], ++words_['N'];
     for (const auto& w : b.words) {
@@ -197,6 +207,30 @@ bool TapeRules::format_broken(char address, const WordShape& shape) const {
     return false;
 }
 
+// By Good and Turing's estimate, the chance that a word's letter is one the tape has not shown yet is
+// the share of words whose letter is seen once: a letter the damage hid (its only word damaged) is as
+// likely as that. Only where that chance is under one in a thousand (with one more letter seen once
+// than counted, for the one a damaged block may hold) is an unseen letter ruled out.
+bool TapeRules::address_unused(char address) const {
+    if (addresses_.count(address)) return false;
+    std::size_t words = 0, once = 1;
+    for (const auto& [letter, n] : addresses_) words += n, once += n == 1;
+    return words >= 1000 * once;
+}
+
+bool TapeRules::form_broken(const Word& w) const {
+    if (w.known || w.macro) return false;
+    auto n = words_.find(w.address);
+    auto bad = unreadable_.find(w.address);
+    return n != words_.end() && n->second >= enough_words && (bad == unreadable_.end() || bad->second == 0);
+}
+
+bool TapeRules::case_broken(const Word& w) const {
+    if (w.text.empty() || !std::isalpha(static_cast<unsigned char>(w.text.front()))) return false;
+    bool lower = std::islower(static_cast<unsigned char>(w.text.front()));
+    return (lower ? upper_words_ : lower_words_) >= enough_words && (lower ? lower_words_ : upper_words_) == 0;
+}
+
 bool TapeRules::code_used(char letter, std::string_view value) const {
     return codes_.count(std::string(1, letter) + std::string(value)) > 0;
 }
@@ -214,13 +248,42 @@ void TapeRules::learn_step() {
 }
 
 std::optional<long long> TapeRules::expected_number(std::uint64_t line) const {
-    if (step_ == 0) return std::nullopt;
-    auto it = std::lower_bound(numbers_.begin(), numbers_.end(), std::make_pair(line, -2LL));
-    if (it == numbers_.begin() || it == numbers_.end() || it->first != line || it + 1 == numbers_.end())
-        return std::nullopt;
-    long long before = (it - 1)->second, after = (it + 1)->second;
-    if (before < 0 || after < 0 || after - before != 2 * step_) return std::nullopt;
-    return before + step_;
+    auto it = std::lower_bound(numbers_.begin(), numbers_.end(), std::make_pair(line, no_number));
+    if (it == numbers_.end() || it->first != line) return std::nullopt;
+    auto at = static_cast<std::size_t>(it - numbers_.begin());
+    if (step_ != 0 && at > 0 && at + 1 < numbers_.size()) {
+        long long before = numbers_[at - 1].second, after = numbers_[at + 1].second;
+        if (before >= 0 && after >= 0 && after - before == 2 * step_) return before + step_;
+    }
+    return local_sequence(at);
+}
+
+// Two numbered blocks on each side of block `at` (within a few blocks, damaged ones counted as places,
+// none crossed that has no number) that keep one step, the same N repeated included: the number `at`
+// must have. A block numbered out of step, or a skip in the numbers, breaks the step across it.
+std::optional<long long> TapeRules::local_sequence(std::size_t at) const {
+    constexpr long long reach = 6;
+    std::vector<std::pair<long long, long long>> known;  // (place from at, N)
+    for (int dir : {-1, 1}) {
+        int found = 0;
+        for (long long d = 1; d <= reach && found < 2; ++d) {
+            long long i = static_cast<long long>(at) + dir * d;
+            if (i < 0 || i >= static_cast<long long>(numbers_.size())) break;
+            long long n = numbers_[static_cast<std::size_t>(i)].second;
+            if (n == no_number) break;
+            if (n >= 0) known.emplace_back(dir * d, n), ++found;
+        }
+        if (found < 2) return std::nullopt;
+    }
+    std::sort(known.begin(), known.end());
+    auto [p0, n0] = known.front();
+    auto [p1, n1] = known.back();
+    if ((n1 - n0) % (p1 - p0) != 0) return std::nullopt;
+    long long step = (n1 - n0) / (p1 - p0);
+    if (step < 0) return std::nullopt;
+    for (auto [p, n] : known)
+        if (n != n0 + step * (p - p0)) return std::nullopt;
+    return n0 - step * p0;
 }
 
 bool TapeRules::value_out_of_range(char address, double value) const {

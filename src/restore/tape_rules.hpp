@@ -75,10 +75,19 @@ public:
     /// time so): its point style (always or never a point), its number of decimals, a fixed width
     /// (zeros punched), its sign style (never '+', or always a sign).
     bool format_broken(char address, const WordShape& shape) const;
+    /// A word the dialect cannot read ("ZR83.25") where the tape writes that address as a word every
+    /// time (enough_words of them).
+    bool form_broken(const Word& w) const;
+    /// An address letter no undamaged block uses, on a tape of enough_blocks such blocks or more.
+    bool address_unused(char address) const;
+    /// The word's letter is lower case where every word of the tape is upper case, or the other way
+    /// round (enough_words of them).
+    bool case_broken(const Word& w) const;
     /// G or M code value (code_value form) used in an undamaged block.
     bool code_used(char letter, std::string_view value) const;
     /// The number a damaged block's N word must have where its neighbours keep a steady step: the
-    /// block numbers before and after line, and the step, agree.
+    /// block numbers before and after line and the tape's step agree, or two numbered blocks on each
+    /// side keep one step of their own (N99999 repeated keeps a step of 0).
     std::optional<long long> expected_number(std::uint64_t line) const;
     /// A feed, speed or tool number far outside the values the tape gives that address.
     bool value_out_of_range(char address, double value) const;
@@ -98,10 +107,13 @@ public:
     /// The program writes explicit points somewhere (for a format spec's checks).
     bool points() const { return points_; }
     static constexpr std::size_t enough_words = 5;
+    static constexpr std::size_t enough_blocks = 5;
 
 private:
     void learn_block(const Block& b, bool damaged);
     void learn_step();
+    std::optional<long long> local_sequence(std::size_t at) const;
+    static constexpr long long damaged_number = -1, no_number = -2;  // in numbers_
 
     const std::set<std::uint64_t>& damaged_lines_;
     std::unique_ptr<LintVisitor> lint_;
@@ -109,8 +121,11 @@ private:
 
     std::map<char, std::map<WordShape, std::size_t>> shapes_;
     std::map<char, std::size_t> words_;
+    std::map<char, std::size_t> unreadable_;  // words the dialect cannot read, by address, in undamaged blocks
+    std::map<char, std::size_t> addresses_;   // words (and block numbers) by address, in undamaged blocks
+    std::size_t undamaged_blocks_ = 0, lower_words_ = 0, upper_words_ = 0;
     std::set<std::string> codes_;
-    std::vector<std::pair<std::uint64_t, long long>> numbers_;  // (line, N) of undamaged blocks
+    std::vector<std::pair<std::uint64_t, long long>> numbers_;  // (line, N) of each block
     std::map<char, std::pair<double, double>> ranges_;          // F S T: least and most
     std::map<char, std::size_t> range_words_;
     std::set<std::string> excused_;

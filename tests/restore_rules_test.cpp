@@ -1,0 +1,160 @@
+// Repair from one read by the program's own rules (issue 20, "Deciding more"): the block numbers its
+// neighbours keep, the address letters and letter case a long tape uses, a word the tape always writes
+// readable; and where those rules cannot know (a short tape, a letter used once), no repair is claimed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "tape/encode.hpp"
+#include "tape/restore.hpp"
+#include "test_util.hpp"
+
+using namespace tape;
+
+namespace {
+
+Frame iso(char c) { return *FrameCode::iso().frame_for(static_cast<unsigned char>(c)); }
+
+// The tape's frame index of the first occurrence of `text` from `from`, plus `offset`.
+std::size_t frame_of(const std::vector<Frame>& tape, std::string_view text, std::size_t offset = 0,
+                     std::size_t from = 0) {
+    std::vector<Frame> frames;
+    for (char c : text) frames.push_back(iso(c));
+    auto at = std::search(tape.begin() + static_cast<std::ptrdiff_t>(from), tape.end(), frames.begin(), frames.end());
+    EXPECT_NE(at, tape.end()) << text;
+    return static_cast<std::size_t>(at - tape.begin()) + offset;
+}
+
+// The one read of tape with frame i's holes `bits` flipped, restored; the problem at i.
+struct OneFlip {
+    RestoreResult result;
+    const RestoreProblem* problem = nullptr;
+};
+OneFlip one_flip(const std::vector<Frame>& tape, std::size_t i, Frame bits, Dialect d = Dialect::automatic) {
+    auto read = tape;
+    read[i] ^= bits;
+    std::vector<std::span<const Frame>> spans{read};
+    OneFlip out{restore(spans, RestoreOptions{.code = FrameCode::iso(), .dialect = d})};
+    for (const auto& p : out.result.problems)
+        if (p.frame == i + 1) out.problem = &p;
+    return out;
+}
+
+// A long program of one shape of block, numbered in steps of 10: a tape from which its rules are learned.
+std::string long_program(int blocks, const char* number = nullptr) {
+    std::string text = "%\n";
+    for (int n = 1; n <= blocks; ++n) {
+        char line[96];
+        std::snprintf(line, sizeof line, "N%s G01 X%d.%03d Y-%d.%02d F%d\n",
+                      number ? number : std::to_string(n * 10).c_str(), 100 + n % 700, n * 37 % 1000, n % 300,
+                      n * 13 % 100, 100 + n % 50);
+        text += line;
+    }
+    return text + "M02\n";
+}
+
+}  // namespace
+
+// TOKARKA's tail: every block numbered N99999. The tape as a whole keeps no step, but the blocks around
+// a damaged number do (a step of 0), and only 99999 keeps it.
+TEST(RestoreRules, ABlockNumberIsDecidedByTheStepItsNeighboursKeep) {
+    std::string text = "%\n";
+    for (int n = 1; n <= 30; ++n) text += "N" + std::to_string(n * 10) + " G01 X" + std::to_string(n) + ".5\n";
+    for (int n = 1; n <= 40; ++n) text += "N99999 X" + std::to_string(n) + ".25 Z-0.5\n";
+    text += "N99999 M30\n";
+    auto tape = encode(text, EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t third_nine = frame_of(tape, "N99999 X20.25", 3);
+    for (Frame bit : {Frame{0x01}, Frame{0x08}, Frame{0x80}}) {
+        auto r = one_flip(tape, third_nine, bit);
+        ASSERT_NE(r.problem, nullptr);
+        EXPECT_EQ(r.problem->status, FrameStatus::inferred) << r.problem->reason;
+        EXPECT_EQ(r.result.frames[third_nine], iso('9'));
+        EXPECT_NE(r.problem->reason.find("block-number"), std::string::npos) << r.problem->reason;
+    }
+}
+
+// Where the numbers around the damaged block break their step (a block inserted, numbered by hand), they
+// decide nothing.
+TEST(RestoreRules, NumbersOutOfStepAroundABlockDecideNothing) {
+    auto tape = encode("%\nN10 X1.\nN20 X2.\nN25 X2.5\nN30 X3.\nN40 X4.\nN50 X5.\nM02\n",
+                       EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t five = frame_of(tape, "N25", 2);
+    for (int bit = 0; bit < 8; ++bit) {
+        auto r = one_flip(tape, five, static_cast<Frame>(1U << bit), Dialect::gost);
+        ASSERT_NE(r.problem, nullptr);
+        if (r.problem->status == FrameStatus::inferred) {
+            EXPECT_EQ(r.result.frames[five], iso('5')) << r.problem->reason;
+        }
+    }
+}
+
+// A damaged N letter: a V there would leave the block without the number its neighbours say it has.
+TEST(RestoreRules, ABlockTheSequenceNumbersKeepsItsNumber) {
+    auto tape = encode(long_program(40), EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t n = frame_of(tape, "N200 ");
+    auto r = one_flip(tape, n, 0x08);  // N read as F failing parity: B, D, F, G, V and f are one hole from it too
+    ASSERT_NE(r.problem, nullptr);
+    EXPECT_EQ(r.problem->status, FrameStatus::inferred) << r.problem->reason;
+    EXPECT_EQ(r.result.frames[n], iso('N'));
+}
+
+// A long tape that writes only N, G, X, Y, F and one M: a damaged G of G01 is not an A, D, U, S or W the
+// tape never uses. (M01 fits as well as G01 where M is one hole from the reading: left in doubt.)
+TEST(RestoreRules, ALongTapeRulesOutLettersItNeverUses) {
+    auto tape = encode(long_program(1200), EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t g = frame_of(tape, "N6000 G01", 6);
+    ASSERT_EQ(tape[g], iso('G'));
+    int inferred = 0;
+    for (int bit = 0; bit < 8; ++bit) {
+        auto r = one_flip(tape, g, static_cast<Frame>(1U << bit));
+        ASSERT_NE(r.problem, nullptr);
+        for (Frame c : r.problem->candidates)
+            EXPECT_NE(std::string("GMNXYF").find(static_cast<char>(c & 0x7F)), std::string::npos)
+                << "bit " << bit << ": " << static_cast<char>(c & 0x7F);
+        if (r.problem->status != FrameStatus::inferred) continue;
+        ++inferred;
+        EXPECT_EQ(r.result.frames[g], iso('G')) << "bit " << bit << ": " << r.problem->reason;
+    }
+    EXPECT_GE(inferred, 6);
+}
+
+// A short program whose last block holds the only M: M30 read damaged is as likely an M the tape has
+// not shown yet as a G it has. (The sample tape's N99 M30 was "repaired" to G30.)
+TEST(RestoreRules, ALetterUsedOnceIsNotRuledOutOnAShortTape) {
+    auto tape = encode(read_text(sample_path("circle-examples.txt")), EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t m = frame_of(tape, "N99 M30", 4);
+    for (int bit = 0; bit < 8; ++bit) {
+        auto r = one_flip(tape, m, static_cast<Frame>(1U << bit));
+        ASSERT_NE(r.problem, nullptr);
+        if (r.problem->status == FrameStatus::inferred) {
+            EXPECT_EQ(r.result.frames[m], iso('M')) << "bit " << bit << ": " << r.problem->reason;
+        }
+    }
+}
+
+// The Philips program's "N520 G0 Z283.25" with its 2 damaged: "ZR83.25" is no word this tape writes
+// (every Z it has is a letter and a number), so R does not fit where the lower-case r is ruled out.
+TEST(RestoreRules, AWordTheTapeAlwaysWritesReadableStaysSo) {
+    std::string path = std::string(TAPE_SOURCE_DIR) + "/../shared/data/outside2/other/gcw_PHILIPS.nc";
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path << ": the real program this case was found on";
+    auto tape = encode(read_text(path), EncodeOptions{});
+    std::size_t two = frame_of(tape, "N520 G0 Z283.25", 9);
+    for (int bit = 0; bit < 8; ++bit) {
+        auto r = one_flip(tape, two, static_cast<Frame>(1U << bit));
+        ASSERT_NE(r.problem, nullptr);
+        if (r.problem->status == FrameStatus::inferred) {
+            EXPECT_EQ(r.result.frames[two], iso('2')) << "bit " << bit << ": " << r.problem->reason;
+        }
+    }
+}
+
+// A tape written in capitals: the lower-case x one hole from X is ruled out, and X is left.
+TEST(RestoreRules, ALetterOfTheOtherCaseDoesNotFit) {
+    auto tape = encode(long_program(1200), EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t x = frame_of(tape, "N6000 G01 X", 10);
+    auto r = one_flip(tape, x, 0x80);  // track 8 lost: H, P, Y, Z, '\\' and x are one hole from it too
+    ASSERT_NE(r.problem, nullptr);
+    EXPECT_EQ(r.problem->status, FrameStatus::inferred) << r.problem->reason;
+    EXPECT_EQ(r.result.frames[x], iso('X'));
+}
