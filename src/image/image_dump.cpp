@@ -7,6 +7,7 @@
 
 #include "image_formats.hpp"
 #include "tape/error.hpp"
+#include "tape/limits.hpp"
 
 namespace tape {
 namespace {
@@ -146,6 +147,9 @@ private:
             repeat_ = true;
             return;
         }
+        // The offset says how long the tape is so far: '*' fills up to it, so it is checked first.
+        if (d.offset > max_tape_frames)
+            fail("the offset " + std::to_string(d.offset) + " says the tape " + std::string(too_long_text));
         if (repeat_) fill_repeats(d.offset, out);
         if (d.offset != next_offset_)
             fail("the offset says " + std::to_string(d.offset) + " where " + std::to_string(next_offset_) +
