@@ -182,27 +182,31 @@ struct ManyReadsTally {
             put("tape.ptp", t.frames), put("out.ptp", r.frames);
             for (std::size_t k = 0; k < rs.size(); ++k) put("read" + std::to_string(k + 1) + ".ptp", rs[k]);
         }
-        for (std::size_t x : check.silent_at) {
-            classify(t.frames, logs, x);
-            if (std::getenv("RESTORE_BENCH_SHOW")) show(t.frames, logs, r, x);
+        if (const char* show = std::getenv("RESTORE_BENCH_SHOW"); show && std::string(show) == "flagged")
+            for (std::size_t k = 0; k < check.flagged_at.size(); ++k)
+                show_flagged(t.frames, r, check.flagged_at[k], check.flagged_output[k], seed);
+        for (std::size_t k = 0; k < check.silent_at.size(); ++k) {
+            classify(t.frames, logs, check.silent_at[k]);
+            if (std::getenv("RESTORE_BENCH_SHOW"))
+                show(t.frames, logs, r, check.silent_at[k], check.silent_output[k], seed);
         }
+    }
+    // Frames around at as text, at in brackets, an end of block as '|'.
+    static std::string context(std::span<const tape::Frame> f, std::size_t at) {
+        std::string s;
+        for (std::size_t i = at > 12 ? at - 12 : 0; i < std::min(f.size(), at + 12); ++i) {
+            char c = static_cast<char>(f[i] & 0x7f);
+            s += i == at ? "[" : "";
+            s += c == '\n' ? '|' : (c >= 32 && c < 127 ? c : '?');
+            s += i == at ? "]" : "";
+        }
+        return s;
     }
     // RESTORE_BENCH_SHOW: each silent error with the tape, the output and the damage around it.
     static void show(const std::vector<tape::Frame>& t, const std::vector<tape::DamageLog>& logs,
-                     const tape::RestoreResult& r, std::size_t x) {
-        auto text = [](std::span<const tape::Frame> f, std::size_t at) {
-            std::string s;
-            for (std::size_t i = at > 12 ? at - 12 : 0; i < std::min(f.size(), at + 12); ++i) {
-                char c = static_cast<char>(f[i] & 0x7f);
-                s += i == at ? "[" : "";
-                s += c == '\n' ? '|' : (c >= 32 && c < 127 ? c : '?');
-                s += i == at ? "]" : "";
-            }
-            return s;
-        };
-        long lead = (tape::punched_part(r.frames).data() - r.frames.data()) - (tape::punched_part(t).data() - t.data());
-        std::fprintf(stderr, "silent at %zu: tape \"%s\" output \"%s\"\n", x, text(t, x).c_str(),
-                     text(r.frames, static_cast<std::size_t>(static_cast<long>(x) + lead)).c_str());
+                     const tape::RestoreResult& r, std::size_t x, std::size_t out, std::uint64_t set) {
+        std::fprintf(stderr, "silent at %zu (set %llu): tape \"%s\" output \"%s\"\n", x,
+                     static_cast<unsigned long long>(set), context(t, x).c_str(), context(r.frames, out).c_str());
         if (std::getenv("RESTORE_BENCH_SHOW_START")) {
             auto b = tape::punched_part(r.frames);
             std::size_t o = static_cast<std::size_t>(b.data() - r.frames.data());
@@ -225,9 +229,19 @@ struct ManyReadsTally {
                     std::fprintf(stderr, "  read %zu: %s at %zu (%zu frames)\n", k + 1,
                                  std::string(tape::damage_kind_name(e.kind)).c_str(), e.original, e.frames);
         for (const auto& p : r.problems)
-            if (p.frame && *p.frame + 12 >= x + static_cast<std::size_t>(lead) + 1 && *p.frame <= x + lead + 13)
+            if (p.frame && *p.frame + 12 >= out + 1 && *p.frame <= out + 13)
                 std::fprintf(stderr, "  problem at %llu: %s: %s\n", static_cast<unsigned long long>(*p.frame),
                              std::string(tape::status_name(p.status)).c_str(), p.reason.c_str());
+    }
+    // RESTORE_BENCH_SHOW=flagged: each frame wrong in doubt too, with the problem at it.
+    static void show_flagged(const std::vector<tape::Frame>& t, const tape::RestoreResult& r, std::size_t x,
+                             std::size_t out, std::uint64_t set) {
+        std::string status = "left out";
+        for (const auto& p : r.problems)
+            if (p.frame && *p.frame == out + 1) status = std::string(tape::status_name(p.status)) + ": " + p.reason;
+        std::fprintf(stderr, "flagged at %zu (set %llu): tape \"%s\" output \"%s\" %s\n", x,
+                     static_cast<unsigned long long>(set), context(t, x).c_str(), context(r.frames, out).c_str(),
+                     status.c_str());
     }
     // How many reads read the run of equal frames around tape frame x (and its neighbours) undamaged.
     void classify(const std::vector<tape::Frame>& t, const std::vector<tape::DamageLog>& logs, std::size_t x) {
@@ -263,11 +277,14 @@ struct ManyReadsTally {
     }
 };
 
+// Each set of reads has damage of its own: the seed counts sets, not passes (with one pass, ten tapes
+// damaged alike repeat one coincidence of damage ten times).
 void run_many(benchmark::State& state, const std::vector<CorpusTape>& tapes, std::uint64_t seeds) {
     ManyReadsTally t;
     for (auto _ : state)
         for (std::uint64_t s = 0; s < seeds; ++s)
-            for (const auto& tape : tapes) t.add(tape, static_cast<int>(state.range(0)), s);
+            for (std::size_t k = 0; k < tapes.size(); ++k)
+                t.add(tapes[k], static_cast<int>(state.range(0)), s * tapes.size() + k);
     t.report(state);
 }
 

@@ -85,11 +85,12 @@ TEST(Restore, ThreeReadsWithMixedDamageComeBackExact) {
     EXPECT_EQ(r.count(FrameStatus::unresolved) + r.count(FrameStatus::contested), 0U);
 }
 
+// A digit of X+10.: 1 and 3 both make a word that fits, so nothing decides.
 TEST(Restore, ContestedWhenTwoGoodReadsDisagree) {
     auto tape = sample_tape();
     auto a = tape, b = tape;
-    std::size_t x = find_char(tape, 'X', 30);
-    b[x] = *FrameCode::iso().frame_for('Y');  // good parity, another letter
+    std::size_t x = find_char(tape, 'X', 30) + 2;
+    b[x] = *FrameCode::iso().frame_for('3');  // good parity, another digit
     auto r = restore_all({a, b});
     const RestoreProblem* p = problem_at(r, x + 1);
     ASSERT_NE(p, nullptr);
@@ -101,13 +102,29 @@ TEST(Restore, ContestedWhenTwoGoodReadsDisagree) {
 TEST(Restore, UnstableWhenEveryReadSawSomethingElse) {
     auto tape = sample_tape();
     auto a = tape, b = tape, c = tape;
-    std::size_t x = find_char(tape, 'X', 30);
-    a[x] = *FrameCode::iso().frame_for('Y');
-    b[x] = *FrameCode::iso().frame_for('Z');
+    std::size_t x = find_char(tape, 'X', 30) + 2;
+    a[x] = *FrameCode::iso().frame_for('3');
+    b[x] = *FrameCode::iso().frame_for('5');
     auto r = restore_all({a, b, c});
     const RestoreProblem* p = problem_at(r, x + 1);
     ASSERT_NE(p, nullptr);
     EXPECT_EQ(p->status, FrameStatus::unstable);
+}
+
+// Good readings that disagree where only one makes the block fit: "Y+10. Y+20." repeats Y, so the
+// program's rules vote X, and the reason says so.
+TEST(Restore, GoodReadingsTheRulesChooseBetweenAreVoted) {
+    auto tape = sample_tape();
+    auto a = tape, b = tape;
+    std::size_t x = find_char(tape, 'X', 30);
+    b[x] = *FrameCode::iso().frame_for('Y');  // good parity, another letter
+    auto r = restore_all({a, b});
+    EXPECT_EQ(r.frames, tape);
+    const RestoreProblem* p = problem_at(r, x + 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::voted);
+    EXPECT_NE(p->reason.find("the program's rules leave one"), std::string::npos) << p->reason;
+    EXPECT_TRUE(r.complete());
 }
 
 TEST(Restore, AParityErrorOutvotedByGoodReads) {
@@ -278,9 +295,11 @@ TEST(Restore, AStainNextToAnEqualFrame) {
 
 // Two of three reads lost the same frame, unlike its neighbours: no read twice made it, so the one
 // read that has it is not outvoted into silence. It is written, and contested.
+// The 2 of "Y+20." lost by two reads of three: "Y+0." is a word too, so nothing decides.
 TEST(Restore, AFrameTwoReadsLostIsContestedNotDropped) {
     auto tape = sample_tape();
-    std::size_t x = find_char(tape, 'X', 30);
+    std::size_t x = find_char(tape, 'Y', 30) + 2;
+    ASSERT_EQ(tape[x], *FrameCode::iso().frame_for('2'));
     ASSERT_NE(tape[x - 1], tape[x]);
     ASSERT_NE(tape[x + 1], tape[x]);
     auto a = tape, b = tape, c = tape;
@@ -292,6 +311,24 @@ TEST(Restore, AFrameTwoReadsLostIsContestedNotDropped) {
     ASSERT_NE(p, nullptr);
     EXPECT_EQ(p->status, FrameStatus::contested) << p->reason;
     EXPECT_FALSE(r.complete());
+}
+
+// The X of "X+10." lost by two reads of three: "+10." with no letter is no word, so the program's rules
+// write it, and say so; one read alone backs what it is, so it stays in doubt.
+TEST(Restore, AFrameTwoReadsLostThatTheBlockNeedsIsWritten) {
+    auto tape = sample_tape();
+    std::size_t x = find_char(tape, 'X', 30);
+    auto a = tape, b = tape, c = tape;
+    b.erase(b.begin() + static_cast<std::ptrdiff_t>(x));
+    c.erase(c.begin() + static_cast<std::ptrdiff_t>(x));
+    auto r = restore_all({a, b, c});
+    EXPECT_EQ(r.frames, tape);
+    const RestoreProblem* p = problem_at(r, x + 1);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->status, FrameStatus::contested) << p->reason;
+    EXPECT_NE(p->reason.find("the program's rules decide that it stands here (without it the block breaks"),
+              std::string::npos)
+        << p->reason;
 }
 
 // Reads that disagree on how many times a frame is punched: two have the letter X twice, the third
@@ -349,10 +386,10 @@ TEST(Restore, MixedDamageIsNeverSilentlyWrong) {
 // the first candidate.
 TEST(Restore, AParityErrorLeansATieBetweenGoodReadings) {
     auto tape = sample_tape();
-    std::size_t x = find_char(tape, 'X', 30);
+    std::size_t x = find_char(tape, 'X', 30) + 2;
     auto a = tape, b = tape, c = tape;
-    b[x] = *FrameCode::iso().frame_for('Y');  // good parity, two holes from X
-    c[x] ^= 0x04;                             // X with a hole lost or gained
+    b[x] = *FrameCode::iso().frame_for('3');  // good parity, two holes from 1
+    c[x] ^= 0x04;                             // 1 with a hole lost or gained
     auto r = restore_all({a, b, c});
     EXPECT_EQ(r.frames[x], c[x]);
     const RestoreProblem* p = problem_at(r, x + 1);
@@ -363,8 +400,8 @@ TEST(Restore, AParityErrorLeansATieBetweenGoodReadings) {
 }
 
 // Two reads, one with a frame the other lacks: like its neighbour it may have been read twice, and "XX"
-// is no word, so the grammar leaves it out; unlike them it could not be read twice, so it is written,
-// contested.
+// is no word, so the grammar leaves it out; unlike them it could not be read twice, and "+10." without
+// its X is no word, so the grammar writes it (in doubt: one read alone backs what it is).
 TEST(Restore, OneOfTwoReadsWithAFrameMoreWritesItOnlyUnlikeItsNeighbours) {
     auto tape = sample_tape();
     std::size_t x = find_char(tape, 'X', 30);

@@ -24,7 +24,7 @@ namespace tape {
 
 enum class FrameStatus : std::uint8_t {
     clean,       ///< every read that has it agrees, and it is a character of the code
-    voted,       ///< a majority (or parity) decided between the reads
+    voted,       ///< a majority (or parity, or the program's rules) decided between the reads
     inferred,    ///< repaired: the one single-hole change that fits the code and the program's rules
     guessed,     ///< RestoreOptions::guess: the likeliest of several changes that fit, the others listed
     contested,   ///< good readings disagree and nothing decides: written as read (the likeliest one when
@@ -104,7 +104,9 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
 /// How a restoration did against the tape its reads were made from (reads damaged by tape::damage, in
 /// tests and benchmarks of restoring): the data of the output (first to last punched frame) aligned with
 /// the tape's, frame by frame. A frame left out of or added to a run of equal frames is in doubt when any
-/// copy of the run (or a frame left out there) is; a wrong inferred frame is silently wrong.
+/// copy of the run (or a frame left out there) is; the frames of a stretch that does not match (a misread
+/// stretch) are in doubt when the report doubts any frame of it or frames left out at its ends; a wrong
+/// inferred frame is silently wrong.
 struct RestoreCheck {
     std::uint64_t right = 0;           ///< data frames of the tape the output holds as punched
     std::uint64_t silently_wrong = 0;  ///< frames wrong, added or left out where the report has no doubt
@@ -112,9 +114,11 @@ struct RestoreCheck {
     /// Blank frames of the leader and trailer more or fewer than the tape has: their length is nobody's
     /// concern (it follows the majority of the reads), and is not counted as wrong.
     std::uint64_t blank_ends = 0;
-    bool exact = false;                  ///< the data (first to last punched frame) is the tape's
-    std::vector<std::size_t> silent_at;  ///< where each silently wrong frame is, as an index of the tape (an added
-                                         ///< frame: the tape frame before it)
+    bool exact = false;                      ///< the data (first to last punched frame) is the tape's
+    std::vector<std::size_t> silent_at;      ///< where each silently wrong frame is, as an index of the tape (an added
+                                             ///< frame: the tape frame before it)
+    std::vector<std::size_t> silent_output;  ///< and as an index of the output (a left-out frame: where it would be)
+    std::vector<std::size_t> flagged_at, flagged_output;  ///< the same of each frame wrong and in doubt
 };
 RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& result);
 

@@ -16,7 +16,8 @@ struct RepairWorld;
 /// arcs; a format spec when given), the damaged frames of a block tried together. A frame that every
 /// fitting choice gives one value is inferred, its reason naming the rules that ruled the others out;
 /// with options.guess the likeliest of several is guessed; the others stay as read, the values that fit
-/// listed. A program no NC grammar fits (MACRO source, SIR text) gets none.
+/// listed. Good readings that disagree (contested, unstable) are held against the block too: the one
+/// that alone fits is voted. A program no NC grammar fits (MACRO source, SIR text) gets none.
 /// world: what decide_runs_by_rules learned of the image, if it did (made here otherwise).
 void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreOptions& options,
                        std::unique_ptr<RepairWorld> world);

@@ -25,6 +25,23 @@ void learn_skipped_frames(RepairWorld& w, const FrameCode& code, std::span<const
     }
 }
 
+// A damaged frame at `at` may touch its line's block number: it stands among the line's first frames up
+// to the first that is no part of a number ("/", ":", "N" and digits, blanks skipped), that one included
+// (where a lost digit of the number is placed), or it is the line's first character.
+bool touches_number(const FrameCode& code, std::span<const Frame> image, std::size_t line_start, std::size_t at) {
+    bool first = true;
+    for (std::size_t i = line_start; i <= at; ++i) {
+        FrameKind k = code.kind(image[i]);
+        if (k == FrameKind::blank || k == FrameKind::rubout) continue;
+        if (i == at) return true;
+        char c = k == FrameKind::character ? code.character(image[i]) : '?';
+        bool number = c == '/' || c == ':' || c == 'N' || c == 'n' || (c >= '0' && c <= '9') || (c == ' ' && !first);
+        if (!number) return false;
+        first = false;
+    }
+    return true;
+}
+
 }  // namespace
 
 std::uint64_t RepairWorld::line_of(std::size_t frame) const {
@@ -46,7 +63,11 @@ std::unique_ptr<RepairWorld> learn_world(std::span<const Frame> image, std::span
     w->setup.nc = looks_like_nc_program(w->text);
     w->setup.dialect = o.dialect != Dialect::automatic ? o.dialect : guess_dialect(w->text).dialect;
     std::set<std::uint64_t>& lines = w->damaged_lines;
-    for (std::size_t d : damaged) lines.insert(w->line_of(d));
+    for (std::size_t d : damaged) {
+        std::uint64_t line = w->line_of(d);
+        lines.insert(line);
+        if (touches_number(code, image, w->block_starts[line - 1], d)) w->numbers_damaged.insert(line);
+    }
     for (std::size_t l = 1; l < w->block_starts.size(); ++l) {
         if (lines.count(l)) continue;
         auto line = image.subspan(w->block_starts[l - 1], w->block_starts[l] - w->block_starts[l - 1]);
@@ -54,7 +75,7 @@ std::unique_ptr<RepairWorld> learn_world(std::span<const Frame> image, std::span
         learn_skipped_frames(*w, code, line);
     }
     if (!w->setup.nc) return w;
-    w->rules = std::make_unique<TapeRules>(lines, o.spec);
+    w->rules = std::make_unique<TapeRules>(lines, w->numbers_damaged, o.spec);
     load_each(w->text, {}, *w->rules, LoadOptions{w->setup.dialect});
     w->rules->finish(w->text);
     w->setup.rules = w->rules.get();

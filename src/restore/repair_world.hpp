@@ -13,6 +13,7 @@ namespace tape::detail {
 struct RepairWorld {
     RepairSetup setup;
     std::set<std::uint64_t> damaged_lines;
+    std::set<std::uint64_t> numbers_damaged;  ///< damaged lines whose damage may touch the block number
     std::unique_ptr<TapeRules> rules;
     CharModel chars;  ///< how the text goes, for guesses
     /// The undamaged lines hold blank tape between characters, or DEL: only then is either a repair

@@ -1,6 +1,7 @@
 // A restoration scored against the tape its reads were made from (tape/restore.hpp), by the counting
-// rules of restoring's figures: the data only (first to last punched frame), and a frame left out or
-// added in a run of equal frames in doubt when any copy of the run is.
+// rules of restoring's figures: the data only (first to last punched frame), a frame left out or added
+// in a run of equal frames in doubt when any copy of the run is, and a stretch of frames that do not
+// match in doubt when the report doubts anything in it.
 #include <algorithm>
 
 #include "tape/restore.hpp"
@@ -69,24 +70,40 @@ RestoreCheck check_restore(std::span<const Frame> tape, const RestoreResult& r) 
     };
     std::size_t written_before = offset;  // output frames before this column
     std::size_t tape_at = 0;              // the tape frame of this column, or of the last one before it
-    for (std::size_t c = 0; c < al.columns(); ++c) {
-        std::int32_t t = al.frame(c, 0), o = al.frame(c, 1);
-        if (t != ReadAlignment::none) tape_at = static_cast<std::size_t>(t);
+    for (std::size_t c = 0; c < al.columns();) {
         if (matched(c)) {
-            ++out.right, ++written_before;
+            if (al.frame(c, 0) != ReadAlignment::none) tape_at = static_cast<std::size_t>(al.frame(c, 0));
+            ++out.right, ++written_before, ++c;
             continue;
         }
-        bool doubt;
-        if (o != ReadAlignment::none) {
-            std::size_t i = offset + static_cast<std::size_t>(o);
-            doubt = d.frame[i] || run_in_doubt(r, d, i, i + 1, r.frames[i]);
-            ++written_before;
-        } else {
-            Frame left_out = a[static_cast<std::size_t>(t)];
-            doubt = d.after[written_before] || run_in_doubt(r, d, written_before, written_before, left_out);
+        // A stretch of columns that do not match: a misread stretch is one place, in doubt where the report
+        // puts a doubt anywhere in it (a frame, or frames left out at either end), else frame by frame.
+        std::size_t end = c, from = written_before, to = written_before;
+        bool stretch_doubt = false;
+        for (; end < al.columns() && !matched(end); ++end)
+            if (al.frame(end, 1) != ReadAlignment::none) {
+                stretch_doubt |= d.frame[offset + static_cast<std::size_t>(al.frame(end, 1))];
+                ++to;
+            }
+        for (std::size_t i = from; i <= to && i < d.after.size(); ++i) stretch_doubt |= d.after[i];
+        for (; c < end; ++c) {
+            std::int32_t t = al.frame(c, 0), o = al.frame(c, 1);
+            if (t != ReadAlignment::none) tape_at = static_cast<std::size_t>(t);
+            bool doubt = stretch_doubt;
+            std::size_t output_at = written_before;
+            if (o != ReadAlignment::none) {
+                std::size_t i = offset + static_cast<std::size_t>(o);
+                doubt |= run_in_doubt(r, d, i, i + 1, r.frames[i]);
+                ++written_before;
+            } else {
+                Frame left_out = a[static_cast<std::size_t>(t)];
+                doubt |= run_in_doubt(r, d, written_before, written_before, left_out);
+            }
+            (doubt ? out.flagged_at : out.silent_at)
+                .push_back(static_cast<std::size_t>(a.data() - tape.data()) + tape_at);
+            (doubt ? out.flagged_output : out.silent_output).push_back(output_at);
+            ++(doubt ? out.flagged_wrong : out.silently_wrong);
         }
-        if (!doubt) out.silent_at.push_back(static_cast<std::size_t>(a.data() - tape.data()) + tape_at);
-        ++(doubt ? out.flagged_wrong : out.silently_wrong);
     }
     return out;
 }

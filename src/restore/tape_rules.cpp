@@ -12,6 +12,14 @@
 namespace tape::detail {
 namespace {
 
+// The word's digits start with a zero that is no value of its own ("01", "0040000", not "0" or "0.5"):
+// the tape punches its words to a fixed width.
+bool zero_padded(const Word& w) {
+    std::string d = w.digits();
+    int before = w.has_point() ? w.point : static_cast<int>(d.size());
+    return before > 1 && d.front() == '0';
+}
+
 // The value of a plain word as a number: digits with the point where it is written (without one, the
 // digits as a whole number: the implied point is the same for every such word of a block).
 std::optional<double> number_of(const Word& w) {
@@ -86,8 +94,12 @@ void advance(MotionState& state, const Block& block) {
     }
 }
 
-TapeRules::TapeRules(const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec)
-    : damaged_lines_(damaged_lines), lint_(std::make_unique<LintVisitor>(LintOptions{spec})), spec_(spec) {}
+TapeRules::TapeRules(const std::set<std::uint64_t>& damaged_lines, const std::set<std::uint64_t>& numbers_damaged,
+                     const FormatSpec* spec)
+    : damaged_lines_(damaged_lines),
+      numbers_damaged_(numbers_damaged),
+      lint_(std::make_unique<LintVisitor>(LintOptions{spec})),
+      spec_(spec) {}
 
 TapeRules::~TapeRules() = default;
 
@@ -129,7 +141,8 @@ void TapeRules::finish(std::string_view text) {
 }
 
 void TapeRules::learn_block(const Block& b, bool damaged) {
-    numbers_.emplace_back(b.where.line, damaged                             ? damaged_number
+    bool number_damaged = b.damaged || numbers_damaged_.count(b.where.line) > 0;
+    numbers_.emplace_back(b.where.line, number_damaged                      ? damaged_number
                                         : !b.number || !b.number->integer() ? no_number
                                                                             : *b.number->integer());
     if (damaged) return;
@@ -142,11 +155,12 @@ void TapeRules::learn_block(const Block& b, bool damaged) {
         ++(lower ? lower_words_ : upper_words_);
     }
     if (b.number)  // block numbers keep a format too (N001, :005): under 'N'
-        if (auto s = shape_of(*b.number)) ++shapes_['N'][*s], ++words_['N'];
+        if (auto s = shape_of(*b.number)) ++shapes_['N'][*s], ++words_['N'], padded_['N'] += zero_padded(*b.number);
     for (const auto& w : b.words) {
         if (auto s = shape_of(w)) {
             ++shapes_[w.address][*s];
             ++words_[w.address];
+            padded_[w.address] += zero_padded(w);
         }
         if (w.address == 'G' || w.address == 'M')
             codes_.insert(std::string(1, w.address) + code_value(w.text.substr(1)));
@@ -201,9 +215,15 @@ bool TapeRules::format_broken(char address, const WordShape& shape) const {
     }
     bool point = shape.after >= 0;
     if ((pointed == 0 && point) || (pointed == n->second && !point)) return true;  // point style
+    if (more_digits_than_ever(address, shape)) return true;
     if (point && pointed >= enough_words && decimals.size() == 1 && *decimals.begin() != shape.after) return true;
-    if (widths.size() == 1 && *widths.begin() != shape.before + std::max(shape.after, 0)) return true;  // fixed width
-    if ((plus == 0 && shape.sign == '+') || (signed_ == n->second && !shape.sign)) return true;         // sign style
+    // A fixed width shows in zeros punched before the digits (N001, X+0040000): words of one width alone
+    // (M3, M5, M8, then M30) are no format.
+    auto padded = padded_.find(address);
+    if (widths.size() == 1 && padded != padded_.end() && padded->second > 0 &&
+        *widths.begin() != shape.before + std::max(shape.after, 0))
+        return true;
+    if ((plus == 0 && shape.sign == '+') || (signed_ == n->second && !shape.sign)) return true;  // sign style
     return false;
 }
 
@@ -229,6 +249,25 @@ bool TapeRules::case_broken(const Word& w) const {
     if (w.text.empty() || !std::isalpha(static_cast<unsigned char>(w.text.front()))) return false;
     bool lower = std::islower(static_cast<unsigned char>(w.text.front()));
     return (lower ? upper_words_ : lower_words_) >= enough_words && (lower ? lower_words_ : upper_words_) == 0;
+}
+
+// More digits before the point (or in all, without one) than any word of the address of that style has
+// on a tape that writes it often, many words with the most: "X-1338.958" where X never has more than
+// three, and many have three.
+bool TapeRules::more_digits_than_ever(char address, const WordShape& shape) const {
+    constexpr std::size_t many_words = 100, many_at_most = 10;
+    // Codes and numbers are no quantities: M30 after many M3, N10000 after N9990.
+    if (address == 'G' || address == 'M' || address == 'N' || address == 'O' || address == ':') return false;
+    bool point = shape.after >= 0;
+    int most = -1;
+    std::size_t words = 0, at_most = 0;
+    for (const auto& [s, count] : shapes_.at(address)) {
+        if ((s.after >= 0) != point) continue;
+        words += count;
+        if (s.before > most) most = s.before, at_most = 0;
+        if (s.before == most) at_most += count;
+    }
+    return words >= many_words && at_most >= many_at_most && shape.before > most;
 }
 
 bool TapeRules::code_used(char letter, std::string_view value) const {

@@ -58,8 +58,10 @@ std::optional<bool> arc_agrees(const MotionState& before, const Block& block);
 class TapeRules : public ProgramVisitor {
 public:
     /// damaged_lines: the lines (from 1) whose blocks are left out of what is learned; the motion state
-    /// before each is kept.
-    TapeRules(const std::set<std::uint64_t>& damaged_lines, const FormatSpec* spec);
+    /// before each is kept. numbers_damaged: those of them whose damage may touch the block number (the
+    /// others' numbers still tell the sequence).
+    TapeRules(const std::set<std::uint64_t>& damaged_lines, const std::set<std::uint64_t>& numbers_damaged,
+              const FormatSpec* spec);
     ~TapeRules() override;
 
     void dialect(const DialectChoice& choice) override { lint_->dialect(choice); }
@@ -73,7 +75,8 @@ public:
 
     /// A word of this shape breaks how the tape writes the address (at least enough_words times, every
     /// time so): its point style (always or never a point), its number of decimals, a fixed width
-    /// (zeros punched), its sign style (never '+', or always a sign).
+    /// (zeros punched), its sign style (never '+', or always a sign); or it has more digits before the
+    /// point than any of a hundred words or more of that address (ten of them with the most).
     bool format_broken(char address, const WordShape& shape) const;
     /// A word the dialect cannot read ("ZR83.25") where the tape writes that address as a word every
     /// time (enough_words of them).
@@ -113,14 +116,17 @@ private:
     void learn_block(const Block& b, bool damaged);
     void learn_step();
     std::optional<long long> local_sequence(std::size_t at) const;
+    bool more_digits_than_ever(char address, const WordShape& shape) const;
     static constexpr long long damaged_number = -1, no_number = -2;  // in numbers_
 
     const std::set<std::uint64_t>& damaged_lines_;
+    const std::set<std::uint64_t>& numbers_damaged_;
     std::unique_ptr<LintVisitor> lint_;
     MotionState state_;
 
     std::map<char, std::map<WordShape, std::size_t>> shapes_;
     std::map<char, std::size_t> words_;
+    std::map<char, std::size_t> padded_;      // words punched with leading zeros, by address
     std::map<char, std::size_t> unreadable_;  // words the dialect cannot read, by address, in undamaged blocks
     std::map<char, std::size_t> addresses_;   // words (and block numbers) by address, in undamaged blocks
     std::size_t undamaged_blocks_ = 0, lower_words_ = 0, upper_words_ = 0;

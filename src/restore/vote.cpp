@@ -238,6 +238,7 @@ bool Voter::gaps_are_lone(std::size_t c) const {
 void Voter::half_present(std::size_t c, const Heard& h) {
     const auto& front = h.tally.front();
     bool dropped = h.repeat && !alone_beside(c) && front.value != blank_frame && gaps_are_lone(c);
+    out_.verdicts[c].presence = true;
     set(c, FrameStatus::contested, front.value,
         std::string("half the reads that cover this place have a frame here, half do not; ") +
             (dropped    ? "like its neighbour, it may be read twice: not written"
@@ -260,15 +261,28 @@ bool Voter::presence(std::size_t c, const Heard& h) {
     // it, or a splice put it there. (Several such frames in a row are a stretch one read misread.)
     if (present == 1 && lost > 1 && front.good && !h.repeat && front.value != blank_frame && !lone_blank &&
         !alone_beside(c)) {
+        out_.verdicts[c].presence = true;
         set(c, FrameStatus::contested, front.value,
             of_reads(1, h.covering, "has this frame") +
                 ", not as a neighbour read twice: the others lost it, or a splice put it there; written",
             true);
         return true;
     }
+    // One read has a frame failing parity, unlike its neighbours and read well around it: no frame read
+    // twice, but one the others lost, misread. Written as read, in doubt (repaired where a change fits).
+    if (h.present == 1 && lost > 1 && !front.good && !h.repeat && front.value != blank_frame && !lone_blank &&
+        !alone_beside(c)) {
+        set(c, FrameStatus::unresolved, front.value,
+            of_reads(1, h.covering, "has a frame here") +
+                ", failing parity and not as a neighbour read twice: the others lost it; written as read",
+            true);
+        return true;
+    }
     if (present < lost && (present <= 1 || h.good_values > 1 || !front.good || lone_blank)) {
         // Where several reads slipped in the stretch, a vote won by one read decides nothing.
         bool tangled = v_.tangled[c] && !lone_blank && lost - present <= 1;
+        // A good frame unlike its neighbours is no frame read twice: the program's rules may say it stands.
+        out_.verdicts[c].presence = tangled || (present == 1 && front.good && !h.repeat && front.value != blank_frame);
         set(c, tangled ? FrameStatus::contested : FrameStatus::extra, front.value,
             of_reads(present, h.covering, "have this frame") +
                 (tangled ? ", and more than one read slipped in this stretch: not written, but nothing decides"
@@ -277,6 +291,7 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         return true;
     }
     if (present < lost) {
+        out_.verdicts[c].presence = true;
         set(c, FrameStatus::contested, front.value,
             of_reads(present, h.covering, "agree on this frame") +
                 " and the others have none: lost by them, or read twice; not written, as most reads have none",
@@ -288,6 +303,7 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         return true;
     }
     if (lost > 0 && h.repeat && h.good_values == 1 && front.good) {
+        out_.verdicts[c].presence = true;
         set(c, FrameStatus::contested, front.value,
             of_reads(present, h.covering, "have this frame") +
                 " once more than the others, and too few reads cover the run to weigh it: written",
@@ -306,11 +322,13 @@ void Voter::values(std::size_t c, const Heard& h) {
         return;
     }
     if (t.size() == 1 && h.lost == 0 && h.unheard == 0) return set(c, FrameStatus::clean, t.front().value, "", true);
-    if (h.unheard > 0 && h.present == 1 && h.lost == 0)
+    if (h.unheard > 0 && h.present == 1 && h.lost == 0) {
+        out_.verdicts[c].presence = true;
         return set(c, FrameStatus::contested, t.front().value,
                    of_reads(1, h.covering, "has this frame") +
                        " and the others misread this stretch: written, but nothing backs it",
                    true);
+    }
     if (t.size() == 1 || !t[1].good || t[0].weight > t[1].weight) {
         bool only_good = t.size() > 1 && !t[1].good && t[0].weight <= t[1].weight;
         std::string reason = only_good ? "the only good reading (the others fail parity or are blank among holes)"
@@ -343,6 +361,7 @@ void Voter::values(std::size_t c, const Heard& h) {
 }
 
 void Voter::column(std::size_t c, const RunDecision* run, bool run_writes) {
+    out_.verdicts[c].presence = false;
     Heard h = hear(v_, c);
     if (h.tally.empty()) return only_misreadings(c);
     if (run) return run_column(c, *run, run_writes, h);

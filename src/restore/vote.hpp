@@ -54,7 +54,10 @@ std::vector<bool> slips_in_several_reads(const ReadAlignment& a, Reads reads);
 struct Verdict {
     Frame written = blank_frame;
     FrameStatus status = FrameStatus::clean;
-    bool write = true;          ///< false: left out (extra, or contested and most reads lack it)
+    bool write = true;  ///< false: left out (extra, or contested and most reads lack it)
+    /// Whether a frame stands here at all is contested: some reads have one, others none, and neither
+    /// side decides (the program's rules may: decide_runs_by_rules).
+    bool presence = false;
     std::int32_t problem = -1;  ///< its entry in the problems, or -1 when clean
 };
 
