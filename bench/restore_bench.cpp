@@ -4,15 +4,16 @@
 // undecidable (some did) or invisible (none did).
 // Run: build/bin/restore_bench (Release: cmake -DCMAKE_BUILD_TYPE=Release, target restore_bench).
 //   BM_OneRead<corpus>/guess:  1 read, single-hole flips in 0.5% of the data frames
-//   BM_ThreeReads<corpus>:     3 reads, each with 1% of its frames damaged (flips, drops, doubles, bursts)
-//   BM_FiveReads<corpus>:      5 such reads
+//   BM_ManyReads<corpus>/N:    N reads (3 or 5), each with 1% of its frames damaged (flips, drops, doubles,
+//                              bursts), every set of reads damaged by seeds of its own
 //   BM_FiveReadsSpeed:         5 reads of 10^6 frames aligned, voted and repaired
 // Corpora: generated programs (some with mistakes of their own), the sample tapes, and real programs
 // and DEC source tapes from ../shared/data/outside* (a note says what is left out where it is absent).
 // RESTORE_BENCH_SCALE (default 1) multiplies the number of tapes and seeds; RESTORE_BENCH_SHOW=1 prints each
 // silent error of the many-read runs with the tape, the output, the damage and the problems around it
-// (RESTORE_BENCH_SHOW_START=1: and the output's first data frames); RESTORE_BENCH_DUMP=PREFIX writes the
-// first set with more than 1000 silent errors as PREFIXtape.ptp, PREFIXout.ptp and PREFIXreadN.ptp.
+// (RESTORE_BENCH_SHOW_START=1: and the output's first data frames), and each frame of one read not
+// restored right; RESTORE_BENCH_SHOW=flagged also each wrong frame in doubt; RESTORE_BENCH_DUMP=PREFIX
+// writes the first set with more than 1000 silent errors as PREFIXtape.ptp, PREFIXout.ptp and PREFIXreadN.ptp.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -188,7 +189,7 @@ struct ManyReadsTally {
         for (std::size_t k = 0; k < check.silent_at.size(); ++k) {
             classify(t.frames, logs, check.silent_at[k]);
             if (std::getenv("RESTORE_BENCH_SHOW"))
-                show(t.frames, logs, r, check.silent_at[k], check.silent_output[k], seed);
+                show(t.name, t.frames, logs, r, check.silent_at[k], check.silent_output[k], seed);
         }
     }
     // Frames around at as text, at in brackets, an end of block as '|'.
@@ -203,9 +204,10 @@ struct ManyReadsTally {
         return s;
     }
     // RESTORE_BENCH_SHOW: each silent error with the tape, the output and the damage around it.
-    static void show(const std::vector<tape::Frame>& t, const std::vector<tape::DamageLog>& logs,
-                     const tape::RestoreResult& r, std::size_t x, std::size_t out, std::uint64_t set) {
-        std::fprintf(stderr, "silent at %zu (set %llu): tape \"%s\" output \"%s\"\n", x,
+    static void show(const std::string& name, const std::vector<tape::Frame>& t,
+                     const std::vector<tape::DamageLog>& logs, const tape::RestoreResult& r, std::size_t x,
+                     std::size_t out, std::uint64_t set) {
+        std::fprintf(stderr, "silent at %zu (%s, set %llu): tape \"%s\" output \"%s\"\n", x, name.c_str(),
                      static_cast<unsigned long long>(set), context(t, x).c_str(), context(r.frames, out).c_str());
         if (std::getenv("RESTORE_BENCH_SHOW_START")) {
             auto b = tape::punched_part(r.frames);
@@ -295,14 +297,16 @@ void BM_ManyReadsGenerated(benchmark::State& state) {
 }
 BENCHMARK(BM_ManyReadsGenerated)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
 
-// Real programs back to back on a reel of 10^6 frames, with the sections they repeat.
-void BM_ManyReadsRealReel(benchmark::State& state) {
+// Real programs and DEC source tapes, each restored as its own tape (one program's style, its own
+// repeated sections: TOKARKA holds thousands of near-identical blocks, comp.ngc two near-identical
+// sections), ten sets of reads each: about 7 x 10^6 frames.
+void BM_ManyReadsReal(benchmark::State& state) {
     std::string note;
     auto tapes = bench::real_tapes(note);
     if (tapes.empty()) return state.SkipWithError(note.c_str());
-    run_many(state, {bench::reel_of(tapes, 1'000'000)}, 10 * scale());
+    run_many(state, tapes, 10 * scale());
 }
-BENCHMARK(BM_ManyReadsRealReel)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_ManyReadsReal)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_ManyReadsSampleTapes(benchmark::State& state) { run_many(state, bench::sample_tapes(), 1000 * scale()); }
 BENCHMARK(BM_ManyReadsSampleTapes)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);

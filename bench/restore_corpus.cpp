@@ -118,19 +118,4 @@ std::vector<CorpusTape> real_tapes(std::string& note) {
     return out;
 }
 
-CorpusTape reel_of(const std::vector<CorpusTape>& programs, std::size_t frames) {
-    CorpusTape reel;
-    reel.name = "reel";
-    while (reel.frames.size() < frames)
-        for (const auto& p : programs) {
-            if (!p.nc) continue;
-            auto data = tape::punched_part(p.frames);
-            reel.frames.insert(reel.frames.end(), 40, tape::blank_frame);
-            reel.frames.insert(reel.frames.end(), data.begin(), data.end());
-        }
-    reel.frames.insert(reel.frames.end(), 40, tape::blank_frame);
-    reel.code = code_frames(reel.frames, false);
-    return reel;
-}
-
 }  // namespace bench

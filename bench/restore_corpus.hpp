@@ -30,8 +30,4 @@ std::vector<CorpusTape> sample_tapes();
 /// what was left out and why.
 std::vector<CorpusTape> real_tapes(std::string& note);
 
-/// One long tape of the given programs back to back (blank tape between), repeated until it has about
-/// `frames` frames: a reel of real programs, with the sections they repeat.
-CorpusTape reel_of(const std::vector<CorpusTape>& programs, std::size_t frames);
-
 }  // namespace bench

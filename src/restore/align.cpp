@@ -90,21 +90,25 @@ Pairs matching_runs(const Runs& rr, const Runs& dr, std::size_t& could, Pairs& r
     return anchors;
 }
 
-// Runs that occur more than once anchor only near the diagonal the unique runs around them keep: where
-// one read damaged one copy and the other another, pairing copies in order would pair different
-// places. Where no run is unique (a program punched twice, and nothing else), they anchor alone.
+// Runs that occur more than once anchor only on the diagonals the unique runs around them keep, give or
+// take the few frames a reader drops or doubles in between: where one read damaged one copy and the
+// other another, pairing copies in order would pair different places, and in a program of blocks alike
+// but for a digit (a drilling pattern) a copy one block away is as near as a block is long. Where no run
+// is unique (a program punched twice, and nothing else), they anchor alone.
 Pairs with_repeats(const Pairs& unique, const Pairs& repeated) {
     if (unique.empty()) return repeated;
-    constexpr std::int64_t near = 32;
     Pairs out = unique;
     for (auto [i, j] : repeated) {
         auto next = std::lower_bound(unique.begin(), unique.end(), std::make_pair(i, INT32_MIN));
-        std::int64_t d = static_cast<std::int64_t>(j) - i;
-        bool ok = false;
-        if (next != unique.end()) ok |= std::abs(d - (static_cast<std::int64_t>(next->second) - next->first)) <= near;
-        if (next != unique.begin())
-            ok |= std::abs(d - (static_cast<std::int64_t>(std::prev(next)->second) - std::prev(next)->first)) <= near;
-        if (ok) out.emplace_back(i, j);
+        std::int64_t d = static_cast<std::int64_t>(j) - i, low = INT64_MAX, high = INT64_MIN, far = 0;
+        for (auto n : {next, next == unique.begin() ? unique.end() : std::prev(next)}) {
+            if (n == unique.end()) continue;
+            std::int64_t nd = static_cast<std::int64_t>(n->second) - n->first;
+            low = std::min(low, nd), high = std::max(high, nd);
+            far = std::max<std::int64_t>(far, std::abs(static_cast<std::int64_t>(n->first) - i));
+        }
+        std::int64_t slack = 2 + far / 256;  // drops and doubles at 1 % of frames drift a read about this much
+        if (d >= low - slack && d <= high + slack) out.emplace_back(i, j);
     }
     std::sort(out.begin(), out.end());
     return out;

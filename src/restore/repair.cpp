@@ -38,6 +38,44 @@ bool code_does_not_fit(std::span<const Frame> frames, const FrameCode& code) {
     return data.size() >= 8 && bad * 4 > data.size();
 }
 
+// The rules the block of one line's outvoted problems breaks as written, their frames judged as the
+// damaged ones (an error the block has anyway decides nothing).
+Breaks judge_as_written(const RestoreResult& out, const RepairWorld& w, std::span<RestoreProblem* const> line) {
+    std::size_t first = static_cast<std::size_t>(*line.front()->frame - 1);
+    auto range = block_around(w.setup.code, out.frames, first);
+    if (!range || !w.setup.nc) return {};
+    std::vector<std::size_t> places;
+    for (const RestoreProblem* p : line) places.push_back(static_cast<std::size_t>(*p->frame - 1));
+    BlockJudge judge(w.setup, out.frames, range->first, range->second, w.line_of(first), places);
+    BlockTry as_written{std::vector<Frame>(judge.frames().begin(), judge.frames().end()), {}};
+    for (std::size_t at : places) as_written.decided.push_back(at - range->first);
+    Breaks breaks = judge.judge(as_written);
+    std::erase(breaks, std::string(arc_closes));
+    std::erase(breaks, std::string("arc"));
+    return breaks;
+}
+
+// Frames voted against a good reading whose block, as written, breaks the program's rules: the reads
+// may have been paired at the wrong place, so they stay in doubt.
+void doubt_votes_that_break_their_block(RestoreResult& out, const RepairWorld& w,
+                                        std::span<RestoreProblem* const> outvoted) {
+    for (std::size_t a = 0; a < outvoted.size();) {
+        std::uint64_t line = w.line_of(static_cast<std::size_t>(*outvoted[a]->frame - 1));
+        std::size_t b = a + 1;
+        while (b < outvoted.size() && w.line_of(static_cast<std::size_t>(*outvoted[b]->frame - 1)) == line) ++b;
+        Breaks breaks = judge_as_written(out, w, outvoted.subspan(a, b - a));
+        if (!breaks.empty())
+            for (RestoreProblem* p : outvoted.subspan(a, b - a)) {
+                std::string rules;
+                for (const auto& r : breaks) rules += (rules.empty() ? "" : ", ") + r;
+                set_status(out, *p, FrameStatus::contested, p->written,
+                           p->reason + "; but its block as written breaks " + rules +
+                               ": the reads may be paired at the wrong place, so it stays in doubt");
+            }
+        a = b;
+    }
+}
+
 // Good readings that disagree (not on a run's length, which the vote decided as a whole), where every
 // read that covers the place has a frame there: the block's rules may leave one. Where a read has none,
 // the frame may be one read twice or a stain read as a frame, and "no frame" is a choice the readings
@@ -51,9 +89,19 @@ bool tie(const RestoreProblem& p) {
     return true;
 }
 
+// A frame the vote gave to the majority against another good reading (not one failing parity): flips
+// fail parity, so such a disagreement is a stain, or reads paired at the wrong place (a frame read twice
+// beside another lost).
+bool outvoted_good_reading(const FrameCode& code, const RestoreProblem& p) {
+    if (p.status != FrameStatus::voted || p.run_length) return false;
+    return std::any_of(p.seen.begin(), p.seen.end(), [&](const std::optional<Frame>& f) {
+        return f && *f != p.written && !is_bad_frame(code.kind(*f));
+    });
+}
+
 void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreOptions& o,
                        std::unique_ptr<RepairWorld> world) {
-    std::vector<RestoreProblem*> open;
+    std::vector<RestoreProblem*> open, outvoted;
     std::vector<std::size_t> doubtful;
     for (auto& p : out.problems) {
         // A frame left out (not written) puts in doubt the line it was left out of.
@@ -63,8 +111,9 @@ void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreO
         }
         if (p.status != FrameStatus::clean) doubtful.push_back(static_cast<std::size_t>(*p.frame - 1));
         if (p.status == FrameStatus::unresolved || tie(p)) open.push_back(&p);
+        if (outvoted_good_reading(code, p)) outvoted.push_back(&p);
     }
-    if (open.empty()) return;
+    if (open.empty() && outvoted.empty()) return;
     if (code_does_not_fit(out.frames, code)) {
         for (RestoreProblem* p : open)
             if (p->status == FrameStatus::unresolved)
@@ -72,6 +121,7 @@ void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreO
         return;
     }
     if (!world) world = learn_world(out.frames, doubtful, code, o);
+    doubt_votes_that_break_their_block(out, *world, outvoted);
     std::vector<RestoreProblem*> block;
     std::uint64_t block_line = 0;
     constexpr std::size_t most_damaged = 8;  // frames of one block tried together

@@ -69,16 +69,37 @@ bool only_copies_of(const VoteContext& v, std::size_t c, Frame value) {
     return true;
 }
 
+// The column beside the run on one side (before: the one before first; else the one at end), past up to
+// a few columns that only a minority of the reads covering them have a frame in (another read's frame
+// read twice, or its stain): a read lacking those lost nothing. SIZE_MAX at the tape's end.
+std::size_t beside_column(const VoteContext& v, std::size_t first, std::size_t end, bool before) {
+    constexpr std::size_t most_skipped = 4;
+    auto minority = [&](std::size_t c) {
+        std::size_t covering = 0, present = 0;
+        for (std::size_t r = 0; r < v.a.reads(); ++r)
+            if (v.a.covers(r, c)) ++covering, present += v.a.frame(c, r) != ReadAlignment::none;
+        return present * 2 < covering;
+    };
+    std::size_t c = before ? first : end;
+    for (std::size_t skipped = 0;; ++skipped) {
+        if (before ? c == 0 : c >= v.a.columns()) return SIZE_MAX;
+        std::size_t next = before ? c - 1 : c;
+        if (skipped == most_skipped || !minority(next)) return next;
+        c = before ? c - 1 : c + 1;
+    }
+}
+
 // Per read: the frames it has in columns [first, end), or -1 where it does not cover them all or was
 // not heard on them.
 // A read that lacks the frame beside the run too lost a stretch, not copies of this frame: it is not
 // heard on the run either.
 std::vector<long> copies_per_read(const VoteContext& v, std::size_t first, std::size_t end) {
     std::vector<long> out(v.a.reads(), -1);
+    const std::size_t before = beside_column(v, first, end, true), after = beside_column(v, first, end, false);
     for (std::size_t r = 0; r < v.a.reads(); ++r) {
         if (!v.a.covers(r, first) || !v.a.covers(r, end - 1)) continue;
-        if ((first > 0 && v.a.frame(first - 1, r) == ReadAlignment::none) ||
-            (end < v.a.columns() && v.a.frame(end, r) == ReadAlignment::none))
+        if ((before != SIZE_MAX && v.a.frame(before, r) == ReadAlignment::none) ||
+            (after != SIZE_MAX && v.a.frame(after, r) == ReadAlignment::none))
             continue;
         long n = 0;
         bool heard = true;
