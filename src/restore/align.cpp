@@ -138,13 +138,14 @@ std::vector<Segment> segments_of(const Pairs& anchors, std::int32_t k) {
 }
 
 // The best chain of segments increasing in both reads. Each segment gains the frames its runs cover
-// beyond the segment before; a change of diagonal between two costs more the farther it shifts: a
-// reader drops or doubles a frame or a few, so reads drift slowly, while a run that happens to recur
-// elsewhere (a repeated section of a program) jumps far and back, and is left out.
+// beyond the segment before; a change of diagonal between two costs a frame for each frame it shifts:
+// a reader drops or doubles a frame or a few, so reads drift slowly, while a run that happens to recur
+// nearby (the next of several lines alike, once damage made one copy unique in each read) jumps by a
+// line and back, and is left out; a stretch torn out shifts once, and what follows it pays for that.
 Pairs chain(const Pairs& anchors, std::int32_t k) {
     std::vector<Segment> seg = segments_of(anchors, k);
     constexpr std::size_t lookback = 64;
-    constexpr std::int64_t shift_cost = 2, frames_per_point = 8;
+    constexpr std::int64_t shift_cost = 2, frames_per_point = 1;
     std::vector<std::int64_t> score(seg.size());
     std::vector<std::size_t> before(seg.size(), SIZE_MAX);
     std::size_t best = SIZE_MAX;

@@ -89,6 +89,13 @@ std::size_t beside_column(const VoteContext& v, std::size_t first, std::size_t e
     }
 }
 
+// No read heard in column c has a frame there: only reads that misread the stretch do.
+bool stain_only(const VoteContext& v, std::size_t c) {
+    for (std::size_t r = 0; r < v.a.reads(); ++r)
+        if (v.heard(c, r) && v.a.frame(c, r) != ReadAlignment::none) return false;
+    return true;
+}
+
 // Per read: the frames it has in columns [first, end), or -1 where it does not cover them all or was
 // not heard on them.
 // A read that lacks the frame beside the run too lost a stretch, not copies of this frame: it is not
@@ -264,7 +271,13 @@ std::vector<RunDecision> decide_runs(const VoteContext& v) {
         auto value = column_value(v, c);
         std::size_t end = c + 1;
         if (value && only_copies_of(v, c, *value))
-            while (end < v.data_to && column_value(v, end) == value && only_copies_of(v, end, *value)) ++end;
+            for (std::size_t next = end; next < v.data_to;) {
+                // Columns only a stain in some read stands in (no read heard there has a frame) do not end
+                // the run: the frames on either side of the stain are one run.
+                while (next < v.data_to && !column_value(v, next) && stain_only(v, next)) ++next;
+                if (next == v.data_to || column_value(v, next) != value || !only_copies_of(v, next, *value)) break;
+                end = ++next;
+            }
         if (!value || !only_copies_of(v, c, *value)) {
             c = end;
             continue;

@@ -117,7 +117,7 @@ public:
 
 private:
     void set(std::size_t c, FrameStatus s, Frame written, std::string reason, bool write, bool run_length = false);
-    void only_misreadings(std::size_t c);
+    void only_misreadings(std::size_t c, const Heard& h);
     void run_column(std::size_t c, const RunDecision& d, bool writes, const Heard& h);
     bool presence(std::size_t c, const Heard& h);
     bool alone_beside(std::size_t c) const;
@@ -156,10 +156,13 @@ void Voter::set(std::size_t c, FrameStatus s, Frame written, std::string reason,
 }
 
 // Only reads that garbled this stretch have a frame here.
-void Voter::only_misreadings(std::size_t c) {
+void Voter::only_misreadings(std::size_t c, const Heard& h) {
     Frame seen = 0;  // the first read's that has a frame here
     for (std::size_t r = v_.a.reads(); r-- > 0;) seen = frame_at(v_.a, v_.reads, c, r).value_or(seen);
-    if (v_.tangled[c])
+    // Where several reads slipped, the others may have lost a frame that only a misreading shows; but not
+    // three reads heard well here and none with a frame.
+    constexpr std::size_t enough_lacking = 3;
+    if (v_.tangled[c] && h.lost < enough_lacking)
         set(c, FrameStatus::contested, seen,
             "only reads that misread this stretch have a frame here, and more than one read slipped in it: not "
             "written, but nothing decides",
@@ -363,7 +366,7 @@ void Voter::values(std::size_t c, const Heard& h) {
 void Voter::column(std::size_t c, const RunDecision* run, bool run_writes) {
     out_.verdicts[c].presence = false;
     Heard h = hear(v_, c);
-    if (h.tally.empty()) return only_misreadings(c);
+    if (h.tally.empty()) return only_misreadings(c, h);
     if (run) return run_column(c, *run, run_writes, h);
     if (!presence(c, h)) values(c, h);
 }
