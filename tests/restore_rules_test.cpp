@@ -158,3 +158,41 @@ TEST(RestoreRules, ALetterOfTheOtherCaseDoesNotFit) {
     EXPECT_EQ(r.problem->status, FrameStatus::inferred) << r.problem->reason;
     EXPECT_EQ(r.result.frames[x], iso('X'));
 }
+
+// M3, M5, M8 and M9 many times, then M30 once: words of one width are no fixed format where no zero shows
+// it (N001, X+0040000 do). M30 with its M damaged was "repaired" to O30 as M30 broke the width.
+TEST(RestoreRules, WordsOfOneWidthAreNoFixedFormatWithoutZerosPunched) {
+    std::string text = "%\nN10 G21 G90\n";
+    for (int n = 2; n < 40; ++n)
+        text += "N" + std::to_string(n * 10) + " G01 X" + std::to_string(n) + ".5 M" + "3589"[n % 4] + "\n";
+    text += "N400 M30\n%\n";
+    auto tape = encode(text, EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t m = frame_of(tape, "N400 M30", 5);
+    auto r = one_flip(tape, m, 0x80);  // M with track 8 lost: O, L, I, E, CR and others are one hole from it
+    ASSERT_NE(r.problem, nullptr);
+    if (r.problem->status == FrameStatus::inferred) {
+        EXPECT_EQ(r.result.frames[m], iso('M')) << r.problem->reason;
+    }
+    EXPECT_NE(std::find(r.problem->candidates.begin(), r.problem->candidates.end(), iso('M')),
+              r.problem->candidates.end())
+        << r.problem->reason;
+}
+
+// Two of three reads read a digit of X127.xxx twice: one lost frame is a hundred times likelier than two
+// doubled at one place, but X1227 has four digits before the point where a thousand X words of this
+// tape have at most three: the word format decides the run.
+TEST(RestoreRules, ANumberLongerThanAnyOfItsKindDecidesARun) {
+    auto tape = encode(long_program(1200), EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t two = frame_of(tape, "N270 G01 X127.", 11);
+    ASSERT_EQ(tape[two], iso('2'));
+    auto doubled = tape;
+    doubled.insert(doubled.begin() + static_cast<std::ptrdiff_t>(two), iso('2'));
+    std::vector<std::vector<Frame>> reads{doubled, doubled, tape};
+    std::vector<std::span<const Frame>> spans(reads.begin(), reads.end());
+    auto r = restore(spans, RestoreOptions{.code = FrameCode::iso(), .dialect = Dialect::automatic});
+    EXPECT_EQ(r.frames, tape);
+    bool decided_by_format = false;
+    for (const auto& p : r.problems)
+        decided_by_format |= p.run_length && p.reason.find("word-format") != std::string::npos;
+    EXPECT_TRUE(decided_by_format);
+}
