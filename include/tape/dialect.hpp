@@ -50,7 +50,12 @@ struct DialectChoice {
     std::optional<Dialect> close{};
 };
 
-/// Chooses a dialect from the start of a text program (a few tens of KB are enough) by weighing,
+/// How much of a text's start the dialect is chosen from.
+inline constexpr std::size_t dialect_sample_bytes = 64 << 10;
+/// The first dialect_sample_bytes of text in whole lines: the same sample however the text came in pieces.
+std::string_view dialect_sample(std::string_view text);
+
+/// Chooses a dialect from the start of a text program (dialect_sample: whatever follows is not read) by weighing,
 /// for each dialect, the clues only its programs hold (O numbers and Custom Macro B for Fanuc;
 /// o-words, named parameters, lowercase and ';' comments for LinuxCNC; ':' main blocks and numbered
 /// '%' for ГОСТ) against the lines its reading cannot make sense of that another's can. Answers

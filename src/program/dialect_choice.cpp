@@ -140,7 +140,14 @@ DialectChoice no_clue(const Evidence& e, const std::array<Reading, 3>& r) {
 
 }  // namespace
 
+std::string_view dialect_sample(std::string_view text) {
+    if (text.size() <= dialect_sample_bytes) return text;
+    auto nl = text.rfind('\n', dialect_sample_bytes - 1);
+    return text.substr(0, nl == std::string_view::npos ? dialect_sample_bytes : nl + 1);
+}
+
 DialectChoice guess_dialect(std::string_view text) {
+    text = dialect_sample(text);
     Evidence e;
     e.scan(text);
     std::uint64_t blocks = 0;

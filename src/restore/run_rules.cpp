@@ -149,7 +149,12 @@ bool lone_presence(const VoteResult& vote, std::size_t c) {
 }  // namespace
 
 std::unique_ptr<RepairWorld> decide_runs_by_rules(const VoteContext& v, VoteResult& vote, const RestoreOptions& o) {
-    auto open = [&](const RunDecision& d) { return !d.blank_end && d.length != d.alternative && d.length > 0; };
+    // A length a million times likelier than the next (most runs, with five reads) is not held against
+    // the rules: they would confirm it, or, where the program breaks its own habit, overturn the reads.
+    constexpr double beyond_rules = 1e6;
+    auto open = [&](const RunDecision& d) {
+        return !d.blank_end && d.length != d.alternative && d.length > 0 && d.odds < beyond_rules;
+    };
     bool any_presence =
         std::any_of(vote.verdicts.begin(), vote.verdicts.end(), [](const Verdict& d) { return d.presence; });
     if (!any_presence && std::none_of(vote.runs.begin(), vote.runs.end(), open)) return nullptr;

@@ -12,17 +12,6 @@ namespace tape {
 
 using namespace loading;
 
-namespace {
-constexpr std::size_t sniff_limit = 64 << 10;  // text looked at to choose a dialect
-
-// The first 64 KiB in whole lines: the same sample however the text came in pieces.
-std::string_view sample(std::string_view text) {
-    if (text.size() <= sniff_limit) return text;
-    auto nl = text.rfind('\n', sniff_limit - 1);
-    return text.substr(0, nl == std::string_view::npos ? sniff_limit : nl + 1);
-}
-}  // namespace
-
 Loader::Loader(ProgramVisitor& visitor, const LoadOptions& options) : v_(visitor), options_(options) {
     if (options_.dialect != Dialect::automatic) choose(DialectChoice{options_.dialect, ""});
 }
@@ -54,8 +43,8 @@ void Loader::feed(std::string_view text, std::span<const std::uint64_t> frame_of
     }
     sniff_ += text;
     sniff_frames_.insert(sniff_frames_.end(), frame_of.begin(), frame_of.end());
-    if (sniff_.size() < sniff_limit) return;
-    choose(guess_dialect(sample(sniff_)));
+    if (sniff_.size() < dialect_sample_bytes) return;
+    choose(guess_dialect(sniff_));
     feed_lines(sniff_, sniff_frames_.size() == sniff_.size() ? std::span<const std::uint64_t>(sniff_frames_)
                                                              : std::span<const std::uint64_t>());
     sniff_ = {};
@@ -87,7 +76,7 @@ void Loader::feed_lines(std::string_view text, std::span<const std::uint64_t> fr
 
 void Loader::finish() {
     if (!rules_) {
-        choose(guess_dialect(sample(sniff_)));
+        choose(guess_dialect(sniff_));
         std::string held = std::move(sniff_);
         std::vector<std::uint64_t> frames = std::move(sniff_frames_);
         feed_lines(held, frames.size() == held.size() ? std::span<const std::uint64_t>(frames)
