@@ -86,6 +86,13 @@ protected:
     static void expect_clean(const fake::Adapter& a) {
         for (const auto& u : a.unexpected()) ADD_FAILURE() << "unexpected request: " << u;
     }
+    // Waits until the simulated control has taken n frames, or until the deadline (the test then sees
+    // fewer): tape emulate feeds it at its own pace from another process.
+    static void wait_taken(const fake::Adapter& a, std::size_t n, std::chrono::seconds deadline) {
+        auto end = std::chrono::steady_clock::now() + deadline;
+        while (a.control_taken().size() < n && std::chrono::steady_clock::now() < end)
+            std::this_thread::sleep_for(20ms);
+    }
     int made_ = 0;
 };
 
@@ -330,9 +337,7 @@ TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsP
     fake::Adapter a(o);
     ChildPreload preload;
     Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
-    auto end = std::chrono::steady_clock::now() + 30s;
-    while (a.control_taken().size() < 2 * program.size() && std::chrono::steady_clock::now() < end)
-        std::this_thread::sleep_for(20ms);
+    wait_taken(a, 2 * program.size(), 30s);
     emulate.interrupt();
     EXPECT_EQ(emulate.wait(20s), 0) << emulate.err();
     auto taken = a.control_taken();
@@ -361,8 +366,7 @@ TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
     fake::Adapter a(o);
     ChildPreload preload;
     Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
-    auto end = std::chrono::steady_clock::now() + 30s;
-    while (a.control_taken().size() < 100 && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(20ms);
+    wait_taken(a, 100, 30s);
     emulate.interrupt();
     EXPECT_EQ(emulate.wait(20s), 0) << emulate.err();
     auto taken = a.control_taken();

@@ -78,6 +78,16 @@ std::uint8_t configure_wiring(Bench& b, const Wiring& w) {
     return b.send(p);
 }
 
+// The adapter wired as w (which it must accept) and a host giving it the whole tape, for us microseconds
+// of the clock: the control's frames are then in b.hw.control().
+void emulate_wired(Bench& b, const Wiring& w, const std::vector<std::uint8_t>& tape, std::uint64_t us) {
+    configure_wiring(b, w);
+    ASSERT_TRUE(b.take(Msg::ok));
+    Host h{b, tape, tape.size()};
+    h.start();
+    h.run(us);
+}
+
 }  // namespace
 
 TEST(AdapterEmulate, AnAdapterWithoutTheRoleRefusesIt) {
@@ -96,11 +106,7 @@ TEST(AdapterEmulate, EveryFrameIsTakenOnceInOrderAndAStopWithinTheBrakingDistanc
         Bench b({}, with_control({.stops = 40, .seed = braking + 1u, .stop_at_program_end = false}), emulator());
         Wiring w;
         w.braking = braking;
-        configure_wiring(b, w);
-        ASSERT_TRUE(b.take(Msg::ok));
-        Host h{b, tape, tape.size()};
-        h.start();
-        h.run(45'000'000);
+        ASSERT_NO_FATAL_FAILURE(emulate_wired(b, w, tape, 45'000'000));
         const auto* c = b.hw.control();
         ASSERT_EQ(c->taken().size(), tape.size()) << "braking " << int(braking);
         EXPECT_EQ(c->taken(), tape);
@@ -242,11 +248,7 @@ TEST(AdapterEmulate, TheDataLinesCarryTheFramesInvertedAsWiredAndMaskedToTheTrac
     w.data_invert = 0x0F;
     w.tracks = 7;
     w.data_pins[7] = Wiring::no_pin;
-    configure_wiring(b, w);
-    ASSERT_TRUE(b.take(Msg::ok));
-    Host h{b, tape, tape.size()};
-    h.start();
-    h.run(1'000'000);
+    ASSERT_NO_FATAL_FAILURE(emulate_wired(b, w, tape, 1'000'000));
     std::vector<std::uint8_t> seven(tape.size());
     std::transform(tape.begin(), tape.end(), seven.begin(), [](std::uint8_t f) { return f & 0x7F; });
     EXPECT_EQ(b.hw.control()->taken(), seven);

@@ -1,7 +1,7 @@
 // 5-track code tables as data (data/ita2.tab, data/mtk2.tab), and the register-following labeler.
-#include <sstream>
 #include <vector>
 
+#include "table_lines.hpp"
 #include "tape/error.hpp"
 #include "tape/five_track.hpp"
 #include "utf8.hpp"
@@ -170,17 +170,12 @@ void FiveTrackTable::Reader::apply_aliases() {
 
 FiveTrackTable FiveTrackTable::parse(std::string_view text) {
     Reader r;
-    std::istringstream in{std::string(text)};
-    for (std::string line; std::getline(in, line);) {
-        ++r.line_no;
-        std::istringstream fields(line);
-        std::vector<std::string> tokens;
-        for (std::string tok; fields >> tok;) {
-            if (tok[0] == '#') break;
-            tokens.push_back(tok);
-        }
-        if (!tokens.empty()) r.line(tokens);
+    TableLines lines(text, TableComments::any_field);
+    while (lines.next()) {
+        r.line_no = lines.number();
+        r.line(lines.fields());
     }
+    r.line_no = lines.number();  // a table without registers is said at its last line
     if (r.t.registers_ == 0) r.fail("the table has no registers line");
     // What is checked from here on is said at the line of the frame it concerns, or at none.
     r.check_shifts();

@@ -1,8 +1,9 @@
 // Computer makers' 8-track telegraph codes as table data (data/elliott900.tab, data/elliott920.tab).
 #include <charconv>
-#include <sstream>
 #include <stdexcept>
+#include <vector>
 
+#include "table_lines.hpp"
 #include "tape/error.hpp"
 #include "tape/telecode.hpp"
 #include "utf8.hpp"
@@ -115,17 +116,10 @@ void TableReader::line(const std::vector<std::string>& tokens, const std::string
 
 TelecodeTable TelecodeTable::parse(std::string_view text) {
     TableReader r;
-    std::istringstream in{std::string(text)};
-    for (std::string line; std::getline(in, line);) {
-        ++r.line_no;
-        std::istringstream fields(line);
-        std::vector<std::string> tokens;
-        for (std::string tok; fields >> tok;) tokens.push_back(tok);
-        if (tokens.empty() || tokens[0][0] == '#') continue;
-        std::string rest = line.substr(line.find(tokens[0]) + tokens[0].size());
-        rest.erase(0, rest.find_first_not_of(" \t"));
-        rest.erase(rest.find_last_not_of(" \t\r") + 1);
-        r.line(tokens, rest);
+    TableLines lines(text, TableComments::first_field);
+    while (lines.next()) {
+        r.line_no = lines.number();
+        r.line(lines.fields(), lines.rest());
     }
     r.line_no = 0;
     if (r.name.empty()) r.fail("the table has no name line");

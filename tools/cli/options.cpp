@@ -1,24 +1,40 @@
 #include "cli/options.hpp"
 
 #include "cli/messages.hpp"
+#include "tape/code.hpp"
 #include "tape/image.hpp"
 
 namespace cli {
 
-void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto, bool five_track) {
-    std::vector<std::string> codes = {"iso", "eia"};
-    if (five_track) codes.insert(codes.end(), {"ita2", "mtk2"});
-    if (with_auto)
-        codes.insert(codes.begin(), "auto");
-    else
-        choice.code = "iso";
-    std::string help = with_auto ? "Tape code: auto (ISO or EIA, judged from the whole tape), iso or eia"
-                                 : "Tape code: iso (ISO 7-bit, even parity on track 8) or eia (EIA RS-244)";
-    if (five_track)
-        help +=
-            "; 5-track telegraph tape: ita2 (ITA2 Baudot-Murray, letters/figures shifts) or mtk2 (МТК-2, "
-            "with the Russian register); these are never detected";
-    sub->add_option("--code,-c", choice.code, help)->check(CLI::IsMember(codes))->capture_default_str();
+std::vector<std::string> code_choices(bool with_auto, CodeSet codes) {
+    std::vector<std::string> names;
+    if (with_auto) names.emplace_back("auto");
+    for (tape::Code c : tape::all_codes())
+        if (codes == CodeSet::all || !tape::is_telecode(c)) names.emplace_back(tape::code_name(c));
+    return names;
+}
+
+std::string code_option_help(bool with_auto, CodeSet codes) {
+    const std::string telegraph =
+        "; 5-track telegraph tape: ita2 (ITA2 Baudot-Murray, letters/figures shifts) or mtk2 (МТК-2, with the "
+        "Russian register)";
+    if (codes == CodeSet::all)
+        return (with_auto ? "Tape code: auto (judged from the whole tape: ISO, EIA or the Elliott 920 telecode), "
+                            "iso, eia"
+                          : "Tape code: iso (ISO 7-bit, even parity on track 8), eia (EIA RS-244)") +
+               telegraph +
+               ", never detected; elliott900 (Elliott 900 telecode: ISO-like, £ for #, read as ISO unless given) or "
+               "elliott920 (Elliott 920 telecode, parity on track 5)";
+    return (with_auto ? "Tape code: auto (ISO or EIA, judged from the whole tape), iso or eia"
+                      : "Tape code: iso (ISO 7-bit, even parity on track 8) or eia (EIA RS-244)") +
+           telegraph + "; these are never detected";
+}
+
+void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto, CodeSet codes) {
+    if (!with_auto) choice.code = "iso";
+    sub->add_option("--code,-c", choice.code, code_option_help(with_auto, codes))
+        ->check(CLI::IsMember(code_choices(with_auto, codes)))
+        ->capture_default_str();
     sub->add_option("--parity,-p", choice.parity,
                     "Track 8 rule for ISO/ASCII tapes: even (NC tapes), odd, mark (DEC-era ASCII), space, none")
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}))

@@ -17,8 +17,19 @@ struct CodeChoice {
     std::string charset = "ascii";
 };
 
-/// --code (with auto for reading; with the 5-track codes where the command handles them), --parity, --charset.
-void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto, bool five_track = false);
+/// Which tape codes a command's --code offers, in the order of tape::all_codes.
+enum class CodeSet {
+    five_track,  ///< iso, eia and the 5-track telegraph codes ita2 and mtk2
+    all,         ///< every code of the library: the Elliott 900 and 920 telecodes too
+};
+
+/// The names --code accepts: auto first when with_auto (reading), then the codes of the set.
+std::vector<std::string> code_choices(bool with_auto, CodeSet codes);
+/// The help of --code for those codes, saying which of them detection finds.
+std::string code_option_help(bool with_auto, CodeSet codes);
+
+/// --code (with auto for reading; iso the default otherwise) for the codes of the set, --parity, --charset.
+void add_code_options(CLI::App* sub, CodeChoice& choice, bool with_auto, CodeSet codes);
 
 /// The image formats of the table that can be read (or written): "raw or holes", and a CLI11 check
 /// that accepts exactly their ids. The CLI's --format choices come from here, never from a list of its own.

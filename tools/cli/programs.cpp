@@ -8,7 +8,7 @@
 namespace cli {
 
 void add_program_source_options(CLI::App* sub, ProgramSource& source, bool with_keep_going) {
-    add_code_options(sub, source.choice, true, true);
+    add_code_options(sub, source.choice, true, CodeSet::five_track);
     sub->add_option("--format,-f", source.format,
                     "Image format of IN: " + format_choices(false) + " (IN is then a tape image)")
         ->check(format_check(false));

@@ -9,7 +9,6 @@
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
 #include "cli/run.hpp"
-#include "code_option.hpp"
 #include "commands.hpp"
 #include "tape/binary_tape.hpp"
 #include "tape/file_io.hpp"
@@ -203,8 +202,7 @@ void add_decode(CLI::App& app) {
                                    "tape into its memory image");
     sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
     sub->add_option("-o,--output", a->output, "Text file to write; - for stdout");
-    add_code_options(sub, a->choice, true, true);
-    widen_code_option(sub, true);
+    add_code_options(sub, a->choice, true, CodeSet::all);
     sub->add_option("--to", a->to,
                     "text (the program), or for a binary loader tape (PDP-8 RIM and BIN, PDP-11 absolute loader) "
                     "its memory image: bin (bytes from address 0 to the highest loaded; PDP-8 words as two bytes, "

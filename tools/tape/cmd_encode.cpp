@@ -10,7 +10,6 @@
 #include "cli/numbers.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
-#include "code_option.hpp"
 #include "commands.hpp"
 #include "tape/encode.hpp"
 #include "tape/file_io.hpp"
@@ -149,8 +148,7 @@ void add_encode(CLI::App& app) {
     auto* sub = app.add_subcommand("encode", "Punch a text program into a tape image (each line a block)");
     sub->add_option("input", a->input, "Text program; - or nothing for stdin");
     sub->add_option("-o,--output", a->output, "Tape image to write; - for stdout (raw refuses a terminal)");
-    add_code_options(sub, a->choice, false, true);
-    widen_code_option(sub, false);
+    add_code_options(sub, a->choice, false, CodeSet::all);
     sub->add_option("--leader", a->leader, "Blank frames before the program (10 frames = 25.4 mm)")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str();

@@ -10,7 +10,6 @@
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
-#include "code_option.hpp"
 #include "commands.hpp"
 #include "tape/detect.hpp"
 #include "tape/label.hpp"
@@ -228,10 +227,9 @@ void add_info(CLI::App& app) {
         "Tell what is on a tape: code, parity found, frame counts, program starts; the format, blocks and checksums "
         "of a binary loader tape (PDP-8 RIM and BIN, PDP-11 absolute loader)");
     sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
-    std::vector<std::string> codes{"auto"};
-    for (tape::Code c : tape::all_codes()) codes.emplace_back(tape::code_name(c));
-    sub->add_option("--code,-c", a->code, code_option_help(true) + "; a code given counts the frames its way")
-        ->check(CLI::IsMember(codes))
+    sub->add_option("--code,-c", a->code,
+                    code_option_help(true, CodeSet::all) + "; a code given counts the frames its way")
+        ->check(CLI::IsMember(code_choices(true, CodeSet::all)))
         ->capture_default_str();
     sub->add_option("--parity,-p", a->parity,
                     "Count parity errors against this rule (default: even, or what the tape uses)")

@@ -4,7 +4,6 @@
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
 #include "cli/run.hpp"
-#include "code_option.hpp"
 #include "commands.hpp"
 #include "tape/survey.hpp"
 #include "tape_report.hpp"
@@ -61,8 +60,7 @@ void add_show(CLI::App& app) {
     auto a = std::make_shared<ShowArgs>();
     auto* sub = app.add_subcommand("show", "Draw the tape: holes, frame numbers, characters, bad frames marked '!'");
     sub->add_option("input", a->input, "Tape image; - or nothing for stdin");
-    add_code_options(sub, a->choice, true, true);
-    widen_code_option(sub, true);
+    add_code_options(sub, a->choice, true, CodeSet::all);
     sub->add_option("--format,-f", a->format, "Image format of IN: " + format_choices(false))
         ->check(format_check(false));
     sub->callback([a] { run(*a); });

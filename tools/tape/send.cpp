@@ -17,7 +17,7 @@
 namespace cli {
 
 void add_feed_profile_options(CLI::App* sub, FeedProfile& p) {
-    add_code_options(sub, p.choice, true, true);  // a text program may be sent in ITA2 or МТК-2
+    add_code_options(sub, p.choice, true, CodeSet::five_track);  // a text program may be sent in ITA2 or МТК-2
     sub->add_option("--leader", p.leader, "Blank frames (NUL) before the program")
         ->check(whole_number(0, tape::max_blank_frames))
         ->capture_default_str()
