@@ -98,7 +98,9 @@ HandAligned hand_aligned(const std::vector<std::string>& columns) {
                 continue;
             }
             cells.push_back(static_cast<std::int32_t>(h.reads[r].size()));
-            h.reads[r].push_back(col[r] == '~' ? Frame{0x7F ^ 0x16} : col[r] == '|' ? iso('\n') : iso(col[r]));
+            // A stain's frames: each unlike the last (a stain reads as frames no character has).
+            Frame stain = static_cast<Frame>(0x69 ^ (h.reads[r].size() * 0x2B));
+            h.reads[r].push_back(col[r] == '~' ? stain : col[r] == '|' ? iso('\n') : iso(col[r]));
         }
         h.alignment.add_column(cells);
     }

@@ -196,3 +196,21 @@ TEST(RestoreRules, ANumberLongerThanAnyOfItsKindDecidesARun) {
         decided_by_format |= p.run_length && p.reason.find("word-format") != std::string::npos;
     EXPECT_TRUE(decided_by_format);
 }
+
+// One read read the '-' of Y-127.51 twice; the two others read its 2 twice. The first read's extra '-'
+// beside the 2 it lacks looked like a stain read as other frames, so it was not heard on the run, and
+// the two others wrote Y-1227.51 unopposed. A frame equal to its neighbour is a frame read twice, not a
+// stain's: the first read is heard, and the word format decides the run.
+TEST(RestoreRules, AFrameReadTwiceIsNoStainThatSilencesItsRead) {
+    auto tape = encode(long_program(1200), EncodeOptions{.leader = 20, .trailer = 20});
+    std::size_t minus = frame_of(tape, "N1270 G01 X227.699 Y-127.", 20);
+    ASSERT_EQ(tape[minus], iso('-'));
+    auto a = tape, b = tape;
+    a.insert(a.begin() + static_cast<std::ptrdiff_t>(minus), iso('-'));
+    b.insert(b.begin() + static_cast<std::ptrdiff_t>(minus + 2), iso('2'));
+    std::vector<std::vector<Frame>> reads{a, b, b};
+    std::vector<std::span<const Frame>> spans(reads.begin(), reads.end());
+    auto r = restore(spans, RestoreOptions{.code = FrameCode::iso(), .dialect = Dialect::automatic});
+    EXPECT_EQ(r.frames, tape);
+    EXPECT_EQ(check_restore(tape, r).silently_wrong, 0U);
+}
