@@ -187,9 +187,9 @@ struct ManyReadsTally {
             for (std::size_t k = 0; k < check.flagged_at.size(); ++k)
                 show_flagged(t.frames, r, check.flagged_at[k], check.flagged_output[k], seed);
         for (std::size_t k = 0; k < check.silent_at.size(); ++k) {
-            classify(t.frames, logs, check.silent_at[k]);
             if (std::getenv("RESTORE_BENCH_SHOW"))
                 show(t.name, t.frames, logs, r, check.silent_at[k], check.silent_output[k], seed);
+            classify(t.frames, logs, check.silent_at[k]);
         }
     }
     // Frames around at as text, at in brackets, an end of block as '|'.
@@ -261,6 +261,12 @@ struct ManyReadsTally {
             right += !touched;
         }
         ++(right * 2 > logs.size() ? decidable : right > 0 ? undecidable : invisible);
+        if (std::getenv("RESTORE_BENCH_SHOW"))
+            std::fprintf(stderr, "  (%s: %zu of %zu reads read it undamaged)\n",
+                         right * 2 > logs.size() ? "decidable"
+                         : right > 0             ? "undecidable"
+                                                 : "invisible",
+                         right, logs.size());
     }
     void report(benchmark::State& state) const {
         state.counters["sets"] = per_run(sets);

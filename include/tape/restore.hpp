@@ -105,8 +105,8 @@ RestoreResult restore(std::span<const std::span<const Frame>> reads, const Resto
 /// tests and benchmarks of restoring): the data of the output (first to last punched frame) aligned with
 /// the tape's, frame by frame. A frame left out of or added to a run of equal frames is in doubt when any
 /// copy of the run (or a frame left out there) is; the frames of a stretch that does not match (a misread
-/// stretch) are in doubt when the report doubts any frame of it or frames left out at its ends; a wrong
-/// inferred frame is silently wrong.
+/// stretch) are in doubt when the report doubts any frame of it or frames left out at its ends (frames
+/// only left out: when it doubts a frame beside them); a wrong inferred frame is silently wrong.
 struct RestoreCheck {
     std::uint64_t right = 0;           ///< data frames of the tape the output holds as punched
     std::uint64_t silently_wrong = 0;  ///< frames wrong, added or left out where the report has no doubt

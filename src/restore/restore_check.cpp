@@ -119,6 +119,9 @@ private:
             for (; end < cols.size() && !matched(cols[end]); ++end)
                 if (cols[end].second != ReadAlignment::none) doubt |= d_.frame[to++];
             for (std::size_t x = written; x <= to && x < d_.after.size(); ++x) doubt |= d_.after[x];
+            // Frames only left out: the place between two output frames, in doubt where either is.
+            if (to == written)
+                doubt |= (written > 0 && d_.frame[written - 1]) || (written < d_.frame.size() && d_.frame[written]);
             for (; k < end; ++k) wrong(i, j, cols[k], doubt, written, tape_at);
         }
     }

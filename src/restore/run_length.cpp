@@ -300,6 +300,13 @@ std::vector<RunDecision> decide_runs(const VoteContext& v) {
         }
         d.readers =
             static_cast<std::size_t>(std::count_if(copies.begin(), copies.end(), [](long x) { return x >= 0; }));
+        // Most reads have none of it: no run of a frame the tape holds, but frames a few reads have
+        // (read twice, or a stain): each column is voted on its own.
+        auto none = static_cast<std::size_t>(std::count(copies.begin(), copies.end(), 0L));
+        if (none * 2 > d.readers) {
+            c = end;
+            continue;
+        }
         if (d.readers >= 2) {
             auto beside = copies_beside(v, c, end, *value);
             weigh_lengths(v, prior, copies, beside, d);
