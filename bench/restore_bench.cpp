@@ -68,8 +68,10 @@ struct OneReadTally {
         auto read = flipped_read(t, seed);
         auto r = restore_reads({read}, guess);
         std::map<std::uint64_t, tape::FrameStatus> status;
+        // The tape's end no read reached is a problem placed at the last frame: it says nothing of how
+        // that frame was repaired.
         for (const auto& p : r.problems)
-            if (p.frame) status[*p.frame] = p.status;
+            if (p.frame && p.status != tape::FrameStatus::missing) status[*p.frame] = p.status;
         for (std::size_t i = 0; i < t.frames.size() && i < r.frames.size(); ++i) {
             if (read[i] == t.frames[i]) continue;
             bool ok = r.frames[i] == t.frames[i];
@@ -82,7 +84,9 @@ struct OneReadTally {
             wrong_inferred += !ok && (s == tape::FrameStatus::inferred || s == tape::FrameStatus::clean ||
                                       s == tape::FrameStatus::voted);
             guessed += s == tape::FrameStatus::guessed, guessed_right += ok && s == tape::FrameStatus::guessed;
-            unmarked += guess && s != tape::FrameStatus::inferred && s != tape::FrameStatus::guessed;
+            bool neither = guess && s != tape::FrameStatus::inferred && s != tape::FrameStatus::guessed;
+            unmarked += neither;
+            if (neither && std::getenv("RESTORE_BENCH_SHOW")) show_one(t, read, r, i);
         }
     }
     static char printable(char c) { return c >= 32 && c < 127 ? c : '?'; }

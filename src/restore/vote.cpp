@@ -203,10 +203,13 @@ void Voter::run_column(std::size_t c, const RunDecision& d, bool writes, const H
         std::snprintf(odds, sizeof odds, "over a million times");
     else
         std::snprintf(odds, sizeof odds, "%.0f times", d.odds);
+    std::string likelier = d.alternative == d.length ? "the reads that cover it whole agree"
+                                                     : std::to_string(d.length) + " punched is " + odds +
+                                                           " likelier than " + std::to_string(d.alternative) +
+                                                           ", with the lost and doubled frames these reads show";
     std::string why =
         "a run of " + std::to_string(d.length) + " (" + d.how + "): " +
-        (d.rule.empty() ? std::to_string(d.length) + " punched is " + odds + " likelier than " +
-                              std::to_string(d.alternative) + ", with the lost and doubled frames these reads show"
+        (d.rule.empty() ? likelier
                         : "the program's rules decide: " + std::to_string(d.alternative) + " copies break " + d.rule);
     if (decided)
         set(c, writes ? FrameStatus::voted : FrameStatus::extra, d.value,
