@@ -16,12 +16,6 @@ using namespace tape;
 
 namespace {
 
-std::string shared_data(const std::string& path) { return std::string(TAPE_SOURCE_DIR) + "/../shared/data/" + path; }
-
-#define SKIP_WITHOUT(path)                           \
-    if (!std::filesystem::exists(shared_data(path))) \
-    GTEST_SKIP() << "no ../shared/data/" << (path) << ": the real program this case was found on is absent"
-
 Frame iso(char c) { return *FrameCode::iso().frame_for(static_cast<unsigned char>(c)); }
 
 std::vector<Frame> iso_frames(std::string_view text) {
@@ -53,7 +47,7 @@ RealSet real_set(const std::string& path, std::uint64_t set, int reads) {
 // block apart (a run that recurs a block away had anchored them), and "G82 X-2.5000 Y2.8000" was left
 // out, every frame around it voted 4 to 1.
 TEST(RestoreAlike, ABlockOfADrillingPatternIsNeverFolded) {
-    SKIP_WITHOUT("outside2/grbl/pg328_bot_drill.nc");
+    SKIP_WITHOUT_SHARED_DATA("outside2/grbl/pg328_bot_drill.nc");
     for (std::uint64_t set : {110, 374, 418}) {
         auto s = real_set("outside2/grbl/pg328_bot_drill.nc", set, 5);
         auto check = check_restore(s.tape, restore_reads(s.reads));
@@ -64,7 +58,7 @@ TEST(RestoreAlike, ABlockOfADrillingPatternIsNeverFolded) {
 // Fanuc macro lines alike but for a word: "IF[#11LT0]THEN#11=0" between two others like it. Each of
 // three reads' copy of it was set in columns of its own, each outvoted, and the line left out.
 TEST(RestoreAlike, ALineLikeItsNeighboursIsNeverLeftOut) {
-    SKIP_WITHOUT("outside2/fanuc/mould_O5701.NC");
+    SKIP_WITHOUT_SHARED_DATA("outside2/fanuc/mould_O5701.NC");
     auto s = real_set("outside2/fanuc/mould_O5701.NC", 61, 3);
     auto r = restore_reads(s.reads);
     auto check = check_restore(s.tape, r);
@@ -75,7 +69,7 @@ TEST(RestoreAlike, ALineLikeItsNeighboursIsNeverLeftOut) {
 // TOKARKA's N99999: one read doubled the N, another lost a 9. The doubled N put the first read's extra 9
 // at the run's start and the third read's at its end, in columns of their own, and the run lost a 9.
 TEST(RestoreAlike, AFrameReadTwiceBesideARunDoesNotSplitIt) {
-    SKIP_WITHOUT("outside2/other/gcw_TOKARKA.NC");
+    SKIP_WITHOUT_SHARED_DATA("outside2/other/gcw_TOKARKA.NC");
     auto s = real_set("outside2/other/gcw_TOKARKA.NC", 39, 3);
     auto check = check_restore(s.tape, restore_reads(s.reads));
     for (std::size_t x : check.silent_at) EXPECT_NE(x, 482516U) << "N99999 lost a 9 unsaid";

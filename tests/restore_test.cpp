@@ -295,6 +295,18 @@ TEST(Restore, AStainNextToAnEqualFrame) {
 
 // Two of three reads lost the same frame, unlike its neighbours: no read twice made it, so the one
 // read that has it is not outvoted into silence. It is written, and contested.
+namespace {
+
+// Three reads of tape, two of which lost frame x.
+RestoreResult lost_by_two_of_three(const std::vector<Frame>& tape, std::size_t x) {
+    auto a = tape, b = tape, c = tape;
+    b.erase(b.begin() + static_cast<std::ptrdiff_t>(x));
+    c.erase(c.begin() + static_cast<std::ptrdiff_t>(x));
+    return restore_all({a, b, c});
+}
+
+}  // namespace
+
 // The 2 of "Y+20." lost by two reads of three: "Y+0." is a word too, so nothing decides.
 TEST(Restore, AFrameTwoReadsLostIsContestedNotDropped) {
     auto tape = sample_tape();
@@ -302,10 +314,7 @@ TEST(Restore, AFrameTwoReadsLostIsContestedNotDropped) {
     ASSERT_EQ(tape[x], *FrameCode::iso().frame_for('2'));
     ASSERT_NE(tape[x - 1], tape[x]);
     ASSERT_NE(tape[x + 1], tape[x]);
-    auto a = tape, b = tape, c = tape;
-    b.erase(b.begin() + static_cast<std::ptrdiff_t>(x));
-    c.erase(c.begin() + static_cast<std::ptrdiff_t>(x));
-    auto r = restore_all({a, b, c});
+    auto r = lost_by_two_of_three(tape, x);
     EXPECT_EQ(r.frames, tape);
     const RestoreProblem* p = problem_at(r, x + 1);
     ASSERT_NE(p, nullptr);
@@ -318,10 +327,7 @@ TEST(Restore, AFrameTwoReadsLostIsContestedNotDropped) {
 TEST(Restore, AFrameTwoReadsLostThatTheBlockNeedsIsWritten) {
     auto tape = sample_tape();
     std::size_t x = find_char(tape, 'X', 30);
-    auto a = tape, b = tape, c = tape;
-    b.erase(b.begin() + static_cast<std::ptrdiff_t>(x));
-    c.erase(c.begin() + static_cast<std::ptrdiff_t>(x));
-    auto r = restore_all({a, b, c});
+    auto r = lost_by_two_of_three(tape, x);
     EXPECT_EQ(r.frames, tape);
     const RestoreProblem* p = problem_at(r, x + 1);
     ASSERT_NE(p, nullptr);

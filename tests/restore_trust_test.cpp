@@ -18,12 +18,6 @@ using namespace tape;
 
 namespace {
 
-std::string shared_data(const std::string& path) { return std::string(TAPE_SOURCE_DIR) + "/../shared/data/" + path; }
-
-#define SKIP_WITHOUT(path)                           \
-    if (!std::filesystem::exists(shared_data(path))) \
-    GTEST_SKIP() << "no ../shared/data/" << (path) << ": the real data this case was measured on is absent"
-
 RestoreResult restore_reads(const std::vector<std::vector<Frame>>& reads, RestoreOptions o = {}) {
     if (!o.code) o.code = FrameCode::iso();
     std::vector<std::span<const Frame>> spans(reads.begin(), reads.end());
@@ -63,7 +57,7 @@ TEST(RestoreTrust, ALostZeroOfARunIsNeverSilent) {
 // 2. A program with two near-identical sections: the alignment folded them into one and 84 frames went
 // missing, unsaid.
 TEST(RestoreTrust, NearIdenticalSectionsAreNotFolded) {
-    SKIP_WITHOUT("outside/lcnc/comp.ngc");
+    SKIP_WITHOUT_SHARED_DATA("outside/lcnc/comp.ngc");
     auto tape = encode(read_text(shared_data("outside/lcnc/comp.ngc")), EncodeOptions{});
     auto r = restore_reads(damaged_reads(tape, {679, 680, 681}));
     auto check = check_restore(tape, r);
@@ -109,7 +103,7 @@ TEST(RestoreTrust, AStretchMostReadsHoldIsNeverLeftOut) {
 // 3. A blank read against a frame of one hole failing parity, inside the data: the blank was written as
 // "the only good reading". A blank there may be a character that lost its holes.
 TEST(RestoreTrust, ABlankInsideDataIsNeverVotedOverHoles) {
-    SKIP_WITHOUT("outside2/tapes/elliott900/PATCHES_30DEC76.1");
+    SKIP_WITHOUT_SHARED_DATA("outside2/tapes/elliott900/PATCHES_30DEC76.1");
     std::vector<std::vector<Frame>> reads{read_frames(shared_data("outside2/tapes/elliott900/PATCHES_30DEC76.1")),
                                           read_frames(shared_data("outside2/tapes/elliott900/PATCHES_30DEC76.2"))};
     auto r = restore_reads(reads, RestoreOptions{.code = FrameCode::iso(), .dialect = Dialect::automatic});
@@ -129,7 +123,7 @@ TEST(RestoreTrust, ABlankInsideDataIsNeverVotedOverHoles) {
 
 // Every pair of real reads: wherever the two disagree, the report says so (no clean frame there).
 TEST(RestoreTrust, RealReadsDisagreeNowhereSilently) {
-    SKIP_WITHOUT("outside2/tapes/elliott900");
+    SKIP_WITHOUT_SHARED_DATA("outside2/tapes/elliott900");
     for (std::string name : {"PATCHES_30DEC76", "SIRALG16F", "CASTLE", "MODESET160287", "SINE"}) {
         std::vector<std::vector<Frame>> reads{read_frames(shared_data("outside2/tapes/elliott900/" + name + ".1")),
                                               read_frames(shared_data("outside2/tapes/elliott900/" + name + ".2"))};
@@ -186,7 +180,7 @@ void expect_no_wrong_repair(const std::vector<Frame>& tape, std::size_t i, Diale
 
 // 5. Repairs that were wrong outside ГОСТ: a Fanuc program's closing '%' became a space.
 TEST(RestoreTrust, AClosingPercentIsNotRepairedToASpace) {
-    SKIP_WITHOUT("outside2/fanuc/mould_O80000002.nc");
+    SKIP_WITHOUT_SHARED_DATA("outside2/fanuc/mould_O80000002.nc");
     auto tape = encode(read_text(shared_data("outside2/fanuc/mould_O80000002.nc")), EncodeOptions{});
     auto data = punched_part(tape);
     std::size_t last_percent = static_cast<std::size_t>(data.data() - tape.data()) + data.size() - 1;
@@ -196,7 +190,7 @@ TEST(RestoreTrust, AClosingPercentIsNotRepairedToASpace) {
 
 // LinuxCNC's polar word ^60 became W60, and G81 became "G8;", commenting out the rest of its block.
 TEST(RestoreTrust, LinuxCncWordsAreNotRepairedIntoOthers) {
-    SKIP_WITHOUT("outside/lcnc/hole-circle.ngc");
+    SKIP_WITHOUT_SHARED_DATA("outside/lcnc/hole-circle.ngc");
     auto tape = encode(read_text(shared_data("outside/lcnc/hole-circle.ngc")), EncodeOptions{});
     std::size_t caret = static_cast<std::size_t>(std::find(tape.begin(), tape.end(), iso('^')) - tape.begin());
     const Frame g81[] = {iso('G'), iso('8'), iso('1')};
@@ -209,7 +203,7 @@ TEST(RestoreTrust, LinuxCncWordsAreNotRepairedIntoOthers) {
 // A DEC MACRO source tape: a rubout with one hole lost became ';'. Text that is no NC program gets no NC
 // grammar: the frame stays as read, DEL among its candidates.
 TEST(RestoreTrust, TextThatIsNoProgramGetsNoProgramGrammar) {
-    SKIP_WITHOUT("outside2/tapes/pdp11/DEC-11-O1PA-PA.ptap");
+    SKIP_WITHOUT_SHARED_DATA("outside2/tapes/pdp11/DEC-11-O1PA-PA.ptap");
     auto tape = read_frames(shared_data("outside2/tapes/pdp11/DEC-11-O1PA-PA.ptap"));
     ASSERT_EQ(tape[10100], 0xFF);
     auto r = one_flip(tape, 10100, 0x04);
@@ -256,7 +250,7 @@ TEST(RestoreTrust, ADoubtWhoseReadingsHoldParityReachesDecoding) {
 // only. Every wrong frame is in doubt, and a doubt whose readings all hold parity is written as the
 // likeliest reading, listed among the frames in doubt.
 TEST(RestoreTrust, ContestedFramesAreWrittenAsReadOrKeptInDoubt) {
-    SKIP_WITHOUT("outside2/fanuc/mould_O80000002.nc");
+    SKIP_WITHOUT_SHARED_DATA("outside2/fanuc/mould_O80000002.nc");
     auto tape = encode(read_text(shared_data("outside2/fanuc/mould_O80000002.nc")), EncodeOptions{});
     auto r = restore_reads(damaged_reads(tape, {1, 2, 3}), RestoreOptions{.code = FrameCode::iso()});
     EXPECT_EQ(check_restore(tape, r).silently_wrong, 0U);
@@ -358,7 +352,7 @@ TEST(RestoreTrust, AGuessIsMarkedAndListsTheOthers) {
 // Never worse, over random flips in three reads of real programs of every dialect: a frame most reads have
 // right is written right, and any wrong frame is in doubt.
 TEST(RestoreTrust, NeverWorseOnRealProgramsOfEveryDialect) {
-    SKIP_WITHOUT("outside2");
+    SKIP_WITHOUT_SHARED_DATA("outside2");
     for (std::string f :
          {"outside2/fanuc/gcw_FANUC0M.nc", "outside2/haas/gcw_HAAS.nc", "outside2/lcnc/lagun_HEMA-P049.ngc",
           "outside2/okuma/gcw_FLANGE.nc", "outside2/sinumerik/gcw_SINUMERIK850.nc", "outside2/other/gcw_PHILIPS.nc",

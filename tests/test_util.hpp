@@ -34,6 +34,17 @@ inline std::string shared_data_dir() {
     return "";
 }
 
+/// The path of a file of ../shared/data: other people's files, read where they are, never copied in.
+inline std::string shared_data(const std::string& path) {
+    std::string dir = shared_data_dir();
+    return (dir.empty() ? std::string(TAPE_SOURCE_DIR) + "/../shared/data" : dir) + "/" + path;
+}
+
+/// Skips the test, saying why, where the real file it was found on is absent (a user's clone has none).
+#define SKIP_WITHOUT_SHARED_DATA(path)               \
+    if (!std::filesystem::exists(shared_data(path))) \
+    GTEST_SKIP() << "no ../shared/data/" << (path) << ": the real data this case was found on is absent"
+
 inline std::string read_text(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), {}};
