@@ -253,6 +253,42 @@ double copies_likelihood(std::size_t seen, std::size_t punched, const SlipRates&
     return std::max(sum, 1e-300);
 }
 
+namespace {
+
+// One past the last column of the run of value from column c (the columns only a stain stands in do not
+// end it: the frames on either side of the stain are one run).
+std::size_t run_end(const VoteContext& v, std::size_t c, Frame value) {
+    std::size_t end = c + 1;
+    for (std::size_t next = end; next < v.data_to;) {
+        while (next < v.data_to && !column_value(v, next) && stain_only(v, next)) ++next;
+        if (next == v.data_to || column_value(v, next) != value || !only_copies_of(v, next, value)) break;
+        end = ++next;
+    }
+    return end;
+}
+
+// The decision on columns [first, end) of value, or nullopt where there is nothing to decide: every read
+// has a frame in every column, most reads have none of it (frames a few reads have, read twice or a
+// stain, are voted a column at a time), or fewer than two reads cover it whole.
+std::optional<RunDecision> decide_run(const VoteContext& v, const RunPrior& prior, std::size_t first, std::size_t end,
+                                      Frame value) {
+    RunDecision d;
+    d.first = first, d.end = end, d.value = value;
+    auto copies = copies_per_read(v, first, end);
+    if (std::all_of(copies.begin(), copies.end(),
+                    [&](long x) { return x < 0 || static_cast<std::size_t>(x) == end - first; }))
+        return std::nullopt;
+    d.readers = static_cast<std::size_t>(std::count_if(copies.begin(), copies.end(), [](long x) { return x >= 0; }));
+    auto none = static_cast<std::size_t>(std::count(copies.begin(), copies.end(), 0L));
+    if (none * 2 > d.readers || d.readers < 2) return std::nullopt;
+    auto beside = copies_beside(v, first, end, value);
+    weigh_lengths(v, prior, copies, beside, d);
+    d.how = counts_text(copies) + beside_text(beside);
+    return d;
+}
+
+}  // namespace
+
 std::vector<RunDecision> decide_runs(const VoteContext& v) {
     std::vector<RunDecision> out;
     const RunPrior prior(v.reads[v.a.reference()]);
@@ -269,50 +305,16 @@ std::vector<RunDecision> decide_runs(const VoteContext& v) {
     add_end(0, v.data_from);
     for (std::size_t c = v.data_from; c < v.data_to;) {
         auto value = column_value(v, c);
-        std::size_t end = c + 1;
-        if (value && only_copies_of(v, c, *value))
-            for (std::size_t next = end; next < v.data_to;) {
-                // Columns only a stain in some read stands in (no read heard there has a frame) do not end
-                // the run: the frames on either side of the stain are one run.
-                while (next < v.data_to && !column_value(v, next) && stain_only(v, next)) ++next;
-                if (next == v.data_to || column_value(v, next) != value || !only_copies_of(v, next, *value)) break;
-                end = ++next;
-            }
         if (!value || !only_copies_of(v, c, *value)) {
-            c = end;
+            ++c;
             continue;
         }
+        std::size_t end = run_end(v, c, *value);
         bool misread_before = c > v.data_from && (out.empty() || out.back().end < c) && misread_copy(v, c - 1, *value);
         if (misread_before) --c;
         if (end < v.data_to && misread_copy(v, end, *value)) ++end;
-        if (end - c < 2) {
-            c = end;
-            continue;
-        }
-        RunDecision d;
-        d.first = c, d.end = end, d.value = *value;
-        auto copies = copies_per_read(v, c, end);
-        // Every read has a frame in every column: nothing to decide.
-        if (std::all_of(copies.begin(), copies.end(),
-                        [&](long x) { return x < 0 || static_cast<std::size_t>(x) == end - c; })) {
-            c = end;
-            continue;
-        }
-        d.readers =
-            static_cast<std::size_t>(std::count_if(copies.begin(), copies.end(), [](long x) { return x >= 0; }));
-        // Most reads have none of it: no run of a frame the tape holds, but frames a few reads have
-        // (read twice, or a stain): each column is voted on its own.
-        auto none = static_cast<std::size_t>(std::count(copies.begin(), copies.end(), 0L));
-        if (none * 2 > d.readers) {
-            c = end;
-            continue;
-        }
-        if (d.readers >= 2) {
-            auto beside = copies_beside(v, c, end, *value);
-            weigh_lengths(v, prior, copies, beside, d);
-            d.how = counts_text(copies) + beside_text(beside);
-            out.push_back(std::move(d));
-        }
+        if (end - c >= 2)
+            if (auto d = decide_run(v, prior, c, end, *value)) out.push_back(std::move(*d));
         c = end;
     }
     add_end(v.data_to, v.a.columns());

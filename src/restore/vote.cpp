@@ -120,6 +120,7 @@ private:
     void only_misreadings(std::size_t c, const Heard& h);
     void run_column(std::size_t c, const RunDecision& d, bool writes, const Heard& h);
     bool presence(std::size_t c, const Heard& h);
+    bool lone_frame(std::size_t c, const Heard& h, std::size_t lost);
     bool alone_beside(std::size_t c) const;
     bool gaps_are_lone(std::size_t c) const;
     void half_present(std::size_t c, const Heard& h);
@@ -253,6 +254,29 @@ void Voter::half_present(std::size_t c, const Heard& h) {
         !dropped);
 }
 
+// One read has a frame unlike its neighbours (no double), and read well around it, that the others lack:
+// written. A good one, in doubt: the others lost it, or a splice put it there. (Several such frames in a
+// row are a stretch one read misread.) One failing parity: a frame the others lost, misread; written as
+// read, in doubt (repaired where a change fits).
+bool Voter::lone_frame(std::size_t c, const Heard& h, std::size_t lost) {
+    const auto& front = h.tally.front();
+    std::size_t present = front.good ? h.present_good : h.present;
+    if (present != 1 || lost < 2 || h.repeat || front.value == blank_frame || alone_beside(c)) return false;
+    if (front.good) {
+        out_.verdicts[c].presence = true;
+        set(c, FrameStatus::contested, front.value,
+            of_reads(1, h.covering, "has this frame") +
+                ", not as a neighbour read twice: the others lost it, or a splice put it there; written",
+            true);
+    } else {
+        set(c, FrameStatus::unresolved, front.value,
+            of_reads(1, h.covering, "has a frame here") +
+                ", failing parity and not as a neighbour read twice: the others lost it; written as read",
+            true);
+    }
+    return true;
+}
+
 bool Voter::presence(std::size_t c, const Heard& h) {
     const auto& front = h.tally.front();
     const std::size_t reads = v_.a.reads();
@@ -263,27 +287,7 @@ bool Voter::presence(std::size_t c, const Heard& h) {
     std::size_t lost = lone_blank ? reads - h.present : h.lost;
     std::size_t present = front.good ? h.present_good : h.present;
     if (lone_blank && present >= lost) return false;
-    // One read has a frame unlike its neighbours (no double), and read well around it; the others lost
-    // it, or a splice put it there. (Several such frames in a row are a stretch one read misread.)
-    if (present == 1 && lost > 1 && front.good && !h.repeat && front.value != blank_frame && !lone_blank &&
-        !alone_beside(c)) {
-        out_.verdicts[c].presence = true;
-        set(c, FrameStatus::contested, front.value,
-            of_reads(1, h.covering, "has this frame") +
-                ", not as a neighbour read twice: the others lost it, or a splice put it there; written",
-            true);
-        return true;
-    }
-    // One read has a frame failing parity, unlike its neighbours and read well around it: no frame read
-    // twice, but one the others lost, misread. Written as read, in doubt (repaired where a change fits).
-    if (h.present == 1 && lost > 1 && !front.good && !h.repeat && front.value != blank_frame && !lone_blank &&
-        !alone_beside(c)) {
-        set(c, FrameStatus::unresolved, front.value,
-            of_reads(1, h.covering, "has a frame here") +
-                ", failing parity and not as a neighbour read twice: the others lost it; written as read",
-            true);
-        return true;
-    }
+    if (!lone_blank && lone_frame(c, h, lost)) return true;
     if (present < lost && (present <= 1 || h.good_values > 1 || !front.good || lone_blank)) {
         // Where several reads slipped in the stretch, a vote won by one read decides nothing.
         bool tangled = v_.tangled[c] && !lone_blank && lost - present <= 1;
