@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "tape/damage.hpp"
 #include "tape/encode.hpp"
 #include "tape/restore.hpp"
 #include "test_util.hpp"
@@ -151,6 +152,25 @@ TEST(RestoreRules, ALetterOfTheOtherCaseDoesNotFit) {
     EXPECT_EQ(r.result.frames[x], iso('X'));
 }
 
+// read with frames lost and read twice, each at a quarter percent, from frame `from` on (seed: the
+// read's own): reads whose rates of slips are those of real reads, so that the odds of a run's lengths
+// are what they are on a real restoration.
+std::vector<Frame> slipping_after(const std::vector<Frame>& read, std::size_t from, std::uint64_t seed) {
+    DamageOptions o;
+    o.seed = seed;
+    o.drops = o.doubles = 0.0025;
+    auto tail = damage(std::span(read).subspan(from), o);
+    std::vector<Frame> out(read.begin(), read.begin() + static_cast<std::ptrdiff_t>(from));
+    out.insert(out.end(), tail.begin(), tail.end());
+    return out;
+}
+
+// The restored frames before `until` are the tape's.
+void expect_restored_before(const RestoreResult& r, const std::vector<Frame>& tape, std::size_t until) {
+    ASSERT_GE(r.frames.size(), until);
+    EXPECT_TRUE(std::equal(tape.begin(), tape.begin() + static_cast<std::ptrdiff_t>(until), r.frames.begin()));
+}
+
 // M3, M5, M8 and M9 many times, then M30 once: words of one width are no fixed format where no zero shows
 // it (N001, X+0040000 do). M30 with its M damaged was "repaired" to O30 as M30 broke the width.
 TEST(RestoreRules, WordsOfOneWidthAreNoFixedFormatWithoutZerosPunched) {
@@ -170,19 +190,21 @@ TEST(RestoreRules, WordsOfOneWidthAreNoFixedFormatWithoutZerosPunched) {
         << r.problem->reason;
 }
 
-// Two of three reads read a digit of X127.xxx twice: one lost frame is a hundred times likelier than two
-// doubled at one place, but X1227 has four digits before the point where a thousand X words of this
-// tape have at most three: the word format decides the run.
+// Two of three reads read a digit of X127.xxx twice: one lost frame is some hundreds of times likelier
+// than two doubled at one place (at the reads' rates of slips), but X1227 has four digits before the
+// point where more than a thousand X words of this tape have at most three: the word format decides.
 TEST(RestoreRules, ANumberLongerThanAnyOfItsKindDecidesARun) {
     auto tape = encode(long_program(1200), EncodeOptions{.leader = 20, .trailer = 20});
     std::size_t two = frame_of(tape, "N270 G01 X127.", 11);
     ASSERT_EQ(tape[two], iso('2'));
     auto doubled = tape;
     doubled.insert(doubled.begin() + static_cast<std::ptrdiff_t>(two), iso('2'));
-    std::vector<std::vector<Frame>> reads{doubled, doubled, tape};
+    std::size_t slips = frame_of(tape, "N3000 ");
+    std::vector<std::vector<Frame>> reads{slipping_after(doubled, slips + 1, 1), slipping_after(doubled, slips + 1, 2),
+                                          slipping_after(tape, slips, 3)};
     std::vector<std::span<const Frame>> spans(reads.begin(), reads.end());
     auto r = restore(spans, RestoreOptions{.code = FrameCode::iso(), .dialect = Dialect::automatic});
-    EXPECT_EQ(r.frames, tape);
+    expect_restored_before(r, tape, slips);
     bool decided_by_format = false;
     for (const auto& p : r.problems)
         decided_by_format |= p.run_length && p.reason.find("word-format") != std::string::npos;
@@ -200,9 +222,10 @@ TEST(RestoreRules, AFrameReadTwiceIsNoStainThatSilencesItsRead) {
     auto a = tape, b = tape;
     a.insert(a.begin() + static_cast<std::ptrdiff_t>(minus), iso('-'));
     b.insert(b.begin() + static_cast<std::ptrdiff_t>(minus + 2), iso('2'));
-    std::vector<std::vector<Frame>> reads{a, b, b};
+    std::size_t slips = frame_of(tape, "N3000 ");
+    std::vector<std::vector<Frame>> reads{slipping_after(a, slips + 1, 1), slipping_after(b, slips + 1, 2),
+                                          slipping_after(b, slips + 1, 3)};
     std::vector<std::span<const Frame>> spans(reads.begin(), reads.end());
     auto r = restore(spans, RestoreOptions{.code = FrameCode::iso(), .dialect = Dialect::automatic});
-    EXPECT_EQ(r.frames, tape);
-    EXPECT_EQ(check_restore(tape, r).silently_wrong, 0U);
+    expect_restored_before(r, tape, slips);
 }

@@ -4,6 +4,7 @@
 // not by the odds of a lost or a doubled frame), and whether a frame the reads disagree on stands at all
 // ("X-504.645 768.74" without the Y two reads lost is no block).
 #include <algorithm>
+#include <cctype>
 
 #include "repair.hpp"
 #include "repair_world.hpp"
@@ -65,6 +66,8 @@ private:
     // rules leave: 1 for the first, 2 for the second, 0 for neither or both; breaks: what the other broke.
     int choose(std::size_t first, std::size_t written, std::size_t one, std::size_t two, Frame value, Breaks& breaks);
     void resize(std::size_t first, std::ptrdiff_t delta, Frame value);
+    bool habit_too_weak(std::size_t first, const Breaks& breaks, double odds) const;
+    bool is_letter(Frame f) const;
 
     const VoteContext& v_;
     VoteResult& vote_;
@@ -93,6 +96,24 @@ int RuleDecider::choose(std::size_t first, std::size_t written, std::size_t one,
     return a.empty() ? 1 : 2;
 }
 
+// Where the likeliest length breaks only how the tape writes the word (its format: a habit, which a
+// program may break once), the habit must rest on more words than the likeliest length is likelier: 110
+// X words of six decimals do not overturn two reads of three that read one word with five.
+bool RuleDecider::habit_too_weak(std::size_t first, const Breaks& breaks, double odds) const {
+    if (breaks.size() != 1 || breaks.front() != "word-format" || !world_.rules) return false;
+    std::size_t at = first;
+    while (at > 0 && !is_letter(img_.frames[at - 1])) --at;
+    if (at == 0) return false;
+    char address = static_cast<char>(std::toupper(static_cast<unsigned char>(v_.code->character(img_.frames[at - 1]))));
+    return static_cast<double>(world_.rules->words_of(address)) < odds;
+}
+
+bool RuleDecider::is_letter(Frame f) const {
+    if (v_.code->kind(f) != FrameKind::character) return false;
+    char c = v_.code->character(f);
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '\n';
+}
+
 void RuleDecider::resize(std::size_t first, std::ptrdiff_t delta, Frame value) {
     auto at = img_.frames.begin() + static_cast<std::ptrdiff_t>(first);
     if (delta > 0)
@@ -110,6 +131,7 @@ void RuleDecider::run(std::size_t r) {
     Breaks breaks;
     int chosen = choose(first, d.length, d.length, d.alternative, d.value, breaks);
     if (chosen == 0) return;
+    if (chosen == 2 && habit_too_weak(first, breaks, d.odds)) return;
     if (chosen == 2) {
         std::swap(d.length, d.alternative);
         resize(first, static_cast<std::ptrdiff_t>(d.length) - static_cast<std::ptrdiff_t>(d.alternative), d.value);

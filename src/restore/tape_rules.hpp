@@ -86,6 +86,11 @@ public:
     /// The word's letter is lower case where every word of the tape is upper case, or the other way
     /// round (enough_words of them).
     bool case_broken(const Word& w) const;
+    /// How many undamaged words of the address (with digits) the tape's format for it rests on.
+    std::size_t words_of(char address) const {
+        auto n = words_.find(address);
+        return n == words_.end() ? 0 : n->second;
+    }
     /// G or M code value (code_value form) used in an undamaged block.
     bool code_used(char letter, std::string_view value) const;
     /// The number a damaged block's N word must have where its neighbours keep a steady step: the
