@@ -4,6 +4,7 @@
 // behind them made by hand.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "restore/vote.hpp"
@@ -193,10 +194,42 @@ TEST(RestoreAlike, AFrameVotedAgainstAGoodReadingWhoseBlockBreaksStaysInDoubt) {
 
 // escriba_example11.gcode writes 110 X words with six decimals and one, X49.94961, with five. Two of
 // three reads have it so; one read its 4 twice. The word format (six decimals) had overturned the two
-// reads: a habit of 110 words does not outweigh odds of some hundreds to one.
+// reads: a habit of 110 words does not outweigh odds of some hundreds to one. It does put them in doubt.
 TEST(RestoreAlike, AFormatOfFewerWordsThanTheOddsDoesNotOverturnTheReads) {
     SKIP_WITHOUT_SHARED_DATA("outside2/grbl/escriba_example11.gcode");
     auto s = real_set("outside2/grbl/escriba_example11.gcode", 21, 3);
-    auto check = check_restore(s.tape, restore_reads(s.reads));
+    auto r = restore_reads(s.reads);
+    auto check = check_restore(s.tape, r);
     for (std::size_t x : check.silent_at) EXPECT_NE(x, 917U) << "X49.94961 written with six decimals, unsaid";
+    auto run = std::find_if(r.problems.begin(), r.problems.end(), [](const RestoreProblem& p) {
+        return p.run_length && p.reason.find("too seldom seen") != std::string::npos;
+    });
+    ASSERT_NE(run, r.problems.end()) << "the run the format breaks is not named";
+    EXPECT_EQ(run->status, FrameStatus::contested) << run->reason;
+    EXPECT_NE(run->reason.find("word-format"), std::string::npos) << run->reason;
+}
+
+// TOKARKA's N99999: one read lost a 9, another garbled the N word; the 9 only the third read has was
+// left out, and "N9999" among blocks all numbered N99999 was written without a doubt.
+TEST(RestoreAlike, ANineLeftOutOfN99999IsInDoubtWhereTheBlockNumberBreaks) {
+    SKIP_WITHOUT_SHARED_DATA("outside2/other/gcw_TOKARKA.NC");
+    for (auto [set, at] : {std::pair<std::uint64_t, std::size_t>{171, 327616}, {347, 444729}, {83, 550056}}) {
+        auto s = real_set("outside2/other/gcw_TOKARKA.NC", set, 3);
+        auto r = restore_reads(s.reads);
+        auto check = check_restore(s.tape, r);
+        for (std::size_t x : check.silent_at) EXPECT_NE(x, at) << "set " << set << ": N9999 for N99999, unsaid";
+        EXPECT_GE(r.contested_unwritten, 1U) << "set " << set;
+    }
+}
+
+// boreyko's "(******************************)" (thirty): one of five reads read two of its stars twice
+// and misread one copy of the first, which stood alone in its column. That column ended the run: two
+// short runs were decided apart, and 31 stars written without a doubt.
+TEST(RestoreAlike, AMisreadCopyAloneInItsColumnDoesNotSplitARun) {
+    SKIP_WITHOUT_SHARED_DATA("outside2/haas/boreyko_otverstie_O00010.nc");
+    auto s = real_set("outside2/haas/boreyko_otverstie_O00010.nc", 378, 5);
+    auto r = restore_reads(s.reads);
+    auto check = check_restore(s.tape, r);
+    EXPECT_EQ(check.silently_wrong, 0U);
+    EXPECT_TRUE(check.exact);
 }

@@ -38,21 +38,35 @@ bool code_does_not_fit(std::span<const Frame> frames, const FrameCode& code) {
     return data.size() >= 8 && bad * 4 > data.size();
 }
 
-// The rules the block of one line's outvoted problems breaks as written, their frames judged as the
-// damaged ones (an error the block has anyway decides nothing).
-Breaks judge_as_written(const RestoreResult& out, const RepairWorld& w, std::span<RestoreProblem* const> line) {
-    std::size_t first = static_cast<std::size_t>(*line.front()->frame - 1);
-    auto range = block_around(w.setup.code, out.frames, first);
+// The rules the block around frame `anchor` breaks as written, the frames at places (image indices in
+// that block) judged as the damaged ones (an error the block has anyway decides nothing).
+Breaks judge_as_written(const RestoreResult& out, const RepairWorld& w, std::size_t anchor,
+                        std::vector<std::size_t> places) {
+    auto range = block_around(w.setup.code, out.frames, anchor);
     if (!range || !w.setup.nc) return {};
-    std::vector<std::size_t> places;
-    for (const RestoreProblem* p : line) places.push_back(static_cast<std::size_t>(*p->frame - 1));
-    BlockJudge judge(w.setup, out.frames, range->first, range->second, w.line_of(first), places);
+    std::erase_if(places, [&](std::size_t at) { return at < range->first || at >= range->second; });
+    if (places.empty()) return {};
+    BlockJudge judge(w.setup, out.frames, range->first, range->second, w.line_of(anchor), places);
     BlockTry as_written{std::vector<Frame>(judge.frames().begin(), judge.frames().end()), {}};
     for (std::size_t at : places) as_written.decided.push_back(at - range->first);
     Breaks breaks = judge.judge(as_written);
     std::erase(breaks, std::string(arc_closes));
     std::erase(breaks, std::string("arc"));
     return breaks;
+}
+
+// A vote put in doubt, the frame written (or, left out, not) as the vote decided.
+void doubt_as_paired_wrong(RestoreResult& out, RestoreProblem& p, const Breaks& breaks) {
+    std::string rules;
+    for (const auto& r : breaks) rules += (rules.empty() ? "" : ", ") + r;
+    std::string reason = p.reason + "; but its block as written breaks " + rules +
+                         ": the reads may be paired at the wrong place, so it stays in doubt";
+    if (p.frame) return set_status(out, p, FrameStatus::contested, p.written, std::move(reason));
+    --out.counts[static_cast<std::size_t>(p.status)];
+    ++out.counts[static_cast<std::size_t>(FrameStatus::contested)];
+    ++out.contested_unwritten;
+    p.status = FrameStatus::contested;
+    p.reason = std::move(reason);
 }
 
 // Frames voted against a good reading whose block, as written, breaks the program's rules: the reads
@@ -63,17 +77,37 @@ void doubt_votes_that_break_their_block(RestoreResult& out, const RepairWorld& w
         std::uint64_t line = w.line_of(static_cast<std::size_t>(*outvoted[a]->frame - 1));
         std::size_t b = a + 1;
         while (b < outvoted.size() && w.line_of(static_cast<std::size_t>(*outvoted[b]->frame - 1)) == line) ++b;
-        Breaks breaks = judge_as_written(out, w, outvoted.subspan(a, b - a));
+        std::vector<std::size_t> places;
+        for (const RestoreProblem* p : outvoted.subspan(a, b - a))
+            places.push_back(static_cast<std::size_t>(*p->frame - 1));
+        Breaks breaks = judge_as_written(out, w, places.front(), places);
         if (!breaks.empty())
-            for (RestoreProblem* p : outvoted.subspan(a, b - a)) {
-                std::string rules;
-                for (const auto& r : breaks) rules += (rules.empty() ? "" : ", ") + r;
-                set_status(out, *p, FrameStatus::contested, p->written,
-                           p->reason + "; but its block as written breaks " + rules +
-                               ": the reads may be paired at the wrong place, so it stays in doubt");
-            }
+            for (RestoreProblem* p : outvoted.subspan(a, b - a)) doubt_as_paired_wrong(out, *p, breaks);
         a = b;
     }
+}
+
+// A good frame one read has that the vote left out (the others have none there), where the block as
+// written then breaks the program's rules at that place ("N9999" among "N99999" blocks): the frame may be
+// the tape's, lost by two reads, so the place stays in doubt. Judged at the frames either side of it.
+void doubt_left_outs_that_break_their_block(RestoreResult& out, const RepairWorld& w,
+                                            std::span<RestoreProblem* const> left_out) {
+    for (RestoreProblem* p : left_out) {
+        std::size_t after = static_cast<std::size_t>(p->after);
+        if (out.frames.empty()) return;
+        std::size_t anchor = std::min(after, out.frames.size() - 1);
+        std::vector<std::size_t> places{anchor};
+        if (after > 0 && after - 1 != anchor) places.insert(places.begin(), after - 1);
+        if (Breaks breaks = judge_as_written(out, w, anchor, places); !breaks.empty())
+            doubt_as_paired_wrong(out, *p, breaks);
+    }
+}
+
+// A good frame the vote left out: some read has it, not failing parity, and the most reads have none.
+bool left_out_good_reading(const FrameCode& code, const RestoreProblem& p) {
+    if (p.frame || p.status != FrameStatus::extra) return false;
+    return std::any_of(p.seen.begin(), p.seen.end(),
+                       [&](const std::optional<Frame>& f) { return f && !is_bad_frame(code.kind(*f)); });
 }
 
 // Good readings that disagree (not on a run's length, which the vote decided as a whole), where every
@@ -101,19 +135,20 @@ bool outvoted_good_reading(const FrameCode& code, const RestoreProblem& p) {
 
 void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreOptions& o,
                        std::unique_ptr<RepairWorld> world) {
-    std::vector<RestoreProblem*> open, outvoted;
+    std::vector<RestoreProblem*> open, outvoted, left_out;
     std::vector<std::size_t> doubtful;
     for (auto& p : out.problems) {
         // A frame left out (not written) puts in doubt the line it was left out of.
         if (!p.frame) {
             if (p.after < out.frames.size()) doubtful.push_back(static_cast<std::size_t>(p.after));
+            if (left_out_good_reading(code, p)) left_out.push_back(&p);
             continue;
         }
         if (p.status != FrameStatus::clean) doubtful.push_back(static_cast<std::size_t>(*p.frame - 1));
         if (p.status == FrameStatus::unresolved || tie(p)) open.push_back(&p);
         if (outvoted_good_reading(code, p)) outvoted.push_back(&p);
     }
-    if (open.empty() && outvoted.empty()) return;
+    if (open.empty() && outvoted.empty() && left_out.empty()) return;
     if (code_does_not_fit(out.frames, code)) {
         for (RestoreProblem* p : open)
             if (p->status == FrameStatus::unresolved)
@@ -122,6 +157,7 @@ void repair_unresolved(RestoreResult& out, const FrameCode& code, const RestoreO
     }
     if (!world) world = learn_world(out.frames, doubtful, code, o);
     doubt_votes_that_break_their_block(out, *world, outvoted);
+    doubt_left_outs_that_break_their_block(out, *world, left_out);
     std::vector<RestoreProblem*> block;
     std::uint64_t block_line = 0;
     constexpr std::size_t most_damaged = 8;  // frames of one block tried together

@@ -256,12 +256,14 @@ double copies_likelihood(std::size_t seen, std::size_t punched, const SlipRates&
 namespace {
 
 // One past the last column of the run of value from column c (the columns only a stain stands in do not
-// end it: the frames on either side of the stain are one run).
+// end it: the frames on either side of the stain are one run; nor does a column whose only frames are
+// misread copies of value, one read's copy read twice and misread: "**.**" beside "****").
 std::size_t run_end(const VoteContext& v, std::size_t c, Frame value) {
     std::size_t end = c + 1;
     for (std::size_t next = end; next < v.data_to;) {
         while (next < v.data_to && !column_value(v, next) && stain_only(v, next)) ++next;
-        if (next == v.data_to || column_value(v, next) != value || !only_copies_of(v, next, value)) break;
+        if (next == v.data_to || !only_copies_of(v, next, value)) break;
+        if (auto heard = column_value(v, next); heard && *heard != value) break;
         end = ++next;
     }
     return end;

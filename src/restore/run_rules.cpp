@@ -131,7 +131,12 @@ void RuleDecider::run(std::size_t r) {
     Breaks breaks;
     int chosen = choose(first, d.length, d.length, d.alternative, d.value, breaks);
     if (chosen == 0) return;
-    if (chosen == 2 && habit_too_weak(first, breaks, d.odds)) return;
+    if (chosen == 2 && habit_too_weak(first, breaks, d.odds)) {
+        // Too weak to overturn the reads, not to doubt them.
+        d.doubt =
+            joined(breaks) + ", a habit of the tape's too seldom seen to overturn the reads, so it stays in doubt";
+        return revote_run(v_, o_, vote_, r);
+    }
     if (chosen == 2) {
         std::swap(d.length, d.alternative);
         resize(first, static_cast<std::ptrdiff_t>(d.length) - static_cast<std::ptrdiff_t>(d.alternative), d.value);

@@ -216,7 +216,9 @@ void Voter::run_column(std::size_t c, const RunDecision& d, bool writes, const H
         set(c, writes ? FrameStatus::voted : FrameStatus::extra, d.value,
             why + (writes ? ": written" : ": not written"), writes, true);
     else
-        set(c, FrameStatus::contested, d.value, why + "; too close to decide: " + (writes ? "written" : "not written"),
+        set(c, FrameStatus::contested, d.value,
+            why + (d.doubt.empty() ? "; too close to decide: " : "; but it breaks " + d.doubt + ": ") +
+                (writes ? "written" : "not written"),
             writes, true);
 }
 

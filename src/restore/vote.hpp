@@ -72,9 +72,12 @@ struct RunDecision {
     bool blank_end = false;       ///< leader or trailer: its length is nobody's concern, never in doubt
     std::string how;              ///< the counts: "2 of 3 reads have 3 copies, 1 has 2"
     std::string rule;             ///< the program's rule the other length breaks, when rules decided it
+    /// The tape's habit the written length breaks, held by too few words to overturn the reads: in doubt.
+    std::string doubt;
 
-    /// Decided without a doubt: by the rules, or by odds of at least `odds_to_decide`.
-    bool decided(double odds_to_decide) const { return !rule.empty() || odds >= odds_to_decide; }
+    /// Decided without a doubt: by the rules, or by odds of at least `odds_to_decide`, and no habit
+    /// of the tape's against it.
+    bool decided(double odds_to_decide) const { return doubt.empty() && (!rule.empty() || odds >= odds_to_decide); }
 };
 
 /// The runs of the alignment whose length the reads disagree on, each decided: leader and trailer
