@@ -233,3 +233,29 @@ TEST(RestoreAlike, AMisreadCopyAloneInItsColumnDoesNotSplitARun) {
     EXPECT_EQ(check.silently_wrong, 0U);
     EXPECT_TRUE(check.exact);
 }
+
+// "G03 G91": one read has "G033", another "G03  ", and the aligner put the extra 3 and the extra space in
+// one column the first read has nothing in. Each is its read's frame read twice (two slips); the 3 or
+// the space standing there needs three. It was a tie, the reference read's written: "G033".
+TEST(RestoreAlike, TwoReadsEachWithADifferentFrameReadTwiceInOneColumnLeaveItOut) {
+    auto cols = solid("%|N20 G0", 3);
+    for (std::string c : {"333", "_3 "}) cols.push_back(c);
+    for (auto c : solid("  G91 X0|M02|", 3)) cols.push_back(c);
+    auto h = hand_aligned(cols);
+    std::vector<std::span<const Frame>> spans(h.reads.begin(), h.reads.end());
+    RestoreOptions o{.code = FrameCode::iso()};
+    auto v = detail::make_vote_context(h.alignment, spans, o);
+    auto vote = detail::vote(v, o);
+    const std::size_t doubles = 9;
+    EXPECT_FALSE(vote.verdicts[doubles].write);
+    EXPECT_EQ(vote.verdicts[doubles].status, FrameStatus::extra);
+    // A frame only one read has, unlike its neighbours, is not taken for a frame read twice.
+    cols[doubles] = "_7 ";
+    auto h2 = hand_aligned(cols);
+    std::vector<std::span<const Frame>> spans2(h2.reads.begin(), h2.reads.end());
+    auto v2 = detail::make_vote_context(h2.alignment, spans2, o);
+    auto vote2 = detail::vote(v2, o);
+    ASSERT_GE(vote2.verdicts[doubles].problem, 0);
+    EXPECT_EQ(vote2.problems[static_cast<std::size_t>(vote2.verdicts[doubles].problem)].reason.find("twice"),
+              std::string::npos);
+}

@@ -25,6 +25,7 @@ struct Heard {
     std::size_t present = 0, covering = 0, lost = 0, unheard = 0;
     std::size_t present_good = 0, good_values = 0;
     bool repeat = false;               // a read has this frame next to an equal one
+    std::size_t repeats = 0;           // reads that have their frame here next to an equal one
     std::optional<Frame> first_bad{};  // the first reading that fails parity (or a blank among punched frames)
 };
 
@@ -57,7 +58,9 @@ Heard hear(const VoteContext& v, std::size_t c) {
         ++h.present;
         Frame f = v.reads[r][static_cast<std::size_t>(i)];
         punched_here |= f != blank_frame;
-        h.repeat |= repeated(v.reads[r], static_cast<std::size_t>(i));
+        bool twice = repeated(v.reads[r], static_cast<std::size_t>(i));
+        h.repeat |= twice;
+        h.repeats += twice;
         count_reading(h, f, v.good(f), v.doubts(c, r) ? doubted_weight : 1.0);
         if (!v.good(f) && !h.first_bad) h.first_bad = f;
     }
@@ -279,6 +282,14 @@ bool Voter::lone_frame(std::size_t c, const Heard& h, std::size_t lost) {
     return true;
 }
 
+// Reads that have a frame here each have a different good one, next to an equal one in that read, and a
+// read heard here has none ("G033 " and "G03  " beside "G03 "): two frames read twice explain it, where
+// any one of them standing needs a frame lost by a read that has it and one more slip by the others.
+bool doubles_of_their_neighbours(const Heard& h) {
+    return h.lost >= 1 && h.present >= 2 && h.repeats == h.present && h.present_good == h.present &&
+           h.good_values == h.present;
+}
+
 bool Voter::presence(std::size_t c, const Heard& h) {
     const auto& front = h.tally.front();
     const std::size_t reads = v_.a.reads();
@@ -290,6 +301,14 @@ bool Voter::presence(std::size_t c, const Heard& h) {
     std::size_t present = front.good ? h.present_good : h.present;
     if (lone_blank && present >= lost) return false;
     if (!lone_blank && lone_frame(c, h, lost)) return true;
+    if (doubles_of_their_neighbours(h)) {
+        set(c, FrameStatus::extra, front.value,
+            of_reads(h.present, h.covering, "have a frame here") +
+                ", each a different one next to an equal one in its read, and a read has none: each read its "
+                "frame twice; not written",
+            false);
+        return true;
+    }
     if (present < lost && (present <= 1 || h.good_values > 1 || !front.good || lone_blank)) {
         // Where several reads slipped in the stretch, a vote won by one read decides nothing.
         bool tangled = v_.tangled[c] && !lone_blank && lost - present <= 1;
