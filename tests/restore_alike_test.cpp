@@ -259,3 +259,26 @@ TEST(RestoreAlike, TwoReadsEachWithADifferentFrameReadTwiceInOneColumnLeaveItOut
     EXPECT_EQ(vote2.problems[static_cast<std::size_t>(vote2.verdicts[doubles].problem)].reason.find("twice"),
               std::string::npos);
 }
+
+// "N11 G01": the first read garbled "␠G01" as "2,a0" (a stain keeps the tape's length), the second has a
+// stain where the space is, the third reads it right. At the space, '2' and ' ' tie; the read with '2'
+// is outvoted by two good readings in the next columns, so it misreads the stretch: ' ' is written.
+// Where nothing beside tells the reads apart, the tie stays in doubt.
+TEST(RestoreAlike, ATieIsWonByTheReadThatReadsTheFramesBesideAsTheOthersDo) {
+    auto cols = solid("%|N1 X1|N11", 3);
+    const std::size_t space = cols.size();
+    for (std::string c : {"2~ ", ",GG", "a00", "011"}) cols.push_back(c);
+    for (auto c : solid(" G91 X40.0|M02|", 3)) cols.push_back(c);
+    RestoreOptions o{.code = FrameCode::iso()};
+    auto vote_on = [&](const std::vector<std::string>& columns) {
+        auto h = hand_aligned(columns);
+        std::vector<std::span<const Frame>> spans(h.reads.begin(), h.reads.end());
+        return detail::vote(detail::make_vote_context(h.alignment, spans, o), o);
+    };
+    auto vote = vote_on(cols);
+    EXPECT_EQ(vote.verdicts[space].written, iso(' '));
+    EXPECT_EQ(vote.verdicts[space].status, FrameStatus::voted);
+    for (std::size_t c = space + 1; c <= space + 3; ++c) cols[c] = std::string(3, cols[c][1]);
+    auto steady = vote_on(cols);
+    EXPECT_TRUE(in_doubt(steady.verdicts[space].status)) << status_name(steady.verdicts[space].status);
+}

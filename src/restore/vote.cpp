@@ -128,6 +128,8 @@ private:
     bool gaps_are_lone(std::size_t c) const;
     void half_present(std::size_t c, const Heard& h);
     void values(std::size_t c, const Heard& h);
+    bool misreads_beside(std::size_t c, std::size_t r) const;
+    std::optional<Frame> from_steady_reads(std::size_t c, const std::vector<Frame>& tied) const;
 
     const VoteContext& v_;
     const RestoreOptions& o_;
@@ -344,6 +346,43 @@ bool Voter::presence(std::size_t c, const Heard& h) {
     return false;
 }
 
+// Read r has, in a column beside c, a good frame that two reads or more outvote with another good frame:
+// it is misreading the stretch (a stain read as frames keeps the tape's length).
+bool Voter::misreads_beside(std::size_t c, std::size_t r) const {
+    for (std::size_t x : {c - 1, c + 1}) {
+        if (x >= v_.a.columns()) continue;  // c - 1 of column 0 wraps past the end
+        auto f = frame_at(v_.a, v_.reads, x, r);
+        if (!f || !v_.good(*f) || !v_.heard(x, r)) continue;
+        Heard beside = hear(v_, x);
+        const auto& top = beside.tally.front();
+        if (top.good && top.count >= 2 && top.value != *f) return true;
+    }
+    return false;
+}
+
+// Of the tied good readings, the one whose every read reads the frames beside as the others do, where
+// each other's reads misread them.
+std::optional<Frame> Voter::from_steady_reads(std::size_t c, const std::vector<Frame>& tied) const {
+    std::optional<Frame> steady;
+    for (Frame value : tied) {
+        bool any = false, all_misread = true;
+        for (std::size_t r = 0; r < v_.a.reads(); ++r) {
+            auto f = frame_at(v_.a, v_.reads, c, r);
+            if (!f || *f != value || !v_.heard(c, r)) continue;
+            any = true;
+            all_misread &= misreads_beside(c, r);
+        }
+        if (!any || all_misread) continue;
+        for (std::size_t r = 0; r < v_.a.reads(); ++r) {
+            auto f = frame_at(v_.a, v_.reads, c, r);
+            if (f && *f == value && v_.heard(c, r) && misreads_beside(c, r)) return std::nullopt;
+        }
+        if (steady) return std::nullopt;
+        steady = value;
+    }
+    return steady;
+}
+
 // Which frame stands here, where one does.
 void Voter::values(std::size_t c, const Heard& h) {
     const auto& t = h.tally;
@@ -377,6 +416,11 @@ void Voter::values(std::size_t c, const Heard& h) {
     if (lean) tied.push_back(*lean);
     for (const auto& x : t)
         if (x.good && x.weight == t[0].weight && (!lean || x.value != *lean)) tied.push_back(x.value);
+    if (auto steady = all_differ ? std::nullopt : from_steady_reads(c, tied))
+        return set(c, FrameStatus::voted, *steady,
+                   "good readings disagree; the others' reads misread the frames beside this one (outvoted there "
+                   "by good readings): written",
+                   true);
     std::optional<Frame> reference = frame_at(v_.a, v_.reads, c, v_.a.reference());
     Frame written = h.first_bad                        ? *h.first_bad
                     : lean                             ? *lean
