@@ -42,6 +42,19 @@ RealSet real_set(const std::string& path, std::uint64_t set, int reads) {
     return s;
 }
 
+// A real set restored and scored against its tape.
+struct RestoredSet {
+    RealSet set;
+    RestoreResult result;
+    RestoreCheck check;
+};
+RestoredSet restored_set(const std::string& path, std::uint64_t set, int reads) {
+    RestoredSet out{real_set(path, set, reads), {}, {}};
+    out.result = restore_reads(out.set.reads);
+    out.check = check_restore(out.set.tape, out.result);
+    return out;
+}
+
 }  // namespace
 
 // A drilling pattern: blocks that differ by one digit of Y. Five reads paired a stretch of blocks a
@@ -50,9 +63,7 @@ RealSet real_set(const std::string& path, std::uint64_t set, int reads) {
 TEST(RestoreAlike, ABlockOfADrillingPatternIsNeverFolded) {
     SKIP_WITHOUT_SHARED_DATA("outside2/grbl/pg328_bot_drill.nc");
     for (std::uint64_t set : {110, 374, 418}) {
-        auto s = real_set("outside2/grbl/pg328_bot_drill.nc", set, 5);
-        auto check = check_restore(s.tape, restore_reads(s.reads));
-        EXPECT_EQ(check.silently_wrong, 0U) << "set " << set;
+        EXPECT_EQ(restored_set("outside2/grbl/pg328_bot_drill.nc", set, 5).check.silently_wrong, 0U) << "set " << set;
     }
 }
 
@@ -60,20 +71,17 @@ TEST(RestoreAlike, ABlockOfADrillingPatternIsNeverFolded) {
 // three reads' copy of it was set in columns of its own, each outvoted, and the line left out.
 TEST(RestoreAlike, ALineLikeItsNeighboursIsNeverLeftOut) {
     SKIP_WITHOUT_SHARED_DATA("outside2/fanuc/mould_O5701.NC");
-    auto s = real_set("outside2/fanuc/mould_O5701.NC", 61, 3);
-    auto r = restore_reads(s.reads);
-    auto check = check_restore(s.tape, r);
-    EXPECT_EQ(check.silently_wrong, 0U);
-    EXPECT_EQ(punched_part(r.frames).size(), punched_part(s.tape).size());
+    auto r = restored_set("outside2/fanuc/mould_O5701.NC", 61, 3);
+    EXPECT_EQ(r.check.silently_wrong, 0U);
+    EXPECT_EQ(punched_part(r.result.frames).size(), punched_part(r.set.tape).size());
 }
 
 // TOKARKA's N99999: one read doubled the N, another lost a 9. The doubled N put the first read's extra 9
 // at the run's start and the third read's at its end, in columns of their own, and the run lost a 9.
 TEST(RestoreAlike, AFrameReadTwiceBesideARunDoesNotSplitIt) {
     SKIP_WITHOUT_SHARED_DATA("outside2/other/gcw_TOKARKA.NC");
-    auto s = real_set("outside2/other/gcw_TOKARKA.NC", 39, 3);
-    auto check = check_restore(s.tape, restore_reads(s.reads));
-    for (std::size_t x : check.silent_at) EXPECT_NE(x, 482516U) << "N99999 lost a 9 unsaid";
+    for (std::size_t x : restored_set("outside2/other/gcw_TOKARKA.NC", 39, 3).check.silent_at)
+        EXPECT_NE(x, 482516U) << "N99999 lost a 9 unsaid";
 }
 
 // Reads and their alignment made by hand: each column lists per read a character, '_' for no frame, or
@@ -107,6 +115,13 @@ std::vector<std::string> solid(std::string_view text, std::size_t reads) {
     for (char c : text) out.emplace_back(reads, c);
     return out;
 }
+// The vote on hand-aligned columns of ISO frames.
+detail::VoteResult vote_on(const std::vector<std::string>& columns) {
+    auto h = hand_aligned(columns);
+    std::vector<std::span<const Frame>> spans(h.reads.begin(), h.reads.end());
+    RestoreOptions o{.code = FrameCode::iso()};
+    return detail::vote(detail::make_vote_context(h.alignment, spans, o), o);
+}
 
 // "F411": the first read doubled both 1s, the third read a stain over " F41", and the stain's frames
 // stand between the 1s' columns (as the aligner put them on a generated program). The run is one run
@@ -137,11 +152,7 @@ TEST(RestoreAlike, AStainThatFourReadsLackIsLeftOutWithoutDoubt) {
     auto cols = solid("%|N1 X12.5 Y7.2", 5);
     for (std::string c : {"_~___", "5_5_5", "55555"}) cols.push_back(c);
     for (auto c : solid("|N2 X13.75|M02|", 5)) cols.push_back(c);
-    auto h = hand_aligned(cols);
-    std::vector<std::span<const Frame>> spans(h.reads.begin(), h.reads.end());
-    RestoreOptions o{.code = FrameCode::iso()};
-    auto v = detail::make_vote_context(h.alignment, spans, o);
-    auto vote = detail::vote(v, o);
+    auto vote = vote_on(cols);
     const std::size_t stain = 15;
     EXPECT_FALSE(vote.verdicts[stain].write);
     EXPECT_EQ(vote.verdicts[stain].status, FrameStatus::extra);
@@ -197,14 +208,13 @@ TEST(RestoreAlike, AFrameVotedAgainstAGoodReadingWhoseBlockBreaksStaysInDoubt) {
 // reads: a habit of 110 words does not outweigh odds of some hundreds to one. It does put them in doubt.
 TEST(RestoreAlike, AFormatOfFewerWordsThanTheOddsDoesNotOverturnTheReads) {
     SKIP_WITHOUT_SHARED_DATA("outside2/grbl/escriba_example11.gcode");
-    auto s = real_set("outside2/grbl/escriba_example11.gcode", 21, 3);
-    auto r = restore_reads(s.reads);
-    auto check = check_restore(s.tape, r);
-    for (std::size_t x : check.silent_at) EXPECT_NE(x, 917U) << "X49.94961 written with six decimals, unsaid";
-    auto run = std::find_if(r.problems.begin(), r.problems.end(), [](const RestoreProblem& p) {
+    auto r = restored_set("outside2/grbl/escriba_example11.gcode", 21, 3);
+    for (std::size_t x : r.check.silent_at) EXPECT_NE(x, 917U) << "X49.94961 written with six decimals, unsaid";
+    const auto& problems = r.result.problems;
+    auto run = std::find_if(problems.begin(), problems.end(), [](const RestoreProblem& p) {
         return p.run_length && p.reason.find("too seldom seen") != std::string::npos;
     });
-    ASSERT_NE(run, r.problems.end()) << "the run the format breaks is not named";
+    ASSERT_NE(run, problems.end()) << "the run the format breaks is not named";
     EXPECT_EQ(run->status, FrameStatus::contested) << run->reason;
     EXPECT_NE(run->reason.find("word-format"), std::string::npos) << run->reason;
 }
@@ -214,11 +224,9 @@ TEST(RestoreAlike, AFormatOfFewerWordsThanTheOddsDoesNotOverturnTheReads) {
 TEST(RestoreAlike, ANineLeftOutOfN99999IsInDoubtWhereTheBlockNumberBreaks) {
     SKIP_WITHOUT_SHARED_DATA("outside2/other/gcw_TOKARKA.NC");
     for (auto [set, at] : {std::pair<std::uint64_t, std::size_t>{171, 327616}, {347, 444729}, {83, 550056}}) {
-        auto s = real_set("outside2/other/gcw_TOKARKA.NC", set, 3);
-        auto r = restore_reads(s.reads);
-        auto check = check_restore(s.tape, r);
-        for (std::size_t x : check.silent_at) EXPECT_NE(x, at) << "set " << set << ": N9999 for N99999, unsaid";
-        EXPECT_GE(r.contested_unwritten, 1U) << "set " << set;
+        auto r = restored_set("outside2/other/gcw_TOKARKA.NC", set, 3);
+        for (std::size_t x : r.check.silent_at) EXPECT_NE(x, at) << "set " << set << ": N9999 for N99999, unsaid";
+        EXPECT_GE(r.result.contested_unwritten, 1U) << "set " << set;
     }
 }
 
@@ -227,11 +235,9 @@ TEST(RestoreAlike, ANineLeftOutOfN99999IsInDoubtWhereTheBlockNumberBreaks) {
 // short runs were decided apart, and 31 stars written without a doubt.
 TEST(RestoreAlike, AMisreadCopyAloneInItsColumnDoesNotSplitARun) {
     SKIP_WITHOUT_SHARED_DATA("outside2/haas/boreyko_otverstie_O00010.nc");
-    auto s = real_set("outside2/haas/boreyko_otverstie_O00010.nc", 378, 5);
-    auto r = restore_reads(s.reads);
-    auto check = check_restore(s.tape, r);
-    EXPECT_EQ(check.silently_wrong, 0U);
-    EXPECT_TRUE(check.exact);
+    auto r = restored_set("outside2/haas/boreyko_otverstie_O00010.nc", 378, 5);
+    EXPECT_EQ(r.check.silently_wrong, 0U);
+    EXPECT_TRUE(r.check.exact);
 }
 
 // "G03 G91": one read has "G033", another "G03  ", and the aligner put the extra 3 and the extra space in
@@ -241,20 +247,13 @@ TEST(RestoreAlike, TwoReadsEachWithADifferentFrameReadTwiceInOneColumnLeaveItOut
     auto cols = solid("%|N20 G0", 3);
     for (std::string c : {"333", "_3 "}) cols.push_back(c);
     for (auto c : solid("  G91 X0|M02|", 3)) cols.push_back(c);
-    auto h = hand_aligned(cols);
-    std::vector<std::span<const Frame>> spans(h.reads.begin(), h.reads.end());
-    RestoreOptions o{.code = FrameCode::iso()};
-    auto v = detail::make_vote_context(h.alignment, spans, o);
-    auto vote = detail::vote(v, o);
+    auto vote = vote_on(cols);
     const std::size_t doubles = 9;
     EXPECT_FALSE(vote.verdicts[doubles].write);
     EXPECT_EQ(vote.verdicts[doubles].status, FrameStatus::extra);
     // A frame only one read has, unlike its neighbours, is not taken for a frame read twice.
     cols[doubles] = "_7 ";
-    auto h2 = hand_aligned(cols);
-    std::vector<std::span<const Frame>> spans2(h2.reads.begin(), h2.reads.end());
-    auto v2 = detail::make_vote_context(h2.alignment, spans2, o);
-    auto vote2 = detail::vote(v2, o);
+    auto vote2 = vote_on(cols);
     ASSERT_GE(vote2.verdicts[doubles].problem, 0);
     EXPECT_EQ(vote2.problems[static_cast<std::size_t>(vote2.verdicts[doubles].problem)].reason.find("twice"),
               std::string::npos);
@@ -269,12 +268,6 @@ TEST(RestoreAlike, ATieIsWonByTheReadThatReadsTheFramesBesideAsTheOthersDo) {
     const std::size_t space = cols.size();
     for (std::string c : {"2~ ", ",GG", "a00", "011"}) cols.push_back(c);
     for (auto c : solid(" G91 X40.0|M02|", 3)) cols.push_back(c);
-    RestoreOptions o{.code = FrameCode::iso()};
-    auto vote_on = [&](const std::vector<std::string>& columns) {
-        auto h = hand_aligned(columns);
-        std::vector<std::span<const Frame>> spans(h.reads.begin(), h.reads.end());
-        return detail::vote(detail::make_vote_context(h.alignment, spans, o), o);
-    };
     auto vote = vote_on(cols);
     EXPECT_EQ(vote.verdicts[space].written, iso(' '));
     EXPECT_EQ(vote.verdicts[space].status, FrameStatus::voted);
