@@ -28,10 +28,18 @@ public:
             i = j;
         }
     }
-    double log_chance(Frame f, std::size_t length) const {
+    /// own: the length the reference read has this run with (0: unknown). The run is left out of the
+    /// counts: a frame the tape holds a few times would otherwise take the reference read's own slip
+    /// ("%%" for "%") for the tape's habit.
+    double log_chance(Frame f, std::size_t length, std::size_t own = 0) const {
         constexpr double pseudo = 0.5;
-        double n = count_[f][std::min(length, longest_run)];
-        return std::log((n + pseudo) / (static_cast<double>(total_[f]) + pseudo * longest_run));
+        std::size_t at = std::min(length, longest_run);
+        double n = count_[f][at], total = static_cast<double>(total_[f]);
+        if (own > 0 && total > 0) {
+            total -= 1;
+            if (std::min(own, longest_run) == at && n > 0) n -= 1;
+        }
+        return std::log((n + pseudo) / (total + pseudo * longest_run));
     }
 
 private:
@@ -184,8 +192,10 @@ void weigh_lengths(const VoteContext& v, const RunPrior& prior, const std::vecto
         if (copies[r] >= 0) lo = std::min(lo, copies[r]), hi = std::max(hi, copies[r] + beside[r]);
     lo = std::max(lo, 1L);
     double best = -INFINITY, second = -INFINITY;
+    const long own = copies[v.a.reference()];
     for (long n = lo; n <= std::max(hi, lo); ++n) {
-        double score = prior.log_chance(d.value, static_cast<std::size_t>(n));
+        double score =
+            prior.log_chance(d.value, static_cast<std::size_t>(n), own > 0 ? static_cast<std::size_t>(own) : 0);
         for (std::size_t r = 0; r < copies.size(); ++r)
             if (copies[r] >= 0)
                 score += std::log(read_likelihood(copies[r], beside[r], static_cast<std::size_t>(n), v.rates[r]));
