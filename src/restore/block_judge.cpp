@@ -74,6 +74,24 @@ std::pair<std::size_t, std::size_t> around(const FrameCode& code, std::span<cons
 
 }  // namespace
 
+std::string joined(const Breaks& breaks) {
+    std::string s;
+    for (const auto& r : breaks) s += (s.empty() ? "" : ", ") + r;
+    return s;
+}
+
+// The block with `copies` copies of value where it has `written` from first_copy on, and the copies'
+// indices in it.
+BlockTry with_copies(std::span<const Frame> block, std::size_t first_copy, std::size_t written, std::size_t copies,
+                     Frame value) {
+    BlockTry t{std::vector<Frame>(block.begin(), block.end()), {}};
+    auto at = t.frames.begin() + static_cast<std::ptrdiff_t>(first_copy);
+    t.frames.erase(at, at + static_cast<std::ptrdiff_t>(written));
+    t.frames.insert(t.frames.begin() + static_cast<std::ptrdiff_t>(first_copy), copies, value);
+    for (std::size_t k = 0; k < copies; ++k) t.decided.push_back(first_copy + k);
+    return t;
+}
+
 std::string block_text(const FrameCode& code, std::span<const Frame> frames, std::span<const std::size_t> wanted,
                        std::vector<std::pair<std::size_t, std::size_t>>* places) {
     std::string s;

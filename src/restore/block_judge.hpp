@@ -38,6 +38,9 @@ struct BlockTry {
 using Breaks = std::vector<std::string>;
 inline constexpr std::string_view arc_closes = "+arc";
 
+/// "word-format, block-number": the rules broken, for a reason.
+std::string joined(const Breaks& breaks);
+
 class BlockJudge {
 public:
     /// The block whose frames are image[from, to) (its line, its end of block included), standing on
@@ -65,6 +68,11 @@ private:
     std::map<std::string, int> baseline_;
     std::vector<std::pair<std::size_t, std::size_t>> spans_;  // the damaged words, columns from 1 inclusive
 };
+
+/// The block with `copies` copies of value where it has `written` from first_copy on, the copies
+/// being decided.
+BlockTry with_copies(std::span<const Frame> block, std::size_t first_copy, std::size_t written, std::size_t copies,
+                     Frame value);
 
 /// The text of frames as the decoder reads them (a bad frame as U+FFFD); places, when given, gets for
 /// each frame of wanted (indices into frames) its line (from 0, in the text) and column (from 1, in

@@ -55,12 +55,9 @@ Breaks judge_as_written(const RestoreResult& out, const RepairWorld& w, std::siz
     return breaks;
 }
 
-// A vote put in doubt, the frame written (or, left out, not) as the vote decided.
-void doubt_as_paired_wrong(RestoreResult& out, RestoreProblem& p, const Breaks& breaks) {
-    std::string rules;
-    for (const auto& r : breaks) rules += (rules.empty() ? "" : ", ") + r;
-    std::string reason = p.reason + "; but its block as written breaks " + rules +
-                         ": the reads may be paired at the wrong place, so it stays in doubt";
+// A vote put in doubt, why added to its reason; the frame written (or, left out, not) as the vote decided.
+void put_in_doubt(RestoreResult& out, RestoreProblem& p, const std::string& why) {
+    std::string reason = p.reason + "; but " + why + ", so it stays in doubt";
     if (p.frame) return set_status(out, p, FrameStatus::contested, p.written, std::move(reason));
     --out.counts[static_cast<std::size_t>(p.status)];
     ++out.counts[static_cast<std::size_t>(FrameStatus::contested)];
@@ -82,32 +79,60 @@ void doubt_votes_that_break_their_block(RestoreResult& out, const RepairWorld& w
             places.push_back(static_cast<std::size_t>(*p->frame - 1));
         Breaks breaks = judge_as_written(out, w, places.front(), places);
         if (!breaks.empty())
-            for (RestoreProblem* p : outvoted.subspan(a, b - a)) doubt_as_paired_wrong(out, *p, breaks);
+            for (RestoreProblem* p : outvoted.subspan(a, b - a))
+                put_in_doubt(
+                    out, *p,
+                    "its block as written breaks " + joined(breaks) + ": the reads may be paired at the wrong place");
         a = b;
     }
 }
 
-// A good frame one read has that the vote left out (the others have none there), where the block as
-// written then breaks the program's rules at that place ("N9999" among "N99999" blocks): the frame may be
-// the tape's, lost by two reads, so the place stays in doubt. Judged at the frames either side of it.
+// What the block a good frame was left out of breaks at that place without it ("N9999" among blocks
+// numbered N99999), and whether it fits with the frame put back.
+struct LeftOutJudged {
+    Breaks without;
+    bool fits_with = false;
+};
+LeftOutJudged judge_left_out(const RestoreResult& out, const RepairWorld& w, const RestoreProblem& p) {
+    if (!w.setup.nc || out.frames.empty()) return {};
+    const std::size_t at = static_cast<std::size_t>(p.after), first = std::min(at, out.frames.size() - 1);
+    auto range = block_around(w.setup.code, out.frames, first);
+    if (!range || at < range->first || at > range->second) return {};
+    // The frame after the gap, whose word the left-out frame would stand in.
+    std::vector<std::size_t> places{first};
+    BlockJudge judge(w.setup, out.frames, range->first, range->second, w.line_of(first), places);
+    auto judged = [&](std::size_t copies) {
+        Breaks b = judge.judge(with_copies(judge.frames(), at - range->first, 0, copies, p.written));
+        std::erase(b, std::string(arc_closes)), std::erase(b, std::string("arc"));
+        return b;
+    };
+    Breaks without = judged(0);
+    if (without.empty()) return {};  // most blocks: nothing to doubt, and no second try
+    return {std::move(without), judged(1).empty()};
+}
+
+// A good frame one read has that the vote left out (the others have none there), where the block breaks
+// the program's rules at that place without it: the frame may be the tape's, lost by the other reads (it
+// fits), or the reads that disagree here misread something else; either way the place stays in doubt.
 void doubt_left_outs_that_break_their_block(RestoreResult& out, const RepairWorld& w,
                                             std::span<RestoreProblem* const> left_out) {
     for (RestoreProblem* p : left_out) {
-        std::size_t after = static_cast<std::size_t>(p->after);
-        if (out.frames.empty()) return;
-        std::size_t anchor = std::min(after, out.frames.size() - 1);
-        std::vector<std::size_t> places{anchor};
-        if (after > 0 && after - 1 != anchor) places.insert(places.begin(), after - 1);
-        if (Breaks breaks = judge_as_written(out, w, anchor, places); !breaks.empty())
-            doubt_as_paired_wrong(out, *p, breaks);
+        auto judged = judge_left_out(out, w, *p);
+        if (judged.without.empty()) continue;
+        put_in_doubt(out, *p,
+                     "without it its block breaks " + joined(judged.without) +
+                         (judged.fits_with ? " and with it fits: it may be the tape's, lost by the other reads"
+                                           : " where the reads disagree: one of them may have misread it"));
     }
 }
 
 // A good frame the vote left out: some read has it, not failing parity, and the most reads have none.
+// (Not a copy of a run whose length the vote decided as a whole, nor blank tape or a rubout, which the
+// text skips.)
 bool left_out_good_reading(const FrameCode& code, const RestoreProblem& p) {
-    if (p.frame || p.status != FrameStatus::extra) return false;
-    return std::any_of(p.seen.begin(), p.seen.end(),
-                       [&](const std::optional<Frame>& f) { return f && !is_bad_frame(code.kind(*f)); });
+    if (p.frame || p.status != FrameStatus::extra || p.run_length) return false;
+    return code.kind(p.written) == FrameKind::character &&
+           std::any_of(p.seen.begin(), p.seen.end(), [&](const std::optional<Frame>& f) { return f == p.written; });
 }
 
 // Good readings that disagree (not on a run's length, which the vote decided as a whole), where every

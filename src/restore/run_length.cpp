@@ -185,6 +185,22 @@ std::string beside_text(const std::vector<long>& beside) {
 }
 
 // The length of a data run by likelihood: every length from the fewest copies a read has to the most.
+// The length of the run the reference read has where run d stands (0: none there): the one its prior
+// counted, found in the read's own frames, which may reach past the run's columns.
+std::size_t reference_run(const VoteContext& v, const RunDecision& d) {
+    const std::size_t r = v.a.reference();
+    const auto& read = v.reads[r];
+    for (std::size_t c = d.first; c < d.end; ++c) {
+        std::int32_t i = v.a.frame(c, r);
+        if (i == ReadAlignment::none || read[static_cast<std::size_t>(i)] != d.value) continue;
+        std::size_t from = static_cast<std::size_t>(i), to = from + 1;
+        while (from > 0 && read[from - 1] == d.value) --from;
+        while (to < read.size() && read[to] == d.value) ++to;
+        return to - from;
+    }
+    return 0;
+}
+
 void weigh_lengths(const VoteContext& v, const RunPrior& prior, const std::vector<long>& copies,
                    const std::vector<long>& beside, RunDecision& d) {
     long lo = LONG_MAX, hi = 0;
@@ -192,10 +208,9 @@ void weigh_lengths(const VoteContext& v, const RunPrior& prior, const std::vecto
         if (copies[r] >= 0) lo = std::min(lo, copies[r]), hi = std::max(hi, copies[r] + beside[r]);
     lo = std::max(lo, 1L);
     double best = -INFINITY, second = -INFINITY;
-    const long own = copies[v.a.reference()];
+    const std::size_t own = reference_run(v, d);
     for (long n = lo; n <= std::max(hi, lo); ++n) {
-        double score =
-            prior.log_chance(d.value, static_cast<std::size_t>(n), own > 0 ? static_cast<std::size_t>(own) : 0);
+        double score = prior.log_chance(d.value, static_cast<std::size_t>(n), own);
         for (std::size_t r = 0; r < copies.size(); ++r)
             if (copies[r] >= 0)
                 score += std::log(read_likelihood(copies[r], beside[r], static_cast<std::size_t>(n), v.rates[r]));

@@ -33,24 +33,6 @@ Draft draft(const VoteResult& vote) {
     return d;
 }
 
-// The block with `copies` copies of value where it has `written` from first_copy on, and the copies'
-// indices in it.
-BlockTry with_copies(std::span<const Frame> block, std::size_t first_copy, std::size_t written, std::size_t copies,
-                     Frame value) {
-    BlockTry t{std::vector<Frame>(block.begin(), block.end()), {}};
-    auto at = t.frames.begin() + static_cast<std::ptrdiff_t>(first_copy);
-    t.frames.erase(at, at + static_cast<std::ptrdiff_t>(written));
-    t.frames.insert(t.frames.begin() + static_cast<std::ptrdiff_t>(first_copy), copies, value);
-    for (std::size_t k = 0; k < copies; ++k) t.decided.push_back(first_copy + k);
-    return t;
-}
-
-std::string joined(const Breaks& b) {
-    std::string s;
-    for (const auto& r : b) s += (s.empty() ? "" : ", ") + r;
-    return s;
-}
-
 // Decides, in tape order, the runs and the contested frames the rules can, keeping the draft image true
 // to the verdicts as they change.
 class RuleDecider {
@@ -105,13 +87,16 @@ bool RuleDecider::habit_too_weak(std::size_t first, const Breaks& breaks, double
     while (at > 0 && !is_letter(img_.frames[at - 1])) --at;
     if (at == 0) return false;
     char address = static_cast<char>(std::toupper(static_cast<unsigned char>(v_.code->character(img_.frames[at - 1]))));
+    if (address == '\n') return false;  // no word's letter before the run in its block: no habit to weigh
+    if (address == ':') address = 'N';  // an ISO main block's number is an N word
     return static_cast<double>(world_.rules->words_of(address)) < odds;
 }
 
+// A word's address letter, a main block's ':', or the end of the block before.
 bool RuleDecider::is_letter(Frame f) const {
     if (v_.code->kind(f) != FrameKind::character) return false;
     char c = v_.code->character(f);
-    return std::isalpha(static_cast<unsigned char>(c)) || c == '\n';
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '\n' || c == ':';
 }
 
 void RuleDecider::resize(std::size_t first, std::ptrdiff_t delta, Frame value) {

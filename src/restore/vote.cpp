@@ -416,7 +416,10 @@ void Voter::values(std::size_t c, const Heard& h) {
     if (lean) tied.push_back(*lean);
     for (const auto& x : t)
         if (x.good && x.weight == t[0].weight && (!lean || x.value != *lean)) tied.push_back(x.value);
-    if (auto steady = all_differ ? std::nullopt : from_steady_reads(c, tied))
+    // Not where a reading failing parity leans to another, nor where several reads slipped here.
+    bool tangled = v_.tangled[c] && h.lost > 0 && h.present_good <= h.lost + 1;
+    auto steady = all_differ || tangled ? std::nullopt : from_steady_reads(c, tied);
+    if (steady && (!lean || *lean == *steady))
         return set(c, FrameStatus::voted, *steady,
                    "good readings disagree; the others' reads misread the frames beside this one (outvoted there "
                    "by good readings): written",
