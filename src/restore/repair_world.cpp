@@ -27,10 +27,11 @@ void learn_skipped_frames(RepairWorld& w, const FrameCode& code, std::span<const
 
 // A damaged frame at `at` may touch its line's block number: it stands among the line's first frames up
 // to the first that is no part of a number ("/", ":", "N" and digits, blanks skipped), that one included
-// (where a lost digit of the number is placed), or it is the line's first character.
+// (where a lost digit of the number is placed), or it is the line's first character. `at` may be the
+// image's end (a frame left out after the last one).
 bool touches_number(const FrameCode& code, std::span<const Frame> image, std::size_t line_start, std::size_t at) {
     bool first = true;
-    for (std::size_t i = line_start; i <= at; ++i) {
+    for (std::size_t i = line_start; i <= at && i < image.size(); ++i) {
         FrameKind k = code.kind(image[i]);
         if (k == FrameKind::blank || k == FrameKind::rubout) continue;
         if (i == at) return true;
