@@ -32,11 +32,6 @@ bool backed(const ReadAlignment& a, Reads reads, const std::optional<FrameCode>&
     return others && !others_good && good_frame(code, f);
 }
 
-// The read's frame at i equals a neighbour of it in the read.
-bool read_twice(std::span<const Frame> read, std::size_t i) {
-    return (i > 0 && read[i - 1] == read[i]) || (i + 1 < read.size() && read[i + 1] == read[i]);
-}
-
 // Absent where most other reads have a frame; a frame one other read alone has (read twice) says
 // nothing of this read.
 bool absent_where_others_have(const ReadAlignment& a, std::size_t c, std::size_t r) {
@@ -59,7 +54,7 @@ std::vector<Stretch> unbacked_stretches(const ReadAlignment& a, Reads reads, con
             auto f = frame_at(a, reads, c, r);
             if (f && backed(a, reads, code, c, r, *f)) break;
             // A frame equal to its neighbour in the read is a frame read twice, not a stain's.
-            z.unbacked |= f.has_value() && !read_twice(reads[r], static_cast<std::size_t>(a.frame(c, r)));
+            z.unbacked |= f.has_value() && !repeated(reads[r], static_cast<std::size_t>(a.frame(c, r)));
             z.failing += f && !good_frame(code, *f);
             if (!f) z.absent |= absent_where_others_have(a, c, r);
         }

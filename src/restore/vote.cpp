@@ -24,16 +24,9 @@ struct Heard {
     std::vector<Tally> tally;  // good first, heaviest first
     std::size_t present = 0, covering = 0, lost = 0, unheard = 0;
     std::size_t present_good = 0, good_values = 0;
-    bool repeat = false;               // a read has this frame next to an equal one
     std::size_t repeats = 0;           // reads that have their frame here next to an equal one
     std::optional<Frame> first_bad{};  // the first reading that fails parity (or a blank among punched frames)
 };
-
-// True when the frame read r has at index i is also its neighbour in that read: a frame read twice
-// looks so, and so does a frame punched twice.
-bool repeated(std::span<const Frame> read, std::size_t i) {
-    return (i > 0 && read[i - 1] == read[i]) || (i + 1 < read.size() && read[i + 1] == read[i]);
-}
 
 void count_reading(Heard& h, Frame f, bool good, double weight) {
     auto t = std::find_if(h.tally.begin(), h.tally.end(), [&](const Tally& x) { return x.value == f; });
@@ -58,9 +51,7 @@ Heard hear(const VoteContext& v, std::size_t c) {
         ++h.present;
         Frame f = v.reads[r][static_cast<std::size_t>(i)];
         punched_here |= f != blank_frame;
-        bool twice = repeated(v.reads[r], static_cast<std::size_t>(i));
-        h.repeat |= twice;
-        h.repeats += twice;
+        h.repeats += repeated(v.reads[r], static_cast<std::size_t>(i));
         count_reading(h, f, v.good(f), v.doubts(c, r) ? doubted_weight : 1.0);
         if (!v.good(f) && !h.first_bad) h.first_bad = f;
     }
@@ -251,13 +242,13 @@ bool Voter::gaps_are_lone(std::size_t c) const {
 // as one: written.)
 void Voter::half_present(std::size_t c, const Heard& h) {
     const auto& front = h.tally.front();
-    bool dropped = h.repeat && !alone_beside(c) && front.value != blank_frame && gaps_are_lone(c);
+    bool dropped = h.repeats > 0 && !alone_beside(c) && front.value != blank_frame && gaps_are_lone(c);
     out_.verdicts[c].presence = true;
     set(c, FrameStatus::contested, front.value,
         std::string("half the reads that cover this place have a frame here, half do not; ") +
-            (dropped    ? "like its neighbour, it may be read twice: not written"
-             : h.repeat ? "the others lack a stretch here: written"
-                        : "unlike its neighbours, it cannot be read twice: written"),
+            (dropped         ? "like its neighbour, it may be read twice: not written"
+             : h.repeats > 0 ? "the others lack a stretch here: written"
+                             : "unlike its neighbours, it cannot be read twice: written"),
         !dropped);
 }
 
@@ -268,7 +259,7 @@ void Voter::half_present(std::size_t c, const Heard& h) {
 bool Voter::lone_frame(std::size_t c, const Heard& h, std::size_t lost) {
     const auto& front = h.tally.front();
     std::size_t present = front.good ? h.present_good : h.present;
-    if (present != 1 || lost < 2 || h.repeat || front.value == blank_frame || alone_beside(c)) return false;
+    if (present != 1 || lost < 2 || h.repeats > 0 || front.value == blank_frame || alone_beside(c)) return false;
     if (front.good) {
         out_.verdicts[c].presence = true;
         set(c, FrameStatus::contested, front.value,
@@ -315,7 +306,8 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         // Where several reads slipped in the stretch, a vote won by one read decides nothing.
         bool tangled = v_.tangled[c] && !lone_blank && lost - present <= 1;
         // A good frame unlike its neighbours is no frame read twice: the program's rules may say it stands.
-        out_.verdicts[c].presence = tangled || (present == 1 && front.good && !h.repeat && front.value != blank_frame);
+        out_.verdicts[c].presence =
+            tangled || (present == 1 && front.good && h.repeats == 0 && front.value != blank_frame);
         set(c, tangled ? FrameStatus::contested : FrameStatus::extra, front.value,
             of_reads(present, h.covering, "have this frame") +
                 (tangled ? ", and more than one read slipped in this stretch: not written, but nothing decides"
@@ -335,7 +327,7 @@ bool Voter::presence(std::size_t c, const Heard& h) {
         half_present(c, h);
         return true;
     }
-    if (lost > 0 && h.repeat && h.good_values == 1 && front.good) {
+    if (lost > 0 && h.repeats > 0 && h.good_values == 1 && front.good) {
         out_.verdicts[c].presence = true;
         set(c, FrameStatus::contested, front.value,
             of_reads(present, h.covering, "have this frame") +
@@ -365,19 +357,15 @@ bool Voter::misreads_beside(std::size_t c, std::size_t r) const {
 std::optional<Frame> Voter::from_steady_reads(std::size_t c, const std::vector<Frame>& tied) const {
     std::optional<Frame> steady;
     for (Frame value : tied) {
-        bool any = false, all_misread = true;
+        std::size_t reads = 0, misreading = 0;
         for (std::size_t r = 0; r < v_.a.reads(); ++r) {
             auto f = frame_at(v_.a, v_.reads, c, r);
             if (!f || *f != value || !v_.heard(c, r)) continue;
-            any = true;
-            all_misread &= misreads_beside(c, r);
+            ++reads;
+            misreading += misreads_beside(c, r);
         }
-        if (!any || all_misread) continue;
-        for (std::size_t r = 0; r < v_.a.reads(); ++r) {
-            auto f = frame_at(v_.a, v_.reads, c, r);
-            if (f && *f == value && v_.heard(c, r) && misreads_beside(c, r)) return std::nullopt;
-        }
-        if (steady) return std::nullopt;
+        if (reads == 0 || misreading == reads) continue;    // only misreading reads have it
+        if (misreading > 0 || steady) return std::nullopt;  // reads of one kind and the other, or two steady
         steady = value;
     }
     return steady;
@@ -399,11 +387,13 @@ void Voter::values(std::size_t c, const Heard& h) {
                        " and the others misread this stretch: written, but nothing backs it",
                    true);
     }
+    // Several reads slipped in this stretch, and the good readings do not outnumber the reads lacking one.
+    const bool tangled = v_.tangled[c] && h.lost > 0 && h.present_good <= h.lost + 1;
     if (t.size() == 1 || !t[1].good || t[0].weight > t[1].weight) {
         bool only_good = t.size() > 1 && !t[1].good && t[0].weight <= t[1].weight;
         std::string reason = only_good ? "the only good reading (the others fail parity or are blank among holes)"
                                        : of_reads(static_cast<std::size_t>(t[0].count), h.covering, "agree");
-        if (v_.tangled[c] && h.lost > 0 && h.present_good <= h.lost + 1)
+        if (tangled)
             return set(c, FrameStatus::contested, t[0].value,
                        reason + ", and more than one read slipped in this stretch: written, but nothing decides", true);
         return set(c, FrameStatus::voted, t[0].value, reason, true);
@@ -417,7 +407,6 @@ void Voter::values(std::size_t c, const Heard& h) {
     for (const auto& x : t)
         if (x.good && x.weight == t[0].weight && (!lean || x.value != *lean)) tied.push_back(x.value);
     // Not where a reading failing parity leans to another, nor where several reads slipped here.
-    bool tangled = v_.tangled[c] && h.lost > 0 && h.present_good <= h.lost + 1;
     auto steady = all_differ || tangled ? std::nullopt : from_steady_reads(c, tied);
     if (steady && (!lean || *lean == *steady))
         return set(c, FrameStatus::voted, *steady,

@@ -46,6 +46,12 @@ struct VoteContext {
 
 VoteContext make_vote_context(const ReadAlignment& a, Reads reads, const RestoreOptions& o);
 
+/// True when the frame a read has at index i is also its neighbour in that read: a frame read twice
+/// looks so, and so does a frame punched twice.
+inline bool repeated(std::span<const Frame> read, std::size_t i) {
+    return (i > 0 && read[i - 1] == read[i]) || (i + 1 < read.size() && read[i + 1] == read[i]);
+}
+
 /// garbled and tangled of VoteContext.
 std::vector<std::uint8_t> garbled_stretches(const ReadAlignment& a, Reads reads, const std::optional<FrameCode>& code);
 std::vector<bool> slips_in_several_reads(const ReadAlignment& a, Reads reads);
