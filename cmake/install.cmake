@@ -27,6 +27,10 @@ add_custom_target(tape_man ALL DEPENDS ${TAPE_MAN_GZ})
 add_dependencies(tape tape_man)
 
 install(TARGETS tape RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+# The picture module, where the programs look for it: ../LIBDIR/tape beside them (CMakeLists.txt).
+if(TARGET tape_pictures)
+  install(TARGETS tape_pictures LIBRARY DESTINATION ${TAPE_PICTURE_MODULE_DIR} COMPONENT runtime)
+endif()
 # Built by `cmake --build build`, not by the demo's build of the tape target alone: installed when built.
 install(TARGETS tape-damage tape-adapter-sim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime OPTIONAL)
 install(FILES ${TAPE_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions COMPONENT runtime)
@@ -83,6 +87,6 @@ install(CODE "set(TAPE_PC_IN \"${PROJECT_SOURCE_DIR}/tape_core.pc.in\")
   set(TAPE_PC_INCLUDEDIR \"${CMAKE_INSTALL_INCLUDEDIR}\")
   set(TAPE_PC_VERSION \"${PROJECT_VERSION}\")
   set(TAPE_PC_SANITIZE \"${TAPE_PC_SANITIZE}\")
-  set(TAPE_PC_PRIVATE_LIBS \"${TAPE_OPENCV_LIBRARIES}\")
+  set(TAPE_PC_PRIVATE_LIBS \"${CMAKE_DL_LIBS}\")
   include(\"${PROJECT_SOURCE_DIR}/cmake/tape_core_pc.cmake\")" COMPONENT dev)
 install(FILES ${PROJECT_BINARY_DIR}/tape_core.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dev)

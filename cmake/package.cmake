@@ -25,7 +25,6 @@ set(CPACK_DEBIAN_DEV_PACKAGE_NAME libtape-core-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 # A static library: what links it needs the USB libraries' development files (tape_coreConfig.cmake, tape_core.pc).
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "libusb-1.0-0-dev, libhidapi-dev, pkg-config")
-if(TAPE_HAVE_OPENCV)  # the static library's scan needs OpenCV's modules to link
-  string(APPEND CPACK_DEBIAN_DEV_PACKAGE_DEPENDS ", libopencv-core-dev, libopencv-imgproc-dev, libopencv-imgcodecs-dev")
-endif()
+# Its scan and pictures load the picture module, which the tape package installs with OpenCV's libraries.
+set(CPACK_DEBIAN_DEV_PACKAGE_SUGGESTS "tape")
 include(CPack)

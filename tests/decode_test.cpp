@@ -293,3 +293,25 @@ TEST(FiveTrackUnshiftOnSpace, ASpaceReturnsToLettersWhenAsked) {
     DecodeOptions usos{.code = Code::ita2, .unshift_on_space = true};
     EXPECT_EQ(decode(frames, usos).text, "1 2");
 }
+
+// Line ends counted a piece at a time, as decode takes the text: the same as a look at every character,
+// wherever the pieces are cut (a CR at the end of one and its LF at the start of the next).
+TEST(LineEnds, CountsLinesAndCrLfPairsAcrossPieces) {
+    std::mt19937 random(30);
+    const std::string alphabet = "N1 \r\n\n\rX";
+    for (int t = 0; t < 300; ++t) {
+        std::string text;
+        for (int k = random() % 200; k > 0; --k) text += alphabet[random() % alphabet.size()];
+        std::uint64_t lines = 0, crlf = 0;
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n') ++lines, crlf += i > 0 && text[i - 1] == '\r';
+        LineEnds ends;
+        for (std::size_t at = 0; at < text.size();) {
+            std::size_t n = std::min<std::size_t>(1 + random() % 40, text.size() - at);
+            ends.take(std::string_view(text).substr(at, n));
+            at += n;
+        }
+        ASSERT_EQ(ends.lines, lines) << text;
+        ASSERT_EQ(ends.crlf, crlf) << text;
+    }
+}

@@ -98,7 +98,11 @@ private:
     void five_track_bad(Frame f, std::uint64_t index, const std::string& what, DecodeResult& out);
     void note_trailer(std::span<const Frame> frames);  // decode_ending.cpp
     std::size_t note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out);
+    void punched_stretch(std::span<const Frame> stretch, DecodeResult& out);
+    std::size_t next_end_of_block(std::span<const Frame> stretch, std::size_t from) const;
     void after_blanks(Frame f, FrameKind kind, DecodeResult& out);
+    bool habit_is_no_blank() const;
+    std::optional<std::uint8_t> habit() const;
     void block_start_blanks(DecodeResult& out);
     void blank_run(std::uint64_t from, std::uint64_t n, const std::string& where, DecodeResult& out);
 
@@ -110,6 +114,9 @@ private:
     // blank frames this tape put after its last 16 ends of block, its habit; and a run longer than the
     // habit, waiting for two more blocks to keep it.
     enum class Before { nothing, printable, end_of_block } before_blanks_ = Before::nothing;
+    Before state_after(Frame f) const;  // what a frame leaves before the blank tape after it
+    std::array<bool, 256> rubout_{};    // per frame value: DEL, which the blank-in-block report skips
+    int end_of_block_frame_ = -1;       // the one frame that ends a block, or < 0
     std::uint64_t blank_from_ = 0, blank_frames_ = 0;
     std::array<std::uint8_t, 16> habit_{};
     std::size_t habit_seen_ = 0;
@@ -126,6 +133,15 @@ private:
     std::optional<std::uint64_t> last_bad_;      // 0-based index of the last bad frame
     int register_ = 0;                           // 5-track: the register the last shift chose
     std::vector<std::uint64_t> held_cr_;         // 5-track: frames of CRs not yet known to end a line
+};
+
+/// The line ends of decoded text, taken a piece at a time: its LFs, and how many of them follow a CR
+/// (a tape punched with CR LF, which `encode --crlf` punches again).
+struct LineEnds {
+    std::uint64_t lines = 0, crlf = 0;
+    bool after_cr = false;  ///< the last piece ended with a CR
+
+    void take(std::string_view text);
 };
 
 /// The hot loop, for callers that bring their own buffer. Decodes frames into out (room for

@@ -100,7 +100,8 @@ public:
     TapeSurvey survey(Reading r) const;
 
 private:
-    void note_koi7(Frame f);
+    void note_0x80_runs(std::span<const Frame> frames, const FrameTally& t);
+    void note_koi7(std::span<const Frame> frames, const FrameTally& t);
 
     TapeEvidence evidence_;
     std::vector<Surveyor> surveyors_;  // one for each of evidence_.fits

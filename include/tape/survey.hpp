@@ -1,6 +1,7 @@
 // What is on a tape, counted: the figures behind `tape info`.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -27,6 +28,19 @@ struct ParityCounts {
 
 ParityCounts count_parity(std::span<const Frame> frames);
 
+/// A piece of tape counted once for all the readings tried on it: how many frames of each value, and
+/// where its punched frames begin and end. Every count a Surveyor keeps but the program starts follows
+/// from it, so that six readings of a long tape cost one pass over it, not six.
+struct FrameTally {
+    explicit FrameTally(std::span<const Frame> frames);
+
+    std::array<std::uint64_t, 256> count{};  ///< frames of each value
+    std::size_t size = 0;                    ///< frames in all
+    std::size_t first_punched = 0;           ///< index of the first punched frame; size when there is none
+    std::size_t last_punched = 0;            ///< index of the last punched frame
+    ParityCounts parity;                     ///< of the punched frames
+};
+
 struct TapeSurvey {
     std::uint64_t frames = 0;          ///< all frames
     std::uint64_t leader = 0;          ///< blank frames before the first punched one
@@ -44,15 +58,22 @@ struct TapeSurvey {
 /// The same counts a chunk at a time, in bounded memory; the result is the same however the tape is cut.
 class Surveyor {
 public:
-    explicit Surveyor(const FrameCode& code) : code_(code) {}
+    explicit Surveyor(const FrameCode& code);
     void feed(std::span<const Frame> frames);
+    /// The same, with the frames' tally already made (FrameTally(frames)).
+    void feed(std::span<const Frame> frames, const FrameTally& tally);
     /// What a frame is in the code surveyed by.
     FrameKind kind(Frame f) const { return code_.kind(f); }
     /// The counts so far, the blank frames at the end taken as trailer.
     TapeSurvey result() const;
 
 private:
+    void count_blank_tape(const FrameTally& t);
+    void count_program_starts(std::span<const Frame> frames);
+    std::size_t next_percent(std::span<const Frame> frames, std::size_t from) const;
+
     FrameCode code_;
+    int percent_frame_ = -1;  // the one frame that is '%' in the code, -2 for several, -1 for none
     TapeSurvey s_;
     std::uint64_t blank_run_ = 0;  // blank frames since the last punched one
     bool punched_ = false;         // a punched frame seen: blanks from now on are inside or trailer

@@ -141,6 +141,11 @@ std::size_t decode_run(const FrameCode& code, std::span<const Frame> frames, cha
 
 Decoder::Decoder(const DecodeOptions& options)
     : options_(options), code_(FrameCode::make(options.code, options.parity, options.eia_table)) {
+    for (int f = 0; f < 256; ++f) {
+        rubout_[f] = code_.kind(static_cast<Frame>(f)) == FrameKind::rubout;
+        if (state_after(static_cast<Frame>(f)) == Before::end_of_block)
+            end_of_block_frame_ = end_of_block_frame_ == -1 ? f : -2;  // -2: several, looked for one by one
+    }
     if (is_five_track(options.code) && options.parity != Parity::even)
         throw Error(Errc::usage, "5-track codes carry no parity");
     if (is_five_track(options.code) && options.charset != Charset::ascii)
@@ -214,8 +219,7 @@ std::size_t Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t ba
     while (i < n) {
         const void* z = std::memchr(frames.data() + i, 0, n - i);
         std::size_t at = z ? static_cast<std::size_t>(static_cast<const Frame*>(z) - frames.data()) : n;
-        for (std::size_t k = i; k < at; ++k)
-            if (FrameKind kind = code_.kind(frames[k]); kind != FrameKind::rubout) after_blanks(frames[k], kind, out);
+        punched_stretch(frames.subspan(i, at - i), out);
         if (at == n) break;
         std::size_t end = at;
         while (end < n && frames[end] == 0) ++end;
@@ -224,6 +228,54 @@ std::size_t Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t ba
         i = end;
     }
     return from;
+}
+
+// Punched frames between blank runs. Of these only a few decide anything: the first (after blank tape),
+// each one after an end of block (the block starts that make the tape's habit), and the last (before
+// the next blank run). Once the habit is no blank after an end of block, a block start without blanks
+// changes nothing, so the ends of block are not even looked for: a clean tape's stretch costs two steps.
+void Decoder::punched_stretch(std::span<const Frame> stretch, DecodeResult& out) {
+    auto skip_rubouts = [&](std::size_t k) {
+        while (k < stretch.size() && rubout_[stretch[k]]) ++k;
+        return k;
+    };
+    std::size_t first = skip_rubouts(0);
+    if (first == stretch.size()) return;  // DEL alone: the tape is as it was before them
+    after_blanks(stretch[first], code_.kind(stretch[first]), out);
+    std::size_t last = stretch.size() - 1;
+    while (rubout_[stretch[last]]) --last;
+    for (std::size_t p = next_end_of_block(stretch, first); p < last && !habit_is_no_blank();
+         p = next_end_of_block(stretch, p)) {
+        p = skip_rubouts(p + 1);  // at most last: a punched frame follows
+        before_blanks_ = Before::end_of_block;
+        after_blanks(stretch[p], code_.kind(stretch[p]), out);
+    }
+    before_blanks_ = state_after(stretch[last]);
+}
+
+// The first end of block in stretch at or after from, or stretch.size().
+std::size_t Decoder::next_end_of_block(std::span<const Frame> stretch, std::size_t from) const {
+    if (from >= stretch.size()) return stretch.size();
+    if (end_of_block_frame_ >= 0) {
+        const void* lf = std::memchr(stretch.data() + from, end_of_block_frame_, stretch.size() - from);
+        return lf ? static_cast<std::size_t>(static_cast<const Frame*>(lf) - stretch.data()) : stretch.size();
+    }
+    while (from < stretch.size() && state_after(stretch[from]) != Before::end_of_block) ++from;
+    return from;
+}
+
+Decoder::Before Decoder::state_after(Frame f) const {
+    if (code_.kind(f) != FrameKind::character) return Before::nothing;
+    char c = code_.character(f);
+    return static_cast<unsigned char>(c) >= 0x20 ? Before::printable
+           : c == '\n'                           ? Before::end_of_block
+                                                 : Before::nothing;
+}
+
+// The habit is no blank frame at all after an end of block, and no longer run waits to be said.
+bool Decoder::habit_is_no_blank() const {
+    return !suspect_.frames && habit_seen_ >= habit_.size() &&
+           std::all_of(habit_.begin(), habit_.end(), [](std::uint8_t run) { return run == 0; });
 }
 
 // The frame after blank tape (or after none): inside a block any blank run is said; after an end of
@@ -238,7 +290,17 @@ void Decoder::after_blanks(Frame f, FrameKind kind, DecodeResult& out) {
     else if (before_blanks_ == Before::end_of_block && printable && c != '%')
         block_start_blanks(out);
     blank_frames_ = 0;
-    before_blanks_ = printable ? Before::printable : c == '\n' ? Before::end_of_block : Before::nothing;
+    before_blanks_ = state_after(f);
+}
+
+// The run of blank frames that 15 of the last 16 ends of block were followed by, if there is one: such
+// a value stands in the first or the second place of the 16.
+std::optional<std::uint8_t> Decoder::habit() const {
+    if (habit_seen_ < habit_.size()) return std::nullopt;
+    for (std::uint8_t candidate : {habit_[0], habit_[1]})
+        if (std::count(habit_.begin(), habit_.end(), candidate) + 1 >= static_cast<std::ptrdiff_t>(habit_.size()))
+            return candidate;
+    return std::nullopt;
 }
 
 void Decoder::block_start_blanks(DecodeResult& out) {
@@ -254,12 +316,8 @@ void Decoder::block_start_blanks(DecodeResult& out) {
             suspect_ = {};
         }
     }
-    std::array<unsigned, 256> count{};
-    std::size_t usual = 0;
-    for (std::size_t k = 0; k < habit_seen_ && k < habit_.size(); ++k)
-        if (++count[habit_[k]] > count[usual]) usual = habit_[k];
-    if (habit_seen_ >= habit_.size() && count[usual] + 1 >= habit_.size() && run > usual && !suspect_.frames)
-        suspect_ = {blank_from_ + usual, run - usual, usual, 0};
+    if (auto usual = habit(); usual && run > *usual && !suspect_.frames)
+        suspect_ = {blank_from_ + *usual, run - *usual, *usual, 0};
     habit_[habit_seen_++ % habit_.size()] = static_cast<std::uint8_t>(run);
 }
 

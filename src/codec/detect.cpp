@@ -1,6 +1,9 @@
 // Gathering the evidence for a verdict on a tape: every reading tried at once over the same frames.
 #include "tape/detect.hpp"
 
+#include <algorithm>
+#include <cstring>
+
 namespace tape {
 namespace {
 
@@ -42,41 +45,69 @@ Detector::Detector(const CodeTable* eia_table, bool bytes_are_frames)
     }
 }
 
+// Counted from one tally of the frames' values for every reading; only what depends on the order of the
+// frames (runs of 0x80, КОИ-7 shifts, the program starts, the binary formats) looks at them in turn.
 void Detector::feed(std::span<const Frame> frames) {
     TapeEvidence& e = evidence_;
+    FrameTally t(frames);
     e.frames += frames.size();
-    for (auto& s : surveyors_) s.feed(frames);
+    for (auto& s : surveyors_) s.feed(frames, t);
     binary_.feed(frames);
-    ParityCounts p = count_parity(frames);
-    e.parity.frames += p.frames;
-    e.parity.even += p.even;
-    e.parity.odd += p.odd;
-    e.parity.mark += p.mark;
-    e.parity.space += p.space;
-    for (Frame f : frames) {
-        run_0x80_ = f == 0x80 ? run_0x80_ + 1 : 0;
-        e.longest_0x80_run = std::max(e.longest_0x80_run, run_0x80_);
-        if (f == blank_frame) continue;
-        ++e.punched;
-        e.significant += f != 0xFF && f != 0x7F;
-        e.five_track += f < 0x20;
-        e.iso_lf += f == 0x0A;
-        e.eia_eob += f == 0x80;
-        // ISO readings only: the 7 bits are the character whatever the parity convention.
-        if (!text_control(static_cast<char>(f & 0x7F)))
+    e.parity.frames += t.parity.frames;
+    e.parity.even += t.parity.even;
+    e.parity.odd += t.parity.odd;
+    e.parity.mark += t.parity.mark;
+    e.parity.space += t.parity.space;
+    std::uint64_t punched = frames.size() - t.count[blank_frame];
+    e.punched += punched;
+    e.significant += punched - t.count[0xFF] - t.count[0x7F];
+    for (int v = 1; v < 0x20; ++v) e.five_track += t.count[v];
+    e.iso_lf += t.count[0x0A];
+    e.eia_eob += t.count[0x80];
+    // ISO readings only: the 7 bits are the character whatever the parity convention.
+    for (int v = 1; v < 256; ++v)
+        if (t.count[v] && !text_control(static_cast<char>(v & 0x7F)))
             for (std::size_t i = 0; i < readings.size(); ++i)
-                if (readings[i].code == Code::iso && surveyors_[i].kind(f) == FrameKind::character) ++controls_[i];
-        note_koi7(f);
-    }
+                if (readings[i].code == Code::iso && surveyors_[i].kind(static_cast<Frame>(v)) == FrameKind::character)
+                    controls_[i] += t.count[v];
+    note_0x80_runs(frames, t);
+    note_koi7(frames, t);
     if (text_ok_ && !frames.empty()) text_ok_ = !text_checker_.check(frames);
 }
 
-// КОИ-7 shifts Russian letters with SO ... SI; read as ASCII, the letters between them look Latin.
-void Detector::note_koi7(Frame f) {
-    if (surveyors_[0].kind(f) != FrameKind::character) return;
-    char c = static_cast<char>(f & 0x7F);
-    if (c == 0x0E || c == 0x0F || c == '\n') shifted_ = c == 0x0E;
-    evidence_.koi7_letters += shifted_ && c >= 0x40 && c <= 0x7E;
+// Track 8 alone, in a row: found with memchr, the run carried from one piece to the next.
+void Detector::note_0x80_runs(std::span<const Frame> frames, const FrameTally& t) {
+    if (frames.empty()) return;
+    if (t.count[0x80] == 0) {
+        run_0x80_ = 0;
+        return;
+    }
+    for (std::size_t i = 0; i < frames.size();) {
+        if (frames[i] != 0x80) {
+            run_0x80_ = 0;
+            const void* next = std::memchr(frames.data() + i, 0x80, frames.size() - i);
+            if (!next) return;
+            i = static_cast<std::size_t>(static_cast<const Frame*>(next) - frames.data());
+        }
+        for (; i < frames.size() && frames[i] == 0x80; ++i) ++run_0x80_;
+        evidence_.longest_0x80_run = std::max(evidence_.longest_0x80_run, run_0x80_);
+    }
+}
+
+// КОИ-7 shifts Russian letters with SO ... SI; read as ASCII, the letters between them look Latin. A
+// piece with no SO, not begun shifted, holds none.
+void Detector::note_koi7(std::span<const Frame> frames, const FrameTally& t) {
+    bool any_shift_out = false;
+    for (int v = 1; v < 256; ++v)
+        any_shift_out |=
+            t.count[v] && (v & 0x7F) == 0x0E && surveyors_[0].kind(static_cast<Frame>(v)) == FrameKind::character;
+    if (!any_shift_out && !shifted_) return;
+    for (Frame f : frames) {
+        if (surveyors_[0].kind(f) != FrameKind::character) continue;
+        char c = static_cast<char>(f & 0x7F);
+        if (c == 0x0E || c == 0x0F || c == '\n') shifted_ = c == 0x0E;
+        evidence_.koi7_letters += shifted_ && c >= 0x40 && c <= 0x7E;
+    }
 }
 
 bool looks_like_koi7(const TapeEvidence& e) { return e.koi7_letters >= 3; }

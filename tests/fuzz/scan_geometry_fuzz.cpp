@@ -7,14 +7,14 @@
 // Whatever comes in, the stage ends: a strip read or refused, every frame with its confidence in 0..1.
 #include <cstddef>
 #include <cstdint>
-#include <opencv2/core.hpp>
 #include <span>
 #include <vector>
 
-#include "scan/opencv/picture_blobs.hpp"
+#include "scan/picture_blobs.hpp"
 #include "scan/scan_result.hpp"
 #include "scan/strip_reading.hpp"
 #include "tape/error.hpp"
+#include "tape/scan.hpp"
 
 namespace {
 
@@ -34,17 +34,17 @@ void check(const std::optional<tape::scan::Piece>& piece, const tape::ImageScan&
         if (d.first < 1 || d.last < d.first || d.last > r.frames.size()) __builtin_trap();
 }
 
-void read(const cv::Mat& grey, std::span<const tape::scan::Blob> blobs, std::span<const tape::scan::FeedChain> chains) {
-    tape::scan::GreyView view{grey.data, grey.cols, grey.rows, static_cast<std::ptrdiff_t>(grey.step[0])};
+void read(const tape::Picture& grey, std::span<const tape::scan::Blob> blobs,
+          std::span<const tape::scan::FeedChain> chains) {
+    tape::scan::GreyView view{grey.pixels.data(), grey.width, grey.height, grey.width};
     tape::ImageScan im;
-    im.width = grey.cols, im.height = grey.rows;
+    im.width = grey.width, im.height = grey.height;
     check(tape::scan::read_strip(view, blobs, chains, {}, 0, im), im);
 }
 
-cv::Mat picture_of(std::span<const std::uint8_t> bytes, int width, int height) {
-    cv::Mat m(height, width, CV_8UC1);
-    for (int i = 0; i < width * height; ++i)
-        m.data[i] = bytes.empty() ? 0 : bytes[static_cast<std::size_t>(i) % bytes.size()];
+tape::Picture picture_of(std::span<const std::uint8_t> bytes, int width, int height) {
+    tape::Picture m{width, height, 1, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height)};
+    for (std::size_t i = 0; i < m.pixels.size(); ++i) m.pixels[i] = bytes.empty() ? 0 : bytes[i % bytes.size()];
     return m;
 }
 
@@ -54,9 +54,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size < 3) return 0;
     std::span<const std::uint8_t> rest(data + 3, size - 3);
     if (data[0] % 2 == 0) {
-        cv::Mat grey = picture_of(rest, 16 + data[1], 16 + data[2]);
-        std::vector<cv::Mat> greys{grey};
+        if (!tape::scan_available()) return 0;  // the picture module finds the blobs: a build without OpenCV has none
+        std::vector<tape::Picture> greys{picture_of(rest, 16 + data[1], 16 + data[2])};
         tape::scan::BlobSet set = tape::scan::find_blobs(greys);
+        const tape::Picture& grey = greys.front();
         read(grey, set.blobs, set.chains);
         return 0;
     }

@@ -23,22 +23,6 @@ struct DecodeArgs {
     bool keep_going = false, force = false, unshift_on_space = false, strict = false;
 };
 
-// What the text showed on the way, for the notes after it.
-struct TextFacts {
-    std::uint64_t lines = 0, crlf_lines = 0;
-    bool after_cr = false;
-
-    void take(std::string_view text) {
-        for (char c : text) {
-            if (c == '\n') {
-                ++lines;
-                crlf_lines += after_cr;
-            }
-            after_cr = c == '\r';
-        }
-    }
-};
-
 // A bad frame as decode says it; blank tape inside a block as a warning (an error with --strict).
 // True for the latter.
 bool say_decoded(const std::string& name, const tape::Diagnostic& d, bool raw, bool strict) {
@@ -92,11 +76,11 @@ void refuse_binary(tape::Input& in, const std::string& name) {
              "image its loader would fill");
 }
 
-void say_after_text(tape::Input& in, const std::string& name, const TextFacts& facts, const CodeChoice& choice,
+void say_after_text(tape::Input& in, const std::string& name, const tape::LineEnds& facts, const CodeChoice& choice,
                     bool raw) {
     if (const tape::Decoder* d = in.decoder())
         for (const auto& w : d->ending()) say(name, where_text(w.where, raw) + ": warning: " + w.message);
-    if (facts.lines > 0 && facts.crlf_lines == facts.lines)
+    if (facts.lines > 0 && facts.crlf == facts.lines)
         say(name, "note: every line ends with CR LF on this tape; `tape encode --crlf` punches them so again");
     if (choice.charset == "ascii" && in.detection() && tape::looks_like_koi7(in.detection()->evidence) &&
         in.decode_options().code == tape::Code::iso)
@@ -110,7 +94,7 @@ void decode_text(const DecodeArgs& a, tape::Input& in, const std::string& name) 
     if (a.choice.code == "auto") refuse_binary(in, name);
     decide_code(in, name);
     std::unique_ptr<tape::OutputFile> out;
-    TextFacts facts;
+    tape::LineEnds facts;  // what the text showed on the way, for the notes after it
     try {
         tape::DecodeResult piece;
         bool blank_in_block = false;

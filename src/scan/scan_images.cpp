@@ -1,10 +1,9 @@
-// tape/scan.hpp with OpenCV: each picture decoded (imgcodecs), its blobs found (imgproc), its strip
-// read and the pieces made one read by the stages of scan_geometry.hpp.
+// tape/scan.hpp: each picture decoded to grey levels and its blobs found (the picture module), its
+// strip read and the pieces made one read by the stages of scan_geometry.hpp.
 #include <algorithm>
-#include <opencv2/imgcodecs.hpp>
-#include <opencv2/imgproc.hpp>
 
-#include "scan/opencv/picture_blobs.hpp"
+#include "scan/picture_blobs.hpp"
+#include "scan/picture_module_loader.hpp"
 #include "scan/scan_result.hpp"
 #include "scan/strip_reading.hpp"
 #include "tape/error.hpp"
@@ -16,35 +15,21 @@ namespace {
 
 // The picture as grey levels two ways: as the eye sees it (luminance), and as its darkest channel,
 // which tells coloured paper (orange, red, yellow) from a grey or white backing far better.
-std::vector<cv::Mat> grey_pictures(const std::string& path, int& width, int& height) {
-    std::vector<std::uint8_t> bytes = read_file(path);
-    cv::Mat colour;
-    try {
-        colour = cv::imdecode(bytes, cv::IMREAD_COLOR);
-    } catch (const cv::Exception& e) {
-        throw Error(Errc::io, "cannot decode the picture: " + e.msg);
-    }
-    bytes = {};
-    if (colour.empty()) throw Error(Errc::io, "not a picture OpenCV can read (PNG, JPEG, TIFF, ...)");
-    width = colour.cols, height = colour.rows;
-    std::vector<cv::Mat> out(2);
-    cv::cvtColor(colour, out[0], cv::COLOR_BGR2GRAY);
-    out[1].create(colour.rows, colour.cols, CV_8UC1);  // row by row: no copy of the colours on the side
-    for (int y = 0; y < colour.rows; ++y) {
-        const std::uint8_t* c = colour.ptr<std::uint8_t>(y);
-        std::uint8_t* m = out[1].ptr<std::uint8_t>(y);
-        for (int x = 0; x < colour.cols; ++x, c += 3) m[x] = std::min({c[0], c[1], c[2]});
-    }
+std::vector<Picture> grey_pictures(const std::string& path, int& width, int& height) {
+    std::vector<Picture> out(2);
+    picture_module::call(picture_module::api().greys, std::span<const std::uint8_t>(read_file(path)), out[0], out[1]);
+    width = out[0].width, height = out[0].height;
     return out;
 }
 
+scan::GreyView view_of(const Picture& g) { return scan::GreyView{g.pixels.data(), g.width, g.height, g.width}; }
+
 // The grey in which holes and paper differ most, at the blobs found: the holes are sampled in it.
-std::size_t sampling_grey(const std::vector<cv::Mat>& greys, const scan::BlobSet& set) {
+std::size_t sampling_grey(const std::vector<Picture>& greys, const scan::BlobSet& set) {
     std::size_t best = set.grey;
     double most = -1;
     for (std::size_t k = 0; k < greys.size(); ++k) {
-        const cv::Mat& g = greys[k];
-        scan::GreyView v{g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step[0])};
+        scan::GreyView v = view_of(greys[k]);
         std::vector<float> d;
         for (std::size_t i = 0; i < set.blobs.size(); i += std::max<std::size_t>(1, set.blobs.size() / 500)) {
             const auto& b = set.blobs[i];
@@ -66,10 +51,6 @@ void check(const ScanOptions& o) {
 
 }  // namespace
 
-bool scan_available() { return true; }
-
-std::string_view scan_unavailable_message() { return ""; }
-
 ScanResult scan_images(std::span<const std::string> paths, const ScanOptions& options) {
     check(options);
     if (paths.empty()) throw Error(Errc::usage, "no pictures to read");
@@ -78,17 +59,17 @@ ScanResult scan_images(std::span<const std::string> paths, const ScanOptions& op
     for (std::size_t m = 0; m < paths.size(); ++m) {
         ImageScan im;
         im.name = paths[m];
-        std::vector<cv::Mat> greys;
+        std::vector<Picture> greys;
         try {
             greys = grey_pictures(paths[m], im.width, im.height);
         } catch (const Error& e) {
             throw Error(e.code(), paths[m] + ": " + e.what(), e.hint());
         }
         scan::BlobSet set = scan::find_blobs(greys);
-        const cv::Mat& g = greys[sampling_grey(greys, set)];
-        scan::GreyView view{g.data, g.cols, g.rows, static_cast<std::ptrdiff_t>(g.step[0])};
+        const Picture& g = greys[sampling_grey(greys, set)];
+        scan::GreyView view = view_of(g);
         for (auto& other : greys)
-            if (&other != &g) other.release();
+            if (&other != &g) other.pixels = {};
         auto piece = scan::read_strip(view, set.blobs, set.chains, options, static_cast<std::uint32_t>(m), im);
         for (const auto& b : set.blobs) im.blobs.push_back({b.x, b.y});
         if (piece) pieces.push_back(std::move(*piece));

@@ -1,9 +1,8 @@
 // Round blobs of a picture at the threshold that shows its feed holes best (picture_blobs.cpp).
 #pragma once
 
-#include <opencv2/core.hpp>
-
 #include "scan/scan_geometry.hpp"
+#include "tape/picture.hpp"
 
 namespace tape::scan {
 
@@ -16,7 +15,8 @@ struct BlobSet {
 
 /// The blobs of the grey pictures (alternative conversions of one picture) at a global (Otsu) threshold,
 /// holes darker and lighter than the paper; where that shows no strip, at local thresholds of a few
-/// sizes. The set whose longest row of feed holes is longest wins.
-BlobSet find_blobs(std::span<const cv::Mat> greys);
+/// sizes. The set whose longest row of feed holes is longest wins. Thresholds and blobs come from the
+/// picture module.
+BlobSet find_blobs(std::span<const Picture> greys);
 
 }  // namespace tape::scan
