@@ -162,6 +162,7 @@ public:
 private:
     std::array<BinaryReader, 2> readers_;
     std::array<bool, 2> given_up_{};
+    std::uint64_t fed_ = 0;  // frames fed so far
     bool finished_ = false;
 };
 

@@ -21,6 +21,17 @@ namespace tape {
 /// It is no ISO character, so a marked text cannot be punched again by mistake.
 inline constexpr std::string_view bad_frame_marker = "\xEF\xBF\xBD";
 
+/// The line ends of decoded text, taken a piece at a time: its LFs, and how many of them follow a CR
+/// (a tape punched with CR LF, which `encode --crlf` punches again).
+struct LineEnds {
+    std::uint64_t lines = 0, crlf = 0;
+    bool after_cr = false;  ///< the last piece ended with a CR
+
+    void take(std::string_view text);
+    /// The same for a piece whose LFs were counted already.
+    void take(std::string_view text, std::uint64_t newlines);
+};
+
 struct DecodeOptions {
     Code code = Code::iso;
     Parity parity = Parity::even;          ///< ISO only; EIA parity is fixed (odd, track 5), 5-track has none
@@ -80,6 +91,8 @@ public:
     std::vector<Diagnostic> ending() const;
 
     std::uint64_t frames_seen() const { return next_index_; }
+    /// The line ends of the text decoded so far, however the caller cut or emptied it.
+    const LineEnds& line_ends() const { return line_ends_; }
     /// Bad frames in all, listed or not.
     std::uint64_t bad_frames() const { return parity_seen_ + other_seen_; }
     /// Bad frames beyond max_diagnostics, by kind.
@@ -97,7 +110,7 @@ private:
     void put_text(std::string_view text, std::uint64_t index, DecodeResult& out);
     void five_track_bad(Frame f, std::uint64_t index, const std::string& what, DecodeResult& out);
     void note_trailer(std::span<const Frame> frames);  // decode_ending.cpp
-    std::size_t note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out);
+    void note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out);
     void punched_stretch(std::span<const Frame> stretch, DecodeResult& out);
     std::size_t next_end_of_block(std::span<const Frame> stretch, std::size_t from) const;
     void after_blanks(Frame f, FrameKind kind, DecodeResult& out);
@@ -125,6 +138,7 @@ private:
         int kept = 0;
     } suspect_;
     std::uint64_t lines_ = 0;  // LFs decoded so far: a bad frame stands in line lines_ + 1
+    LineEnds line_ends_;
     bool cyrillic_ = false;
     bool stopped_ = false;
     std::uint64_t trailer_ = 0;                  // blank frames since the last punched one
@@ -133,15 +147,6 @@ private:
     std::optional<std::uint64_t> last_bad_;      // 0-based index of the last bad frame
     int register_ = 0;                           // 5-track: the register the last shift chose
     std::vector<std::uint64_t> held_cr_;         // 5-track: frames of CRs not yet known to end a line
-};
-
-/// The line ends of decoded text, taken a piece at a time: its LFs, and how many of them follow a CR
-/// (a tape punched with CR LF, which `encode --crlf` punches again).
-struct LineEnds {
-    std::uint64_t lines = 0, crlf = 0;
-    bool after_cr = false;  ///< the last piece ended with a CR
-
-    void take(std::string_view text);
 };
 
 /// The hot loop, for callers that bring their own buffer. Decodes frames into out (room for

@@ -151,15 +151,22 @@ BinaryDetector::BinaryDetector(bool keep_image)
     : readers_{BinaryReader(BinaryReader::Family::pdp8, keep_image),
                BinaryReader(BinaryReader::Family::pdp11, keep_image)} {}
 
+// Past judged_after punched frames, a family that explains less than four fifths of them never will.
+// It is judged every `judged_every` frames of the tape, counted from its start, so that a text tape
+// costs its parsers a few thousand frames, not a long read-ahead, and the verdict does not depend on
+// how the tape was cut.
 void BinaryDetector::feed(std::span<const Frame> frames) {
-    if (finished_) return;
-    // Past this many punched frames, a family that explains less than four fifths of them never will.
-    constexpr std::uint64_t judged_after = 4096;
-    for (std::size_t i = 0; i < readers_.size(); ++i) {
-        if (given_up_[i]) continue;
-        readers_[i].feed(frames);
-        const BinaryTape& t = readers_[i].tape();
-        given_up_[i] = t.punched >= judged_after && t.stray_frames * 5 > t.punched;
+    constexpr std::uint64_t judged_after = 4096, judged_every = 4096;
+    while (!frames.empty() && !finished_ && !(given_up_[0] && given_up_[1])) {
+        std::size_t n = std::min<std::uint64_t>(frames.size(), judged_every - fed_ % judged_every);
+        for (std::size_t i = 0; i < readers_.size(); ++i) {
+            if (given_up_[i]) continue;
+            readers_[i].feed(frames.first(n));
+            const BinaryTape& t = readers_[i].tape();
+            given_up_[i] = t.punched >= judged_after && t.stray_frames * 5 > t.punched;
+        }
+        fed_ += n;
+        frames = frames.subspan(n);
     }
 }
 

@@ -15,47 +15,80 @@ namespace {
 // they stop before the first block that is not, and iso_even_run() goes through that one a frame at a
 // time. Blank and DEL are caught by the byte minimum and maximum of the block (0x00, 0xFF), which
 // costs two instructions a vector instead of two compares and two ORs.
-using CleanRun = std::size_t (*)(const Frame* in, std::size_t n, char* out);
+// The LFs among the characters are counted on the way (a compare and a subtract a vector), for the
+// lines of the messages and the line ends decode reports: no second pass over the text.
+using CleanRun = std::size_t (*)(const Frame* in, std::size_t n, char* out, std::uint64_t* newlines);
 
-std::size_t iso_even_clean_sse2(const Frame* in, std::size_t n, char* out) {
+// The bytes of a vector of per-byte counts added up.
+std::uint64_t byte_sum(swar::bytes16 counts) {
+    swar::words2 w = reinterpret_cast<swar::words2>(counts);
+    w = (w & 0x00FF00FF00FF00FFULL) + ((w >> 8) & 0x00FF00FF00FF00FFULL);  // four 16-bit sums a lane
+    return ((w[0] + w[1]) * 0x0001000100010001ULL) >> 48;
+}
+
+std::size_t iso_even_clean_sse2(const Frame* in, std::size_t n, char* out, std::uint64_t* newlines) {
     constexpr std::size_t step = 64;
     std::size_t i = 0;
-    for (; i + step <= n; i += step) {
-        swar::bytes16 v[4], odd{}, low = ~swar::bytes16{}, high{};
-        for (int k = 0; k < 4; ++k) {
-            v[k] = swar::load16(in + i + 16 * k);
-            odd |= swar::odd_parity16(v[k]);
-            low = v[k] < low ? v[k] : low;
-            high = v[k] > high ? v[k] : high;
+    for (bool go = true; go && i + step <= n;) {
+        swar::bytes16 lines{};  // per byte: LFs in these steps, at most 4 a step: 63 steps fit a byte
+        for (int steps = 0; steps < 63 && i + step <= n; ++steps, i += step) {
+            swar::bytes16 v[4], odd{}, low = ~swar::bytes16{}, high{};
+            for (int k = 0; k < 4; ++k) {
+                v[k] = swar::load16(in + i + 16 * k);
+                odd |= swar::odd_parity16(v[k]);
+                low = v[k] < low ? v[k] : low;
+                high = v[k] > high ? v[k] : high;
+            }
+            if (swar::any16(odd | (low == 0) | (high == 0xFF))) {
+                go = false;
+                break;
+            }
+            for (int k = 0; k < 4; ++k) {
+                swar::bytes16 c = v[k] & 0x7F;
+                swar::store16(out + i + 16 * k, c);
+                lines -= reinterpret_cast<swar::bytes16>(c == '\n');
+            }
         }
-        if (swar::any16(odd | (low == 0) | (high == 0xFF))) break;
-        for (int k = 0; k < 4; ++k) swar::store16(out + i + 16 * k, v[k] & 0x7F);
+        *newlines += byte_sum(lines);
     }
     return i;
 }
 
 #ifdef TAPE_SWAR_AVX2
-__attribute__((target("avx2"))) std::size_t iso_even_clean_avx2(const Frame* in, std::size_t n, char* out) {
+__attribute__((target("avx2"))) std::size_t iso_even_clean_avx2(const Frame* in, std::size_t n, char* out,
+                                                                std::uint64_t* newlines) {
     constexpr std::size_t step = 128;
     const __m256i parity = _mm256_load_si256(reinterpret_cast<const __m256i*>(swar::nibble_parity<1>.table));
-    const __m256i seven = _mm256_set1_epi8(0x7F), nibble = _mm256_set1_epi8(0x0F);
+    const __m256i seven = _mm256_set1_epi8(0x7F), nibble = _mm256_set1_epi8(0x0F), lf = _mm256_set1_epi8('\n');
     const __m256i zero = _mm256_setzero_si256(), ones = _mm256_set1_epi8(-1);
     std::size_t i = 0;
-    for (; i + step <= n; i += step) {
-        __m256i m[4], odd = zero, low = ones, high = zero;
-        for (int k = 0; k < 4; ++k) {
-            __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(in + i + 32 * k));
-            m[k] = _mm256_and_si256(v, seven);  // also the low-nibble index: vpshufb wants bit 7 clear
-            __m256i hi = _mm256_and_si256(_mm256_srli_epi16(v, 4), nibble);
-            odd = _mm256_or_si256(odd,
-                                  _mm256_xor_si256(_mm256_shuffle_epi8(parity, m[k]), _mm256_shuffle_epi8(parity, hi)));
-            low = _mm256_min_epu8(low, v);
-            high = _mm256_max_epu8(high, v);
+    for (bool go = true; go && i + step <= n;) {
+        __m256i lines = zero;  // per byte: LFs in these steps, at most 4 a step: 63 steps fit a byte
+        for (int steps = 0; steps < 63 && i + step <= n; ++steps, i += step) {
+            __m256i m[4], odd = zero, low = ones, high = zero;
+            for (int k = 0; k < 4; ++k) {
+                __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(in + i + 32 * k));
+                m[k] = _mm256_and_si256(v, seven);  // also the low-nibble index: vpshufb wants bit 7 clear
+                __m256i hi = _mm256_and_si256(_mm256_srli_epi16(v, 4), nibble);
+                odd = _mm256_or_si256(
+                    odd, _mm256_xor_si256(_mm256_shuffle_epi8(parity, m[k]), _mm256_shuffle_epi8(parity, hi)));
+                low = _mm256_min_epu8(low, v);
+                high = _mm256_max_epu8(high, v);
+            }
+            __m256i bad =
+                _mm256_or_si256(odd, _mm256_or_si256(_mm256_cmpeq_epi8(low, zero), _mm256_cmpeq_epi8(high, ones)));
+            if (!_mm256_testz_si256(bad, bad)) {
+                go = false;
+                break;
+            }
+            for (int k = 0; k < 4; ++k) {
+                _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i + 32 * k), m[k]);
+                lines = _mm256_sub_epi8(lines, _mm256_cmpeq_epi8(m[k], lf));
+            }
         }
-        __m256i bad =
-            _mm256_or_si256(odd, _mm256_or_si256(_mm256_cmpeq_epi8(low, zero), _mm256_cmpeq_epi8(high, ones)));
-        if (!_mm256_testz_si256(bad, bad)) break;
-        for (int k = 0; k < 4; ++k) _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i + 32 * k), m[k]);
+        __m256i sums = _mm256_sad_epu8(lines, zero);  // four 64-bit sums
+        *newlines += static_cast<std::uint64_t>(_mm256_extract_epi64(sums, 0) + _mm256_extract_epi64(sums, 1) +
+                                                _mm256_extract_epi64(sums, 2) + _mm256_extract_epi64(sums, 3));
     }
     return i;
 }
@@ -68,12 +101,12 @@ CleanRun pick_iso_even_clean() {
     return iso_even_clean_sse2;
 }
 
-std::size_t iso_even_run(const Frame* in, std::size_t n, char* out, std::size_t* written) {
+std::size_t iso_even_run(const Frame* in, std::size_t n, char* out, std::size_t* written, std::uint64_t* newlines) {
     static const CleanRun clean_run = pick_iso_even_clean();
     constexpr std::size_t step = 64;  // frames taken one by one after a block that is not clean
     std::size_t i = 0, w = 0;
     while (i < n) {
-        std::size_t clean = clean_run(in + i, n - i, out + w);
+        std::size_t clean = clean_run(in + i, n - i, out + w, newlines);
         i += clean;
         w += clean;
         std::size_t end = i + step < n ? i + step : n;
@@ -84,20 +117,23 @@ std::size_t iso_even_run(const Frame* in, std::size_t n, char* out, std::size_t*
                 *written = w;
                 return i;
             }
-            out[w++] = static_cast<char>(f & 0x7F);
+            out[w] = static_cast<char>(f & 0x7F);
+            *newlines += out[w++] == '\n';
         }
     }
     *written = w;
     return n;
 }
 
-std::size_t table_run(const FrameCode& code, const Frame* in, std::size_t n, char* out, std::size_t* written) {
+std::size_t table_run(const FrameCode& code, const Frame* in, std::size_t n, char* out, std::size_t* written,
+                      std::uint64_t* newlines) {
     std::size_t w = 0, i = 0;
     for (; i < n; ++i) {
         FrameKind k = code.kind(in[i]);
-        if (k == FrameKind::character)
-            out[w++] = code.character(in[i]);
-        else if (k != FrameKind::blank && k != FrameKind::rubout)
+        if (k == FrameKind::character) {
+            out[w] = code.character(in[i]);
+            *newlines += out[w++] == '\n';
+        } else if (k != FrameKind::blank && k != FrameKind::rubout)
             break;
     }
     *written = w;
@@ -133,10 +169,21 @@ Diagnostic bad_frame_diagnostic(const FrameCode& code, Frame f, std::uint64_t in
     return Diagnostic{parity ? Errc::parity : Errc::not_in_code, where, what + ", holes " + holes_picture(f)};
 }
 
-std::size_t decode_run(const FrameCode& code, std::span<const Frame> frames, char* out, std::size_t* written) {
+namespace {
+
+// decode_run, counting the LFs stored.
+std::size_t decode_run_counting(const FrameCode& code, std::span<const Frame> frames, char* out, std::size_t* written,
+                                std::uint64_t* newlines) {
     if (code.code() == Code::iso && code.parity() == Parity::even)
-        return iso_even_run(frames.data(), frames.size(), out, written);
-    return table_run(code, frames.data(), frames.size(), out, written);
+        return iso_even_run(frames.data(), frames.size(), out, written, newlines);
+    return table_run(code, frames.data(), frames.size(), out, written, newlines);
+}
+
+}  // namespace
+
+std::size_t decode_run(const FrameCode& code, std::span<const Frame> frames, char* out, std::size_t* written) {
+    std::uint64_t newlines = 0;
+    return decode_run_counting(code, frames, out, written, &newlines);
 }
 
 Decoder::Decoder(const DecodeOptions& options)
@@ -211,11 +258,10 @@ void Decoder::finish_text(DecodeResult& out, std::size_t from, std::size_t posit
     }
 }
 
-// Blank runs are found with memchr, so a clean tape pays one pass of it; the frame before a run and the
-// one after it decide whether the run stands inside a block. Returns where the chunk's diagnostics
-// begin in out.diagnostics.
-std::size_t Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out) {
-    std::size_t from = out.diagnostics.size(), i = 0, n = frames.size();
+// Blank runs are found with memchr; the frame before a run and the one after it decide whether the run
+// stands inside a block.
+void Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t base, DecodeResult& out) {
+    std::size_t i = 0, n = frames.size();
     while (i < n) {
         const void* z = std::memchr(frames.data() + i, 0, n - i);
         std::size_t at = z ? static_cast<std::size_t>(static_cast<const Frame*>(z) - frames.data()) : n;
@@ -227,7 +273,6 @@ std::size_t Decoder::note_blanks(std::span<const Frame> frames, std::uint64_t ba
         if (before_blanks_ != Before::nothing) blank_frames_ += end - at;
         i = end;
     }
-    return from;
 }
 
 // Punched frames between blank runs. Of these only a few decide anything: the first (after blank tape),
@@ -337,8 +382,13 @@ void Decoder::blank_run(std::uint64_t from, std::uint64_t n, const std::string& 
 bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     if (stopped_) return false;
     note_trailer(frames);
-    if (code_.five_track_table()) return feed_five_track(frames, out);  // once a chunk: ISO and EIA pay nothing
-    std::size_t diagnostics_from = note_blanks(frames, next_index_, out);
+    if (code_.five_track_table()) {  // once a chunk: ISO and EIA pay nothing
+        std::size_t from = out.text.size();
+        bool going = feed_five_track(frames, out);
+        line_ends_.take(std::string_view(out.text).substr(from));
+        return going;
+    }
+    std::size_t diagnostics_from = out.diagnostics.size();
     std::size_t from = out.text.size(), positions_from = out.frame_of.size();
     std::size_t w = from;
     bool marked = false;  // a bad_sentinel stored: known here, so no search of the text for one
@@ -346,6 +396,7 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     std::uint64_t base = next_index_;
     // The LFs decoded are counted once a chunk (and up to a bad frame, for its line), not frame by frame.
     std::size_t counted = from;
+    const std::uint64_t lines_before = lines_;
     auto line_at = [&](std::size_t end) {
         lines_ += swar::count_newlines(out.text.data() + counted, end - counted);
         counted = end;
@@ -374,10 +425,12 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
         std::size_t i = 0;
         while (i < frames.size()) {
             std::size_t got = 0;
-            std::size_t stop = i + decode_run(code_, frames.subspan(i), out.text.data() + w, &got);
+            std::size_t stop =
+                i + decode_run_counting(code_, frames.subspan(i), out.text.data() + w, &got, &lines_);
             w += got;
+            counted = w;  // the run counted its LFs
             if (stop == frames.size()) break;
-            note_bad(frames[stop], base + stop, line_at(w), out);
+            note_bad(frames[stop], base + stop, lines_ + 1, out);
             if (!options_.keep_going) {
                 stopped_ = true;
                 break;
@@ -389,6 +442,12 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
     }
     line_at(w);
     out.text.resize(w);
+    line_ends_.take(std::string_view(out.text).substr(from), lines_ - lines_before);
+    // Every frame a character: no blank tape in the chunk to look for.
+    if (!marked && w - from == frames.size())
+        punched_stretch(frames, out);
+    else
+        note_blanks(frames, base, out);
     next_index_ += frames.size();
     settle_chunk(out, ChunkStart{from, positions_from, diagnostics_from}, marked);
     return !stopped_;

@@ -7,9 +7,11 @@
 
 namespace tape {
 
-void LineEnds::take(std::string_view text) {
+void LineEnds::take(std::string_view text) { take(text, swar::count_newlines(text.data(), text.size())); }
+
+void LineEnds::take(std::string_view text, std::uint64_t newlines) {
     if (text.empty()) return;
-    lines += swar::count_newlines(text.data(), text.size());
+    lines += newlines;
     if (after_cr && text.front() == '\n') ++crlf;
     for (const char* cr = static_cast<const char*>(std::memchr(text.data(), '\r', text.size())); cr;) {
         std::size_t next = static_cast<std::size_t>(cr - text.data()) + 1;

@@ -76,11 +76,11 @@ void refuse_binary(tape::Input& in, const std::string& name) {
              "image its loader would fill");
 }
 
-void say_after_text(tape::Input& in, const std::string& name, const tape::LineEnds& facts, const CodeChoice& choice,
-                    bool raw) {
-    if (const tape::Decoder* d = in.decoder())
+void say_after_text(tape::Input& in, const std::string& name, const CodeChoice& choice, bool raw) {
+    const tape::Decoder* d = in.decoder();
+    if (d)
         for (const auto& w : d->ending()) say(name, where_text(w.where, raw) + ": warning: " + w.message);
-    if (facts.lines > 0 && facts.crlf == facts.lines)
+    if (d && d->line_ends().lines > 0 && d->line_ends().crlf == d->line_ends().lines)
         say(name, "note: every line ends with CR LF on this tape; `tape encode --crlf` punches them so again");
     if (choice.charset == "ascii" && in.detection() && tape::looks_like_koi7(in.detection()->evidence) &&
         in.decode_options().code == tape::Code::iso)
@@ -94,7 +94,6 @@ void decode_text(const DecodeArgs& a, tape::Input& in, const std::string& name) 
     if (a.choice.code == "auto") refuse_binary(in, name);
     decide_code(in, name);
     std::unique_ptr<tape::OutputFile> out;
-    tape::LineEnds facts;  // what the text showed on the way, for the notes after it
     try {
         tape::DecodeResult piece;
         bool blank_in_block = false;
@@ -107,13 +106,12 @@ void decode_text(const DecodeArgs& a, tape::Input& in, const std::string& name) 
             }
             if (!out) out = open_output_or_fail(a.output, a.force);
             write_or_fail(*out, piece.text, a.output);
-            facts.take(piece.text);
             piece.text.clear();
         }
         if (!out) out = open_output_or_fail(a.output, a.force);  // an empty tape: an empty program
         say_unlisted_frames(name, in.decoder() ? in.decoder()->unlisted() : std::map<tape::Errc, std::uint64_t>{});
         commit_or_fail(*out, a.output);
-        say_after_text(in, name, facts, a.choice, raw);
+        say_after_text(in, name, a.choice, raw);
         if (std::uint64_t bad = in.decoder() ? in.decoder()->bad_frames() : 0) {
             say(name, std::to_string(bad) + " bad frame(s), each marked \xEF\xBF\xBD in the text");
             say_other_reading(in, name);
