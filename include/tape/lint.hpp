@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "tape/format_spec.hpp"
@@ -69,7 +70,8 @@ private:
     std::map<std::string_view, std::uint64_t> unlisted_, by_rule_;
     std::uint64_t arrived_ = 0, programs_ = 0;
     Dialect dialect_ = Dialect::gost;
-    std::optional<Dialect> close_{};  // the runner-up: only the rules both have are checked
+    std::optional<Dialect> close_{};                       // the runner-up: only the rules both have are checked
+    std::unordered_map<std::string, bool> unknown_codes_;  // G and M words as written: outside the tables?
     std::uint64_t counts_[3] = {};
     bool any_program_ = false, in_program_ = false, program_points_ = false;
     bool quiet_ = false;  // checking a damaged block: its findings are not made

@@ -425,8 +425,7 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
         std::size_t i = 0;
         while (i < frames.size()) {
             std::size_t got = 0;
-            std::size_t stop =
-                i + decode_run_counting(code_, frames.subspan(i), out.text.data() + w, &got, &lines_);
+            std::size_t stop = i + decode_run_counting(code_, frames.subspan(i), out.text.data() + w, &got, &lines_);
             w += got;
             counted = w;  // the run counted its LFs
             if (stop == frames.size()) break;

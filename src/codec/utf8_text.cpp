@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "swar.hpp"
 #include "utf8.hpp"
 
 namespace tape {
@@ -28,6 +29,25 @@ std::string code_point_name(char32_t cp) {
     return buf;
 }
 
+// The first byte at or after from that needs a closer look: not ASCII, or a control character other
+// than those a program's text may hold. Sixteen bytes at a time: most texts have none.
+std::size_t next_unusual(std::string_view s, std::size_t from) {
+    std::size_t i = from;
+    for (; i + 16 <= s.size(); i += 16) {
+        swar::bytes16 v = swar::load16(s.data() + i);
+        swar::bytes16 control = reinterpret_cast<swar::bytes16>(v < 0x20) & reinterpret_cast<swar::bytes16>(v != '\t') &
+                                reinterpret_cast<swar::bytes16>(v != '\n') &
+                                reinterpret_cast<swar::bytes16>(v != '\r') &
+                                reinterpret_cast<swar::bytes16>(v != 0x0E) & reinterpret_cast<swar::bytes16>(v != 0x0F);
+        if (swar::any16(control | reinterpret_cast<swar::bytes16>(v >= 0x7F))) break;
+    }
+    for (; i < s.size(); ++i) {
+        auto c = static_cast<unsigned char>(s[i]);
+        if (c >= 0x7F || (c < 0x20 && !allowed_control(c))) return i;
+    }
+    return i;
+}
+
 }  // namespace
 
 std::size_t dos_end_of_file_at(std::span<const std::uint8_t> bytes) {
@@ -48,26 +68,31 @@ std::optional<TextFault> find_text_fault(std::span<const std::uint8_t> bytes) {
     std::string_view s(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     std::uint64_t line = 1, column = 1;
     for (std::size_t i = 0; i < s.size();) {
+        // Plain ASCII up to the next byte worth a look: its lines and columns counted at once.
+        std::size_t next = next_unusual(s, i);
+        std::string_view plain = s.substr(i, next - i);
+        if (std::size_t lines = swar::count_newlines(plain.data(), plain.size())) {
+            line += lines;
+            column = 1 + (plain.size() - plain.rfind('\n') - 1);
+        } else {
+            column += plain.size();
+        }
+        i = next;
+        if (i == s.size()) break;
         auto c = static_cast<unsigned char>(s[i]);
         std::string what;
         std::size_t n = 1;
-        if (c < 0x80) {
-            if (c == 0)
-                what = "a NUL byte";
-            else if ((c < 0x20 && !allowed_control(c)) || c == 0x7F)
-                what = "the control character " + hex_byte(c);
+        if (c == 0) {
+            what = "a NUL byte";
+        } else if (c < 0x80) {
+            what = "the control character " + hex_byte(c);
         } else {
             n = utf8::length(s, i);
             if (n == 1 || !utf8::decode(s.substr(i, n)))
                 what = "byte 0x" + hex_byte(c).substr(2) + ", which is not UTF-8";
         }
         if (!what.empty()) return TextFault{Position{.line = line, .column = column}, i, what};
-        if (c == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
+        ++column;
         i += n;
     }
     return std::nullopt;
@@ -126,7 +151,7 @@ std::optional<TextFault> TextChecker::check_whole(std::span<const std::uint8_t> 
     std::string_view tail = last_nl == std::string_view::npos ? s : s.substr(last_nl + 1);
     auto chars = static_cast<std::uint64_t>(
         std::count_if(tail.begin(), tail.end(), [](char c) { return !utf8::is_continuation(c); }));
-    lines_before_ += static_cast<std::uint64_t>(std::count(s.begin(), s.end(), '\n'));
+    lines_before_ += swar::count_newlines(s.data(), s.size());
     columns_before_ = last_nl == std::string_view::npos ? columns_before_ + chars : chars;
     bytes_before_ += bytes.size();
     return std::nullopt;

@@ -72,8 +72,8 @@ void add(Add out, std::string_view rule, const Location& where, std::uint64_t bl
 
 bool has_g(const Block& b, std::initializer_list<long long> codes) {
     for (const auto& w : b.words)
-        if (w.address == 'G' && w.integer() && std::find(codes.begin(), codes.end(), *w.integer()) != codes.end())
-            return true;
+        if (w.address == 'G')
+            if (auto g = w.integer(); g && std::find(codes.begin(), codes.end(), *g) != codes.end()) return true;
     return false;
 }
 
@@ -91,25 +91,34 @@ void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points) {
 }
 
 // A G or M code outside the dialect's table (tape/code_tables.hpp); a macro value is not a code yet,
-// and the letters of a macro call (G65, G66) are its arguments (M0.070 is #13).
-void code_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close) {
+// and the letters of a macro call (G65, G66) are its arguments (M0.070 is #13). A program uses few codes,
+// again and again: each word as written is looked up once (unknown: whether it is outside the tables).
+void code_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close,
+                 std::unordered_map<std::string, bool>& unknown) {
     if (has_g(b, {65, 66})) return;
     for (const auto& w : b.words) {
         if ((w.address != 'G' && w.address != 'M') || !w.known || w.macro || w.sign) continue;
-        std::string value = code_value(std::string_view(w.text).substr(1));
-        if (value.empty() || code_known(dialect, w.address, value) || (close && code_known(*close, w.address, value)))
-            continue;
-        add(out, "unknown-code", w.where, b.ordinal, w.text + " " + unknown_code_reason(dialect, w.address));
+        auto [at, first] = unknown.try_emplace(w.text, false);
+        if (first) {
+            std::string value = code_value(std::string_view(w.text).substr(1));
+            at->second = !value.empty() && !code_known(dialect, w.address, value) &&
+                         !(close && code_known(*close, w.address, value));
+        }
+        if (at->second)
+            add(out, "unknown-code", w.where, b.ordinal, w.text + " " + unknown_code_reason(dialect, w.address));
     }
 }
+
+std::uint32_t index_of(const Block& b, const Word& w) { return static_cast<std::uint32_t>(&w - b.words.data() + 1); }
 
 // With two dialects close, a word is held to what both readings ask: the looser of the two.
 void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close) {
     const DialectRules& rules = dialect_rules(dialect);
     bool gost_dimensions = dialect == Dialect::gost && !close;
     bool lathe_cycles = dialect == Dialect::fanuc || close == Dialect::fanuc;
-    std::array<const Word*, 128> seen{};
-    std::array<const Word*, 128> group{};
+    // By address and by group: which word came first, as its index in the block plus one (0: none yet);
+    // indices, not pointers, as the arrays are set to zero for every block.
+    std::array<std::uint32_t, 128> seen{}, group{};
     int max_rank = -1;
     const Word* max_word = nullptr;
     const Word* previous = nullptr;
@@ -125,21 +134,23 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
         if (dimension && dimensions) {
             if (seen[a])
                 add(out, "repeated-dimension", w.where, b.ordinal,
-                    w.text + " repeats " + seen[a]->text +
+                    w.text + " repeats " + b.words[seen[a] - 1].text +
                         ": a dimension or interpolation word may stand once in a block (§2.4)");
             else
-                seen[a] = &w;
+                seen[a] = index_of(b, w);
         }
-        if (w.address == 'G' && w.integer())
-            if (const NcFunction* f = find_nc_function('G', *w.integer()); f && f->group) {
+        auto code = w.address == 'G' ? w.integer() : std::nullopt;
+        if (code)
+            if (const NcFunction* f = find_nc_function('G', *code); f && f->group) {
                 auto g = static_cast<unsigned char>(f->group);
                 // On a Fanuc lathe G90, G92 and G94 are turning cycles, not of the groups of table 4.
-                bool lathe_cycle = lathe_cycles && (*w.integer() == 90 || *w.integer() == 92 || *w.integer() == 94);
+                bool lathe_cycle = lathe_cycles && (*code == 90 || *code == 92 || *code == 94);
                 if (!lathe_cycle && group[g])
                     add(out, "g-group", w.where, b.ordinal,
-                        w.text + " and " + group[g]->text + " are both of group " + f->group + " (§2.5, table 4)");
+                        w.text + " and " + b.words[group[g] - 1].text + " are both of group " + f->group +
+                            " (§2.5, table 4)");
                 else if (!lathe_cycle)
-                    group[g] = &w;
+                    group[g] = index_of(b, w);
             }
         if (w.sign && unsigned_addresses.find(w.address) != std::string_view::npos)
             add(out, "sign-not-allowed", w.where, b.ordinal,
@@ -177,6 +188,7 @@ LintVisitor::~LintVisitor() = default;
 void LintVisitor::dialect(const DialectChoice& choice) {
     dialect_ = choice.dialect;
     close_ = choice.close;
+    unknown_codes_.clear();
 }
 
 void LintVisitor::program_start(const Program& header) {
@@ -211,7 +223,7 @@ void LintVisitor::block(const Block& b) {
     }
     if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, "99");
     word_checks(sink_, b, dialect_, close_);
-    code_checks(sink_, b, dialect_, close_);
+    code_checks(sink_, b, dialect_, close_, unknown_codes_);
     motion_checks(b);
     flow_checks(b);
     if (options_.spec) held_.push_back(b);

@@ -3,6 +3,7 @@
 // reported once.
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <utility>
 
 #include "codec/utf8.hpp"
@@ -217,6 +218,7 @@ Word& Loader::flagged_word(std::size_t i, std::string_view text) {
 
 // The first ')' outside any comment from i to e, or npos.
 std::size_t Loader::stray_close(std::size_t i, std::size_t e) const {
+    if (i >= e || !std::memchr(text_.data() + i, ')', e - i)) return std::string_view::npos;  // most blocks
     bool in_comment = false;
     for (; i < e; ++i) {
         if (text_[i] == '(') in_comment = true;
