@@ -54,6 +54,12 @@ dpkg-deb -x "$dev_deb" "$work/root"
 [ "$("$work/root/usr/bin/tape" --version)" = "tape $version" ] || fail "the packaged tape does not run"
 "$work/root/usr/bin/tape" decode "$here/../../tapes/16k20f3s5-turning.iso.ptp" >/dev/null ||
   fail "the packaged tape does not decode a bundled tape"
+if [ "${TAPE_HAVE_OPENCV:-OFF}" = ON ]; then  # the picture module, found beside the program
+  grep -qx "/usr/$TAPE_PICTURE_MODULE_DIR/tape-pictures.so" "$work/tape.list" ||
+    fail "tape: no /usr/$TAPE_PICTURE_MODULE_DIR/tape-pictures.so"
+  "$work/root/usr/bin/tape" render "$here/../../tapes/16k20f3s5-turning.iso.ptp" -o "$work/drawn.png" ||
+    fail "the packaged tape does not draw a bundled tape through its picture module"
+fi
 pc=$(find "$work/root/usr" -name tape_core.pc)
 grep -qx "prefix=/usr" "$pc" || fail "tape_core.pc in libtape-core-dev does not say prefix=/usr"
 echo "package.deb: tape and libtape-core-dev $version: files under /usr where Debian keeps them; Depends: $depends"

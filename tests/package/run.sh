@@ -40,6 +40,13 @@ for program in tape tape-damage tape-adapter-sim; do
 done
 [ "$(tape --version)" = "tape $version" ] || fail "tape --version says '$(tape --version)'"
 step "tape decode of a bundled tape" tape decode "$here/../../tapes/16k20f3s5-turning.iso.ptp"
+# The picture module beside the programs, where the installed tape finds it and draws a tape with it.
+if [ "${TAPE_HAVE_OPENCV:-OFF}" = ON ]; then
+  [ -f "$prefix/$TAPE_PICTURE_MODULE_DIR/tape-pictures.so" ] || fail "no $TAPE_PICTURE_MODULE_DIR/tape-pictures.so"
+  step "tape render of a bundled tape to PNG" tape render "$here/../../tapes/16k20f3s5-turning.iso.ptp" \
+    -o "$work/drawn.png"
+  rm -f "$work/drawn.png"
+fi
 for page in man1/tape.1 man1/tape-damage.1 man5/tape-image.5 man7/tape-devices.7 man7/tape-usb.7; do
   [ -f "$prefix/$TAPE_MANDIR/$page.gz" ] || fail "no $TAPE_MANDIR/$page.gz"
 done
