@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what the tests need (install-deps.sh all), checks the formatting (.clang-format), builds, then
 # runs every test: units, CLI end-to-end, pseudo-terminal device tests, the USB adapter backends against
-# umockdev, the fuzz corpus replay and the installed-package checks (build/); the USB adapter core
+# umockdev, the fuzz corpus replay and the installed-package checks (build/); the guard on speed
+# (bench/speed_guard.sh: start-up, decode, encode and lint against their targets); the USB adapter core
 # cross-compiled for a Cortex-M0+; every one of those tests again under AddressSanitizer and
 # UndefinedBehaviorSanitizer (build-asan/); then a bounded fuzz run of each target (TAPE_FUZZ_SECONDS,
 # default 30 s each). It stops at the first stage that fails, naming it; exit status 1 then.
@@ -46,6 +47,7 @@ stage dependencies bash scripts/install-deps.sh all
 stage format bash scripts/check-format.sh
 stage build bash scripts/build.sh
 stage tests ctest --test-dir build --output-on-failure -j2
+stage speed bash bench/speed_guard.sh build/bin/tape
 stage firmware firmware
 stage sanitize-build sanitize_build
 stage sanitize-tests sanitize_tests
