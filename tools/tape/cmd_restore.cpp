@@ -1,5 +1,7 @@
 // tape restore: one tape from several reads of a damaged one, with a report of what was recovered,
 // guessed or lost (tape/restore.hpp), and the frames left in doubt kept beside the image.
+#include <malloc.h>
+
 #include "cli/files.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
@@ -52,7 +54,16 @@ void say_about_reads(const RestoreReportInput& in, const tape::RestoreResult& r)
                     "another --parity)");
 }
 
+// Restoring aligns and votes in vectors of many megabytes, made and freed stage after stage: glibc gives
+// each back to the system and takes it again, zeroed, a fifth of the run. Freed memory is kept instead.
+void keep_freed_memory() {
+    constexpr int keep = 256 << 20;
+    mallopt(M_MMAP_THRESHOLD, keep);
+    mallopt(M_TRIM_THRESHOLD, keep);
+}
+
 void run(const RestoreArgs& a) {
+    keep_freed_memory();
     check_outputs({{"-o", a.output}, {"--report", a.report}, {"--html", a.html}});
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
