@@ -3,6 +3,9 @@
 //   DecodeVsCat, EncodeVsCat   128 MiB tape / text to /dev/null: median times and tape/cat ratio
 //   PeakRss/<command>/<MiB>    peak resident memory of one run (getrusage of the child)
 //   InfoSampleVsCat            1000 runs of `tape info` on the bundled 16К20Ф3С5 tape, per run
+//   VersionCpu                 `tape --version`, any command's fixed cost: least CPU time and peak memory
+//   Lint200kBlocks             `tape lint` of a clean 200 000-block program: least CPU time
+//   (decode and encode also give the least CPU time of each against cat's: cpu_ratio, the guard's figure)
 // Run: build/bin/pipeline_bench (bench/run.sh prints the figures as a table); TAPE_BENCH_TAPE=PATH
 // runs another tape binary instead of the one built beside it. The files go to a
 // temporary folder under TMPDIR (about 2.3 GiB) and are removed at the end.
@@ -126,6 +129,9 @@ public:
         fs::remove_all(dir_, ec);
     }
 
+    // A file of that name in the folder.
+    std::string path(const std::string& name) const { return dir_ + "/" + name; }
+
     // "<dir>/program-<MiB>.txt" or ".ptp".
     std::string file(std::uint64_t mib, bool tape) {
         std::string base = dir_ + "/program-" + std::to_string(mib);
@@ -160,8 +166,9 @@ const std::string& tape_binary() {
 
 struct Outcome {
     double seconds = 0;
-    long max_rss_kib = 0;  // ru_maxrss of the child
-    int exit_status = -1;  // 128 + signal when killed
+    double cpu_seconds = 0;  // user + system of the child
+    long max_rss_kib = 0;    // ru_maxrss of the child
+    int exit_status = -1;    // 128 + signal when killed
 };
 
 // Runs argv (looked up in PATH) with stdin, stdout and stderr on /dev/null, under an address-space limit
@@ -193,6 +200,8 @@ Outcome run(const std::vector<std::string>& args, rlim_t address_space = 0) {
     Outcome o;
     o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     o.max_rss_kib = usage.ru_maxrss;
+    auto seconds_of = [](const timeval& t) { return static_cast<double>(t.tv_sec) + t.tv_usec / 1e6; };
+    o.cpu_seconds = seconds_of(usage.ru_utime) + seconds_of(usage.ru_stime);
     o.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     return o;
 }
@@ -209,9 +218,12 @@ void versus_cat(benchmark::State& state, const char* command, bool tape_input) {
     std::string path = Workdir::get().file(128, tape_input);
     run({"cat", path});  // the file is in the page cache for both from here on
     std::vector<double> tape_s, cat_s;
+    double tape_cpu = 1e9, cat_cpu = 1e9;  // the least of the runs: what a loaded machine adds counts least
     for (auto _ : state) {
         Outcome c = run({"cat", path});
         Outcome t = run({tape_binary(), command, path});
+        tape_cpu = std::min(tape_cpu, t.cpu_seconds);
+        cat_cpu = std::min(cat_cpu, c.cpu_seconds);
         if (t.exit_status != 0 || c.exit_status != 0) {
             state.SkipWithError(
                 ("tape " + std::string(command) + " failed, exit " + std::to_string(t.exit_status)).c_str());
@@ -225,6 +237,9 @@ void versus_cat(benchmark::State& state, const char* command, bool tape_input) {
     state.counters["tape_ms"] = t * 1e3;
     state.counters["cat_ms"] = c * 1e3;
     state.counters["ratio"] = c > 0 ? t / c : 0;
+    state.counters["cpu_ms"] = tape_cpu * 1e3;
+    state.counters["cat_cpu_ms"] = cat_cpu * 1e3;
+    state.counters["cpu_ratio"] = cat_cpu > 0 ? tape_cpu / cat_cpu : 0;
     state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * 128 * MiB));
 }
 
@@ -273,8 +288,65 @@ void BM_InfoSampleVsCat(benchmark::State& state) {
     state.counters["ratio"] = cat_s > 0 ? tape_s / cat_s : 0;
 }
 
+// Any command's fixed cost: the least CPU time and the largest peak of `tape --version` runs.
+void BM_VersionCpu(benchmark::State& state) {
+    double cpu = 1e9;
+    long rss = 0;
+    for (auto _ : state) {
+        Outcome o = run({tape_binary(), "--version"});
+        if (o.exit_status != 0) state.SkipWithError("tape --version failed");
+        state.SetIterationTime(o.seconds);
+        cpu = std::min(cpu, o.cpu_seconds);
+        rss = std::max(rss, o.max_rss_kib);
+    }
+    state.counters["cpu_ms"] = cpu * 1e3;
+    state.counters["rss_MiB"] = static_cast<double>(rss) / 1024;
+}
+
+// A clean mill program of `blocks` blocks, numbered in order (lint finds nothing to say).
+std::string make_lint_program(std::size_t blocks) {
+    std::string path = Workdir::get().path("lint-" + std::to_string(blocks) + ".nc");
+    if (fs::exists(path)) return path;
+    std::string text = "%\nO1000\nN1 G90 G54 G00 X0 Y0 Z50.\n";
+    std::uint64_t state = 3;
+    auto next = [&](unsigned below) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<unsigned>((state >> 33) % below);
+    };
+    char block[96];
+    for (std::size_t n = 2; n <= blocks; ++n) {
+        int len = std::snprintf(block, sizeof block, "N%zu G01 X%u.%03u Y%u.%03u F%u\n", n, next(500), next(1000),
+                                next(300), next(1000), 100 + next(900));
+        text.append(block, static_cast<std::size_t>(len));
+    }
+    text += "M30\n%\n";
+    int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0) throw std::runtime_error("cannot create " + path);
+    write_all(fd, text.data(), text.size(), path);
+    ::close(fd);
+    return path;
+}
+
+// `tape lint` of 200 000 blocks (6.7 MB): the least CPU time (target 0.1 s), and cat's of the same file.
+void BM_Lint200kBlocks(benchmark::State& state) {
+    std::string path = make_lint_program(200000);
+    double cpu = 1e9, cat_cpu = 1e9;
+    for (auto _ : state) {
+        Outcome c = run({"cat", path});
+        Outcome t = run({tape_binary(), "lint", path});
+        if (t.exit_status != 0) state.SkipWithError("tape lint found something in a clean program");
+        state.SetIterationTime(t.seconds);
+        cpu = std::min(cpu, t.cpu_seconds);
+        cat_cpu = std::min(cat_cpu, c.cpu_seconds);
+    }
+    state.counters["cpu_ms"] = cpu * 1e3;
+    state.counters["cat_cpu_ms"] = cat_cpu * 1e3;
+}
+
 }  // namespace
 
+BENCHMARK(BM_VersionCpu)->Iterations(20)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Lint200kBlocks)->Iterations(7)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DecodeVsCat)->Iterations(15)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EncodeVsCat)->Iterations(15)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PeakRss)
