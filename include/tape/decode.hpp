@@ -105,6 +105,8 @@ private:
         std::size_t text = 0, positions = 0, diagnostics = 0;
     };
     void settle_chunk(DecodeResult& out, ChunkStart at, bool marked);
+    std::size_t decode_with_positions(std::span<const Frame> frames, DecodeResult& out, bool& marked);
+    std::size_t decode_runs(std::span<const Frame> frames, DecodeResult& out, bool& marked);
     bool feed_five_track(std::span<const Frame> frames, DecodeResult& out);  // decode_five_track.cpp
     void put_held_cr(DecodeResult& out);
     void put_text(std::string_view text, std::uint64_t index, DecodeResult& out);

@@ -388,68 +388,67 @@ bool Decoder::feed(std::span<const Frame> frames, DecodeResult& out) {
         line_ends_.take(std::string_view(out.text).substr(from));
         return going;
     }
-    std::size_t diagnostics_from = out.diagnostics.size();
-    std::size_t from = out.text.size(), positions_from = out.frame_of.size();
-    std::size_t w = from;
-    bool marked = false;  // a bad_sentinel stored: known here, so no search of the text for one
-    out.text.resize(from + frames.size());
-    std::uint64_t base = next_index_;
-    // The LFs decoded are counted once a chunk (and up to a bad frame, for its line), not frame by frame.
-    std::size_t counted = from;
+    ChunkStart at{out.text.size(), out.frame_of.size(), out.diagnostics.size()};
     const std::uint64_t lines_before = lines_;
-    auto line_at = [&](std::size_t end) {
-        lines_ += swar::count_newlines(out.text.data() + counted, end - counted);
-        counted = end;
-        return lines_ + 1;
-    };
-    if (options_.positions) {
-        out.frame_of.resize(positions_from + frames.size());
-        std::size_t p = positions_from;
-        for (std::size_t i = 0; i < frames.size(); ++i) {
-            Frame f = frames[i];
-            FrameKind k = code_.kind(f);
-            if (k == FrameKind::blank || k == FrameKind::rubout) continue;
-            if (k != FrameKind::character) {
-                note_bad(f, base + i, line_at(w), out);
-                if (!options_.keep_going) {
-                    stopped_ = true;
-                    break;
-                }
-            }
-            marked |= k != FrameKind::character;
-            out.text[w++] = k == FrameKind::character ? code_.character(f) : bad_sentinel;
-            out.frame_of[p++] = base + i;
-        }
-        out.frame_of.resize(p);
-    } else {
-        std::size_t i = 0;
-        while (i < frames.size()) {
-            std::size_t got = 0;
-            std::size_t stop = i + decode_run_counting(code_, frames.subspan(i), out.text.data() + w, &got, &lines_);
-            w += got;
-            counted = w;  // the run counted its LFs
-            if (stop == frames.size()) break;
-            note_bad(frames[stop], base + stop, lines_ + 1, out);
+    bool marked = false;  // a bad_sentinel stored: known here, so no search of the text for one
+    out.text.resize(at.text + frames.size());
+    std::size_t w = options_.positions ? decode_with_positions(frames, out, marked) : decode_runs(frames, out, marked);
+    out.text.resize(w);
+    line_ends_.take(std::string_view(out.text).substr(at.text), lines_ - lines_before);
+    // Every frame a character: no blank tape in the chunk to look for.
+    if (!marked && w - at.text == frames.size())
+        punched_stretch(frames, out);
+    else
+        note_blanks(frames, next_index_, out);
+    next_index_ += frames.size();
+    settle_chunk(out, at, marked);
+    return !stopped_;
+}
+
+// A frame at a time, each character's frame kept; the LFs counted on the way, for a bad frame's line.
+// Returns the end of the text stored (out.text is sized for every frame).
+std::size_t Decoder::decode_with_positions(std::span<const Frame> frames, DecodeResult& out, bool& marked) {
+    std::size_t w = out.text.size() - frames.size(), p = out.frame_of.size();
+    out.frame_of.resize(p + frames.size());
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        Frame f = frames[i];
+        FrameKind k = code_.kind(f);
+        if (k == FrameKind::blank || k == FrameKind::rubout) continue;
+        if (k != FrameKind::character) {
+            note_bad(f, next_index_ + i, lines_ + 1, out);
             if (!options_.keep_going) {
                 stopped_ = true;
                 break;
             }
-            out.text[w++] = bad_sentinel;
-            marked = true;
-            i = stop + 1;
         }
+        marked |= k != FrameKind::character;
+        char c = k == FrameKind::character ? code_.character(f) : bad_sentinel;
+        lines_ += c == '\n';
+        out.text[w++] = c;
+        out.frame_of[p++] = next_index_ + i;
     }
-    line_at(w);
-    out.text.resize(w);
-    line_ends_.take(std::string_view(out.text).substr(from), lines_ - lines_before);
-    // Every frame a character: no blank tape in the chunk to look for.
-    if (!marked && w - from == frames.size())
-        punched_stretch(frames, out);
-    else
-        note_blanks(frames, base, out);
-    next_index_ += frames.size();
-    settle_chunk(out, ChunkStart{from, positions_from, diagnostics_from}, marked);
-    return !stopped_;
+    out.frame_of.resize(p);
+    return w;
+}
+
+// Clean runs through the vector loops, which count the LFs they store; a bad frame between them.
+std::size_t Decoder::decode_runs(std::span<const Frame> frames, DecodeResult& out, bool& marked) {
+    std::size_t w = out.text.size() - frames.size(), i = 0;
+    while (i < frames.size()) {
+        std::size_t got = 0;
+        std::size_t stop = i + decode_run_counting(code_, frames.subspan(i), out.text.data() + w, &got, &lines_);
+        w += got;
+        if (stop == frames.size()) break;
+        note_bad(frames[stop], next_index_ + stop, lines_ + 1, out);
+        if (!options_.keep_going) {
+            stopped_ = true;
+            break;
+        }
+        out.text[w++] = bad_sentinel;
+        marked = true;
+        i = stop + 1;
+    }
+    return w;
 }
 
 // A chunk decoded: what it leaves for the tape's end, its findings in tape order, its text finished.
