@@ -80,6 +80,11 @@ public:
     std::vector<Diagnostic> ending() const;
 
     std::uint64_t frames_seen() const { return next_index_; }
+    /// The line (= block) the next character stands in: LFs decoded so far, plus one; nullopt for the
+    /// 5-track codes, whose lines are not counted.
+    std::optional<std::uint64_t> line() const {
+        return code_.five_track_table() ? std::nullopt : std::optional<std::uint64_t>(lines_ + 1);
+    }
     /// Bad frames in all, listed or not.
     std::uint64_t bad_frames() const { return parity_seen_ + other_seen_; }
     /// Bad frames beyond max_diagnostics, by kind.
