@@ -267,8 +267,8 @@ TEST(OutsideRound3, ALongerTrailerIsOneProblemLine) {
 TEST(OutsideRound3, AScannedTextTapeThatReadsBothWaysIsText) {
     SKIP_WITHOUT_SHARED_DATA("outside3/tapes/moshobo/tape1.ptp");
     TempDir dir;
-    ASSERT_EQ(tape_run({"render", shared_data("outside3/tapes/moshobo/tape1.ptp"), "-o", dir.file("t.png")}, dir).status,
-              0);
+    ASSERT_EQ(
+        tape_run({"render", shared_data("outside3/tapes/moshobo/tape1.ptp"), "-o", dir.file("t.png")}, dir).status, 0);
     Outcome o = tape_run({"scan", dir.file("t.png"), "-o", dir.file("t.ptp")}, dir);
     EXPECT_EQ(o.err.find("no text"), std::string::npos) << o.err;
     EXPECT_NE(o.err.find("text read as ISO with even parity"), std::string::npos) << o.err;
