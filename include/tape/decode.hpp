@@ -93,6 +93,11 @@ public:
     std::uint64_t frames_seen() const { return next_index_; }
     /// The line ends of the text decoded so far, however the caller cut or emptied it.
     const LineEnds& line_ends() const { return line_ends_; }
+    /// The line (= block) the next character stands in: LFs decoded so far, plus one; nullopt for the
+    /// 5-track codes, whose lines are not counted.
+    std::optional<std::uint64_t> line() const {
+        return code_.five_track_table() ? std::nullopt : std::optional<std::uint64_t>(lines_ + 1);
+    }
     /// Bad frames in all, listed or not.
     std::uint64_t bad_frames() const { return parity_seen_ + other_seen_; }
     /// Bad frames beyond max_diagnostics, by kind.

@@ -78,6 +78,10 @@ struct CodeDetection {
     std::string reason;              ///< the verdict with its evidence, in words a machinist understands
     Hint hint{};                     ///< only when following it reads the tape cleanly
     TapeEvidence evidence;
+    /// Set for a tape no code fits (kind unknown) when one reading fails fewer frames than every other,
+    /// and fewer than a quarter of them:
+    /// the one to decode with when the user asks for the text all the same (decode -k), saying so.
+    std::optional<Reading> closest;
 };
 
 /// True when the ISO reading of the evidence holds КОИ-7 text (letters shifted by SO ... SI), which
@@ -116,6 +120,10 @@ private:
 
 /// The verdict on frames (the whole tape, or as much of it as was read).
 CodeDetection detect_code(std::span<const Frame> frames, const CodeTable* eia_table = nullptr);
+
+/// For a tape decoded with its closest reading (CodeDetection::closest): what that is and why it is only
+/// the closest, in words.
+std::string closest_reading_note(const CodeDetection& d);
 
 /// When a tape forced to one reading fails it but reads cleanly another way: a note saying so, with
 /// the hint to read it that way.

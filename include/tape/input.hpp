@@ -87,6 +87,9 @@ public:
     /// next_text as a Diagnostic (Errc::doubtful_frame) where it stands, and stops decoding as a bad
     /// frame does (unless decode.keep_going).
     std::uint64_t doubtful_frames() const { return doubtful_met_; }
+    /// True when no code fits the tape and, with decode.keep_going, it is decoded with the closest reading
+    /// (CodeDetection::closest): the caller must say so (closest_reading_note).
+    bool closest_taken() const { return closest_taken_; }
 
 private:
     void open(std::unique_ptr<ByteSource> source, const std::string& name);
@@ -109,6 +112,7 @@ private:
     std::vector<DoubtfulFrame> doubts_;  // from the doubts file beside the image, by frame
     std::size_t next_doubt_ = 0;
     std::uint64_t doubtful_met_ = 0;
+    bool closest_taken_ = false;
 };
 
 /// Streams the programs of input into visitor, in bounded memory. A bad frame reaches

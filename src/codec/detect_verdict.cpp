@@ -152,6 +152,9 @@ CodeDetection no_code_verdict(CodeDetection d, const ReadingFit& best, std::uint
     }
     d.kind = TapeKind::unknown;
     d.reason = "neither ISO nor EIA: " + closest + "; " + counts_text(e);
+    auto ties = std::count_if(e.fits.begin(), e.fits.end(), [&](const auto& f) { return score(f) == score(best); });
+    // Two equally close: neither is the one to take; one failing a quarter of the frames or more is noise.
+    if (ties == 1 && score(best) * 4 < frames) d.closest = best.reading;
     return d;
 }
 
@@ -216,6 +219,15 @@ CodeDetection Detector::result() const {
     }
     if (fits(*best, frames)) return reading_verdict(std::move(d), *best, frames);
     return no_code_verdict(std::move(d), *best, frames);
+}
+
+std::string closest_reading_note(const CodeDetection& d) {
+    const ReadingFit* fit = &d.evidence.fits[0];
+    for (const auto& f : d.evidence.fits)
+        if (d.closest && f.reading == *d.closest) fit = &f;
+    return "decoded as " + reading_name(fit->reading) + ", the closest code but no sure one: it fails " +
+           n(score(*fit)) + " of " + frames_text(std::max<std::uint64_t>(d.evidence.significant, 1)) +
+           ", more than one in ten, which a damaged tape of that code seldom has; the text may be of another code";
 }
 
 std::optional<Diagnostic> other_reading(const CodeDetection& d, Reading forced) {

@@ -194,12 +194,40 @@ Position advance(Position p, std::string_view text, std::size_t newlines) {
     return p;
 }
 
-[[noreturn]] void cannot_carry(std::string_view text, std::size_t offset, Position base, Code code, Charset charset) {
+std::string shown_char(std::string_view text, std::size_t offset) {
+    std::string ch = std::string(utf8::char_at(text, offset));
+    return static_cast<unsigned char>(ch[0]) < 0x20 ? char_label(ch[0]) : "'" + visible(ch) + "'";
+}
+
+// The characters after the first one (chars[stop]) the code cannot carry either, up to a limit, each
+// with its line and column: all of them said at once, not one a run. origin maps a character of chars
+// to its byte in text (empty: the same).
+std::string others_uncarried(const FrameCode& code, std::string_view chars, std::size_t stop,
+                             std::span<const std::size_t> origin, std::string_view text, Position base) {
+    constexpr std::size_t named = 10;
+    std::vector<Frame> scratch(chars.size());
+    std::string list;
+    std::size_t found = 0;
+    for (std::size_t i = stop + 1; i < chars.size(); ++i) {
+        i += encode_run(code, chars.substr(i), scratch.data());
+        if (i >= chars.size()) break;
+        std::size_t offset = origin.empty() ? i : origin[i];
+        if (utf8::is_continuation(text[offset]) || ++found > named) continue;  // a character once, not a byte
+        Position p = text_position(text, offset, base);
+        list += (found > 1 ? ", " : "") + shown_char(text, offset) + " (line " + std::to_string(*p.line) + ", column " +
+                std::to_string(*p.column) + ")";
+    }
+    if (found == 0) return "";
+    return "; nor can " + list + (found > named ? " and " + std::to_string(found - named) + " more" : "");
+}
+
+[[noreturn]] void cannot_carry(std::string_view text, std::size_t offset, Position base, Code code, Charset charset,
+                               const std::string& others = "") {
     Position where = text_position(text, offset, base);
     std::string ch = std::string(utf8::char_at(text, offset));
     auto first = static_cast<unsigned char>(ch[0]);
-    std::string shown = first < 0x20 ? char_label(ch[0]) : "'" + visible(ch) + "'";
-    std::string why = shown + " cannot be punched in " + (code == Code::iso ? "ISO" : "EIA") + " code";
+    std::string why =
+        shown_char(text, offset) + " cannot be punched in " + (code == Code::iso ? "ISO" : "EIA") + " code" + others;
     if (first == 0x00) why = "a NUL byte in the text: on tape it would be blank tape, so it cannot be punched";
     if (first == 0x7F) why = "a DEL in the text: on tape it is a rubout that readers skip, so it cannot be punched";
     Hint hint;
@@ -349,7 +377,9 @@ void Encoder::encode_piece(std::string_view text, std::vector<Frame>& out) {
     out.resize(at + chars.size());
     std::size_t stop = encode_run(code_, chars, out.data() + at);
     if (stop != chars.size())
-        cannot_carry(text, plain ? stop : origin_[stop], position_, options_.code, options_.charset);
+        cannot_carry(
+            text, plain ? stop : origin_[stop], position_, options_.code, options_.charset,
+            others_uncarried(code_, chars, stop, plain ? std::span<const std::size_t>() : origin_, text, position_));
     position_ = advance(position_, text, scan.newlines);
 }
 

@@ -12,8 +12,8 @@ namespace {
 
 // In the order content detection tries them; one line per format.
 const ImageFormat formats[] = {
-    holes_image_format(), hex_image_format(),  hex8_image_format(),
-    hex5_image_format(),  dump_image_format(), raw_image_format(),
+    holes_image_format(), hex_image_format(),  hex8_image_format(), hex5_image_format(),
+    dump_image_format(),  bits_image_format(), raw_image_format(),
 };
 
 std::string lower(std::string_view s) {

@@ -11,6 +11,7 @@ ImageFormat hex_image_format();
 ImageFormat hex8_image_format();
 ImageFormat hex5_image_format();
 ImageFormat dump_image_format();
+ImageFormat bits_image_format();
 
 /// The code a header comment line names: "# code: ita2" or "# code: iso, parity even; ...", as the writers
 /// put it; nullopt for another line.

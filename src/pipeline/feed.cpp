@@ -135,11 +135,12 @@ std::unique_ptr<FrameSource> feed_source(Input& input, const FeedOptions& o, Dia
     if (o.dialect == Dialect::automatic) choice = guess_dialect(text);
     if (chosen) *chosen = choice;
     if (choice.dialect == Dialect::fanuc) text = semicolons_to_line_ends(text);
-    if (!text.empty() && text.back() != '\n') text += '\n';
+    // Nothing else is added: the text goes on tape as `tape encode` punches it (a last line without its
+    // LF, a final '%' most often, stays so), unless a '%' is put after it, on a line of its own.
     if (o.percent) {
         auto first = text.find_first_not_of(" \t\r\n");
         if (first == std::string::npos || text[first] != '%') text.insert(0, "%\n");
-        if (!ends_with_percent_line(text)) text += "%";
+        if (!ends_with_percent_line(text)) text += text.empty() || text.back() == '\n' ? "%" : "\n%";
     }
     return std::make_unique<TextFeed>(encode(text, o.encode));
 }

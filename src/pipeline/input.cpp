@@ -128,8 +128,15 @@ const DecodeOptions& Input::decode_options() {
             o.code = Code::iso;  // only ISO/ASCII tapes have a choice of parity
         } else {
             detect();
-            if (!detection_->code) throw Error(Errc::unknown_code, detection_->reason, detection_->hint);
-            o.code = *detection_->code;
+            if (detection_->code) {
+                o.code = *detection_->code;
+            } else if (o.keep_going && detection_->closest) {  // the text asked for all the same
+                o.code = detection_->closest->code;
+                o.parity = o.code == Code::iso ? detection_->closest->parity : Parity::even;
+                closest_taken_ = true;
+            } else {
+                throw Error(Errc::unknown_code, detection_->reason, detection_->hint);
+            }
         }
     }
     if (o.code == Code::eia && o.parity != Parity::even)
@@ -201,21 +208,28 @@ bool Input::next_text(DecodeResult& out) {
     return true;
 }
 
-// The decoder fed frames (the first of them frame `first`, from 0), with a Diagnostic for each frame in
-// doubt among them, where it stands: false where decoding stops (at a bad frame, or at a frame in doubt
-// unless keep_going).
+// The decoder fed frames (the first of them frame `first`, from 0), with a Diagnostic for each doubt
+// among them where it stands, in its line: at a frame written in doubt, or where a frame in doubt was
+// left out. False where decoding stops (at a bad frame, or at a doubt unless keep_going).
 bool Input::feed_with_doubts(std::span<const Frame> frames, std::uint64_t first, DecodeResult& out) {
-    while (next_doubt_ < doubts_.size() && doubts_[next_doubt_].frame <= first) ++next_doubt_;
+    while (next_doubt_ < doubts_.size() && doubts_[next_doubt_].place() < first) ++next_doubt_;
     std::size_t given = 0;
-    while (next_doubt_ < doubts_.size() && doubts_[next_doubt_].frame <= first + frames.size()) {
-        const DoubtfulFrame& d = doubts_[next_doubt_++];
-        std::size_t upto = static_cast<std::size_t>(d.frame - first);  // the doubtful frame included
+    const std::uint64_t end = first + frames.size();
+    while (next_doubt_ < doubts_.size()) {
+        const DoubtfulFrame& d = doubts_[next_doubt_];
+        // One left out after the chunk's last frame is said here; one written there, with its frame.
+        if (d.place() > end || (d.place() == end && !d.left_out)) break;
+        ++next_doubt_;
+        auto upto = static_cast<std::size_t>(d.place() - first);
         if (!decoder_->feed(frames.subspan(given, upto - given), out)) return false;
+        auto line = decoder_->line();  // before the frame in doubt, which may end the line
         given = upto;
+        if (!d.left_out && !decoder_->feed(frames.subspan(given++, 1), out)) return false;
         ++doubtful_met_;
-        out.diagnostics.push_back(Diagnostic{.code = Errc::doubtful_frame,
-                                             .where = Position{.frame = d.frame},
-                                             .message = "restored in doubt (" + d.status + "): " + d.reason});
+        out.diagnostics.push_back(
+            Diagnostic{.code = Errc::doubtful_frame,
+                       .where = Position{.frame = std::max<std::uint64_t>(d.frame, 1), .line = line},
+                       .message = d.message()});
         if (!decode_->keep_going) return false;
     }
     return decoder_->feed(frames.subspan(given), out);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 namespace tape {
 namespace {
@@ -48,15 +49,27 @@ std::vector<DoubtfulFrame> doubts_beside(const std::string& image_path) {
             image.at("fnv1a64").get<std::string>() != image_fingerprint(data))
             return out;
         for (const auto& p : j.at("problems")) {
-            if (!p.at("in_doubt").get<bool>() || p.at("frame").is_null()) continue;
-            out.push_back({p.at("frame").get<std::uint64_t>(), p.at("status").get<std::string>(),
-                           p.at("reason").get<std::string>()});
+            if (!p.at("in_doubt").get<bool>()) continue;
+            // A frame left out has no frame of its own: its place is after frame `after`.
+            bool left_out = p.at("frame").is_null();
+            out.push_back({p.at(left_out ? "after" : "frame").get<std::uint64_t>(), p.at("status").get<std::string>(),
+                           p.at("reason").get<std::string>(), left_out});
+            if (!left_out && out.back().frame == 0) return {};  // no frame 0: not a file restore wrote
         }
     } catch (const nlohmann::json::exception&) {
         return {};
     }
-    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.frame < b.frame; });
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+        return std::pair(a.place(), !a.left_out) < std::pair(b.place(), !b.left_out);
+    });
     return out;
+}
+
+std::string DoubtfulFrame::message() const {
+    std::string where = !left_out ? ""
+                        : frame   ? "a frame left out after this one, "
+                                  : "a frame left out before this one, ";
+    return "restored in doubt (" + status + "): " + where + reason;
 }
 
 }  // namespace tape

@@ -93,19 +93,21 @@ DirectionChoice decide_direction(std::span<const Frame> frames, const DirectionE
         return {DirectionBasis::label, false,
                 "the leader label \"" + (reverse ? behind : ahead)->text + "\" reads this way"};
     }
-    std::string code;
+    std::string code, text_seen = "no text";
     if (auto text = characters(frames, code)) {
         std::string backwards(text->rbegin(), text->rend());
         std::size_t f = forward_signs(*text), b = forward_signs(backwards);
         std::size_t most = std::max(f, b), least = std::min(f, b);
+        std::string signs = std::to_string(most) +
+                            " signs of text read forwards one way (line ends, block starts, signed numbers, words) "
+                            "against " +
+                            std::to_string(least) + " the other way";
         if (most >= 2 && most >= 2 * least + 1) {
             reverse = b > f;
-            return {DirectionBasis::code, most < 4,
-                    "read as " + code + ", " + std::to_string(most) +
-                        " signs of text read forwards one way (line ends, "
-                        "block starts, signed numbers, words) against " +
-                        std::to_string(least) + " the other way"};
+            return {DirectionBasis::code, most < 4, "read as " + code + ", " + signs};
         }
+        // Text that reads well enough both ways is there all the same: said, with its count.
+        text_seen = "text read as " + code + " but too few signs of its direction, " + signs;
     }
     std::size_t lead = blank_run(frames), trail = blank_run(back);
     std::string ends = std::to_string(lead) + " blank frames at the first end" +
@@ -116,7 +118,7 @@ DirectionChoice decide_direction(std::span<const Frame> frames, const DirectionE
         std::size_t most = std::max(lead, trail), least = std::min(lead, trail);
         return {DirectionBasis::leader, most < 2 * least + 3, "the leader is the longer blank run: " + ends};
     }
-    return {DirectionBasis::none, false, "nothing tells the direction (no label, no text, " + ends + ")"};
+    return {DirectionBasis::none, false, "nothing tells the direction (no label, " + text_seen + ", " + ends + ")"};
 }
 
 }  // namespace tape::scan

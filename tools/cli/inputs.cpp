@@ -48,9 +48,15 @@ const tape::DecodeOptions& decide_code(tape::Input& input, const std::string& na
         // A code or parity given by hand is taken as given; the verdict is still drawn (from the
         // read-ahead), so that a tape failing the given code can be said to read cleanly another way.
         if (!input.detection()) input.detect();
+        if (input.closest_taken()) say(name, "warning: " + tape::closest_reading_note(*input.detection()));
         return o;
     } catch (const tape::Error& e) {
-        fail(name, e);
+        const tape::CodeDetection* d = input.is_image() && input.detection() ? &*input.detection() : nullptr;
+        if (e.code() != tape::Errc::unknown_code || !d || !d->closest) fail(name, e);
+        // No code fits, one is closest: the text can be had all the same, each failing frame marked.
+        fail(name, tape::Errc::unknown_code,
+             d->reason + " (`tape decode -k` decodes it all the same as " + tape::reading_name(*d->closest) +
+                 ", the closest, marking each frame that fails)");
     }
 }
 

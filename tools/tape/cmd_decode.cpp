@@ -118,7 +118,8 @@ void decode_text(const DecodeArgs& a, tape::Input& in, const std::string& name) 
             throw Exit{bad_data};
         }
         if (std::uint64_t doubts = in.doubtful_frames()) {
-            say(name, std::to_string(doubts) + " frame(s) restored in doubt (" + tape::doubts_file_for(a.input) + ")");
+            say(name, std::to_string(doubts) + " frame(s) restored in doubt, written or left out (" +
+                          tape::doubts_file_for(a.input) + ")");
             throw Exit{bad_data};
         }
         if (blank_in_block && a.strict) throw Exit{bad_data};

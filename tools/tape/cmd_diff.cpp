@@ -45,8 +45,24 @@ std::pair<std::size_t, std::size_t> data_columns(const tape::ReadAlignment& al, 
 }
 
 struct Counts {
-    std::uint64_t differ = 0, only[2] = {0, 0}, ends[2] = {0, 0};
+    // Frames that differ; frames one read has where the other has none; of the latter, blank leader or
+    // trailer one read has longer, and data before the other read begins or after it ends.
+    std::uint64_t differ = 0, only[2] = {0, 0}, ends[2] = {0, 0}, before[2] = {0, 0}, after[2] = {0, 0};
 };
+
+// A read that begins late or ends early inside the data (cut, or its reader started late) misses frames
+// the other has: said in one line, each way it happens.
+void say_cut_short(const Counts& n, const std::vector<TapeInput>& reads) {
+    for (std::size_t has = 0; has < 2; ++has) {
+        std::string other = display_name(reads[1 - has].name), with = display_name(reads[has].name);
+        if (n.before[has])
+            say("", other + " begins " + std::to_string(n.before[has]) + " frame(s) late, inside the data " + with +
+                        " holds before it: a read started late or a cut tape, a difference");
+        if (n.after[has])
+            say("", other + " ends " + std::to_string(n.after[has]) + " frame(s) early, inside the data " + with +
+                        " holds after it: a read stopped early or a cut tape, a difference");
+    }
+}
 
 void run(const DiffArgs& a) {
     std::vector<TapeInput> reads = read_all_bounded({a.first, a.second});
@@ -66,9 +82,8 @@ void run(const DiffArgs& a) {
         std::size_t has = x == tape::ReadAlignment::none ? 1 : 0;
         if (blank_end) ++n.ends[has];
         if (blank_end && !a.strict) continue;
-        // Where one read simply has not begun or has ended (within the data), it is no difference of the tape.
-        if (!blank_end && x == tape::ReadAlignment::none && !al.covers(0, c)) continue;
-        if (!blank_end && y == tape::ReadAlignment::none && !al.covers(1, c)) continue;
+        if (!blank_end && (x == tape::ReadAlignment::none || y == tape::ReadAlignment::none) && !al.covers(1 - has, c))
+            ++(c < al.first_column(1 - has) ? n.before : n.after)[has];
         if (x != tape::ReadAlignment::none && y != tape::ReadAlignment::none)
             ++n.differ;
         else
@@ -79,6 +94,7 @@ void run(const DiffArgs& a) {
            display_name(reads[0].name) + ", " + std::to_string(n.only[1]) + " only in " + display_name(reads[1].name) +
            "\n";
     write_output("-", out, false, false);
+    say_cut_short(n, reads);
     if ((n.ends[0] || n.ends[1]) && !a.strict)
         say("", "note: the leader and trailer differ in length by " + std::to_string(n.ends[0] + n.ends[1]) +
                     " blank frame(s), which is no difference of the tape (--strict counts them)");

@@ -128,9 +128,8 @@ void run(const RenderArgs& a) {
     // Frames a restoration left in doubt (its doubts file beside the image) in the doubt colour.
     if (a.input != "-")
         for (const auto& doubt : tape::doubts_beside(a.input))
-            if (doubt.frame <= d.frames.size())
-                o.marks.push_back({doubt.frame, tape::MarkKind::doubtful,
-                                   "restored in doubt (" + doubt.status + "): " + doubt.reason});
+            if (std::uint64_t at = std::max<std::uint64_t>(doubt.frame, 1); at <= d.frames.size())
+                o.marks.push_back({at, tape::MarkKind::doubtful, doubt.message()});
     write_svg(a, d, o, name);
 }
 

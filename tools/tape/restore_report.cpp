@@ -42,10 +42,18 @@ std::string summary_text(const tape::RestoreResult& r) {
     return s;
 }
 
-std::string problem_text(const RestoreReportInput& in, const tape::RestoreProblem& p) {
+// Frames left out at one place for one reason, each read having the same there: the blank frames of a
+// longer leader or trailer, said once for the stretch.
+bool alike(const tape::RestoreProblem& a, const tape::RestoreProblem& b) {
+    return !a.frame && !b.frame && a.after == b.after && a.status == b.status && a.reason == b.reason &&
+           a.seen == b.seen && a.covered == b.covered && a.written == b.written && a.line == b.line;
+}
+
+// count: how many alike problems p stands for.
+std::string problem_text(const RestoreReportInput& in, const tape::RestoreProblem& p, std::size_t count) {
     std::string s = "  " + problem_place(p) + (p.line ? " (line " + std::to_string(*p.line) + ")" : "") +
                     (p.frame ? ", " + cm(*p.frame) + " cm" : "") + ": " + std::string(tape::status_name(p.status)) +
-                    ": " + p.reason + "\n";
+                    (count > 1 ? ", " + std::to_string(count) + " frames alike" : "") + ": " + p.reason + "\n";
     for (std::size_t i = 0; i < p.seen.size(); ++i)
         s += "      read " + std::to_string(i + 1) + ": " +
              (p.seen[i]      ? frame_text(in.code, *p.seen[i])
@@ -168,7 +176,10 @@ std::string restore_report_text(const RestoreReportInput& in) {
     }
     s += summary_text(r);
     if (!r.problems.empty()) s += "problems:\n";
-    for (const auto& p : r.problems) s += problem_text(in, p);
+    for (std::size_t i = 0, n = 1; i < r.problems.size(); i += n) {
+        for (n = 1; i + n < r.problems.size() && alike(r.problems[i], r.problems[i + n]);) ++n;
+        s += problem_text(in, r.problems[i], n);
+    }
     auto reread = reread_list(r);
     if (!reread.empty()) {
         s += "read again:\n";
