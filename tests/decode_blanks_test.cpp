@@ -6,15 +6,11 @@
 
 #include <algorithm>
 #include <array>
-#include <filesystem>
-#include <iostream>
 #include <random>
 
 #include "tape/code.hpp"
 #include "tape/decode.hpp"
-#include "tape/file_io.hpp"
-#include "tape/image.hpp"
-#include "tape/picture.hpp"
+#include "every_tape.hpp"
 #include "test_util.hpp"
 
 namespace {
@@ -143,31 +139,13 @@ void expect_same_reading(std::span<const Frame> frames, const std::string& name)
     }
 }
 
-std::vector<Frame> frames_of_file(const std::filesystem::path& path) {
-    auto bytes = read_file(path.string());
-    return detect_image_format(bytes).read(bytes);
-}
-
 TEST(BlankInBlock, SameFindingsAsTheFrameByFrameRuleOnEveryTape) {
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(TAPE_SOURCE_DIR) + "/tapes"))
-        files.push_back(e.path());
-    if (!shared_data_dir().empty())
-        for (const auto& e : std::filesystem::recursive_directory_iterator(shared_data_dir()))
-            if (e.is_regular_file() && picture_format_for_path(e.path().string()).empty()) files.push_back(e.path());
-    std::size_t read = 0;
-    for (const auto& path : files) {
-        std::vector<Frame> frames;
-        try {
-            frames = frames_of_file(path);
-        } catch (const Error&) {
-            continue;  // no tape image (a text of notes)
-        }
-        ++read;
-        expect_same_reading(frames, path.string());
+    auto tapes = every_tape();
+    for (const auto& t : tapes) {
+        expect_same_reading(t.frames, t.path);
+        if (HasFailure()) break;
     }
-    EXPECT_GT(read, 20u);
-    std::cout << read << " files read as tapes\n";
+    EXPECT_GT(tapes.size(), 20u);
 }
 
 // Text blocks with blank runs after characters, after ends of block (now the habit, now more), DEL

@@ -3,15 +3,12 @@
 // the project's sample tapes, every tape of ../shared/data and made-up tapes, however they are cut.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <random>
 
 #include "tape/code.hpp"
 #include "tape/detect.hpp"
-#include "tape/file_io.hpp"
-#include "tape/image.hpp"
-#include "tape/picture.hpp"
 #include "tape/survey.hpp"
+#include "every_tape.hpp"
 #include "test_util.hpp"
 
 namespace {
@@ -122,26 +119,12 @@ void expect_same_counts(std::span<const Frame> frames, const std::string& name) 
 }
 
 TEST(SurveyTally, SameCountsAsAFrameAtATimeOnEveryTape) {
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(TAPE_SOURCE_DIR) + "/tapes"))
-        files.push_back(e.path());
-    if (!shared_data_dir().empty())
-        for (const auto& e : std::filesystem::recursive_directory_iterator(shared_data_dir()))
-            if (e.is_regular_file() && picture_format_for_path(e.path().string()).empty()) files.push_back(e.path());
-    std::size_t read = 0;
-    for (const auto& path : files) {
-        std::vector<Frame> frames;
-        try {
-            auto bytes = read_file(path.string());
-            frames = detect_image_format(bytes).read(bytes);
-        } catch (const Error&) {
-            continue;  // no tape image
-        }
-        ++read;
-        expect_same_counts(frames, path.string());
+    auto tapes = every_tape();
+    for (const auto& t : tapes) {
+        expect_same_counts(t.frames, t.path);
         if (HasFailure()) break;
     }
-    EXPECT_GT(read, 20u);
+    EXPECT_GT(tapes.size(), 20u);
 }
 
 // Frames of every value, runs of 0x80 and blank tape, '%' before programs and at the end, SO/SI shifts.
