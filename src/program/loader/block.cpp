@@ -76,8 +76,9 @@ Word& Loader::next_word() {
 std::size_t Loader::block(std::size_t i, std::size_t e) {
     std::size_t end = block_end(i, e), start_at = i;
     i = block_head(i, end);
-    // A comment whose '(' was lost reads as words up to its ')': one finding for all of it.
-    if (std::size_t close = stray_close(i, end); close != std::string_view::npos)
+    // A comment whose '(' was lost reads as words up to its ')': one finding for all of it. Where no
+    // dialect fits, ( ) may be no comment at all (Heidenhain's is ';'): nothing to say of a ')'.
+    if (std::size_t close = stray_close(i, end); close != std::string_view::npos && rules_->dialect != Dialect::none)
         i = flagged(skip_blanks(i, end), end, close + 1,
                     "is taken as a comment whose '(' is missing: ')' closes no comment", "unexpected-character");
     if (i < end && after_semicolon(start_at) && is_letter(text_[i]) && i + 1 < end && is_letter(text_[i + 1]) &&
