@@ -12,7 +12,8 @@ namespace tape {
 
 using namespace loading;
 
-Loader::Loader(ProgramVisitor& visitor, const LoadOptions& options) : v_(visitor), options_(options) {
+Loader::Loader(ProgramVisitor& visitor, const LoadOptions& options)
+    : v_(visitor), options_(options), leader_open_(options.leader) {
     if (options_.dialect != Dialect::automatic) choose(DialectChoice{options_.dialect, ""});
 }
 
@@ -21,7 +22,7 @@ void Loader::choose(DialectChoice choice) {
     linuxcnc_ = choice.dialect == Dialect::linuxcnc;
     if (choice.close) {
         second_found_ = std::make_unique<SecondFindings>();
-        second_ = std::make_unique<Loader>(*second_found_, LoadOptions{*choice.close});
+        second_ = std::make_unique<Loader>(*second_found_, LoadOptions{*choice.close, options_.leader});
     }
     v_.dialect(choice);
 }

@@ -36,8 +36,6 @@ inline std::string_view trim_right(std::string_view s) {
 class Loader {
 public:
     Loader(ProgramVisitor& visitor, const LoadOptions& options);
-    /// Reads the text before the first '%' as the program, as it comes (a trial of held lines).
-    void no_leader() { leader_open_ = false; }
     void feed(std::string_view text, std::span<const std::uint64_t> frame_of);
     void finish();
 
@@ -63,7 +61,7 @@ private:
     void release_leader(bool as_program);
     void start_pending();
     bool header_comment(std::size_t b, std::size_t first, std::size_t e, std::string_view whole);
-    void replay(std::string held, std::vector<std::uint64_t> frames, std::uint64_t base, std::uint64_t line);
+    void replay_held();
     void after_end_line(std::size_t b, bool blank, std::string_view whole);
     void percent_line(std::size_t b, std::size_t pct, std::size_t e);
     void open_pending(std::size_t pct, std::size_t e, bool from_label);

@@ -133,8 +133,7 @@ bool Loader::held_ends_program() const {
         bool ended = false;
         void block(const Block& b) override { ended |= b.ends; }
     } seen;
-    Loader trial(seen, LoadOptions{rules_->dialect});
-    trial.no_leader();
+    Loader trial(seen, LoadOptions{rules_->dialect, false});
     trial.feed(held_, {});
     trial.finish();
     return seen.ended;
@@ -142,33 +141,31 @@ bool Loader::held_ends_program() const {
 
 // The held text before the first '%' is label, or is read as the program it is.
 void Loader::release_leader(bool as_program) {
-    std::string held = std::move(held_);
-    std::vector<std::uint64_t> frames = std::move(held_frames_);
+    leader_open_ = false;
+    if (as_program) {
+        replay_held();
+        return;
+    }
+    v_.label(held_);
     held_.clear();
     held_frames_.clear();
-    leader_open_ = false;
-    if (as_program)
-        replay(std::move(held), std::move(frames), held_base_, held_line_);
-    else
-        v_.label(held);
 }
 
 // The program a '%' opened starts, with the comment lines held after the '%'.
 void Loader::start_pending() {
     start(std::move(pending_header_));
-    if (held_.empty()) return;
+    if (!held_.empty()) replay_held();
+}
+
+// Loads the held lines at their own places in the text, then goes on where it was.
+void Loader::replay_held() {
     std::string held = std::move(held_);
     std::vector<std::uint64_t> frames = std::move(held_frames_);
     held_.clear();
     held_frames_.clear();
-    replay(std::move(held), std::move(frames), held_base_, held_line_);
-}
-
-// Loads held lines at their own places in the text, then goes on where it was.
-void Loader::replay(std::string held, std::vector<std::uint64_t> frames, std::uint64_t base, std::uint64_t line) {
     auto saved = std::tuple(text_, frame_of_, base_, line_no_, line_start_, line_ascii_, column_offset_, column_);
-    base_ = base;
-    line_no_ = line;
+    base_ = held_base_;
+    line_no_ = held_line_;
     run(held, frames);
     std::tie(text_, frame_of_, base_, line_no_, line_start_, line_ascii_, column_offset_, column_) = saved;
 }
