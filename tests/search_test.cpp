@@ -96,3 +96,25 @@ TEST(Searcher, FindsWhatTheWholeTapeSearchesFindFromEveryFrame) {
     for (auto r : find_numbered_blocks(t, 1)) numbered.push_back(r.block->where.offset);
     EXPECT_EQ(run(SearchQuery{.kind = SearchQuery::Kind::numbered_block, .number = 1}), numbered);
 }
+
+// A Fanuc program found by number is shown by its O block, where it stands (the shape of
+// cade_O58214.nc: '%', then "O58214" on its own line): not "%O58214" at the '%'.
+TEST(Searcher, AFanucProgramIsShownByItsOBlock) {
+    auto run = [](const std::string& text) {
+        Searcher s(SearchQuery{.kind = SearchQuery::Kind::program, .program = "58214"});
+        load_each(text, {}, s, LoadOptions{Dialect::automatic});
+        return s.hits();
+    };
+    auto own_line = run("%\nO58214 \n(BORED PART)\nG18 G40 G80 G99\nM30\n%\n");
+    ASSERT_EQ(own_line.size(), 1U);
+    EXPECT_EQ(own_line[0].text, "O58214");
+    EXPECT_EQ(own_line[0].where.line, 2U);
+    auto after_comment = run("%\n(HEADER)\nO58214 (BORED PART)\nG18 G40 G80 G99\nM30\n%\n");
+    ASSERT_EQ(after_comment.size(), 1U);
+    EXPECT_EQ(after_comment[0].text, "O58214 (BORED PART)");
+    EXPECT_EQ(after_comment[0].where.line, 3U);
+    auto on_percent_line = run("%O58214(BORED PART)\nG18 G40 G80 G99\nM30\n%\n");
+    ASSERT_EQ(on_percent_line.size(), 1U);
+    EXPECT_EQ(on_percent_line[0].text, "O58214 (BORED PART)");
+    EXPECT_EQ(on_percent_line[0].where.line, 1U);
+}

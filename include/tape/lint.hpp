@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <unordered_map>
@@ -13,6 +14,10 @@
 #include "tape/program.hpp"
 
 namespace tape {
+
+namespace lint_detail {
+class BlockTargets;
+}
 
 struct LintOptions {
     const FormatSpec* spec = nullptr;  ///< also check every word against this controller format
@@ -91,13 +96,7 @@ private:
         std::uint64_t block;
     };
     std::vector<Open> open_;
-    std::vector<long long> numbers_;  // Fanuc: the program's block numbers, for its GOTOs
-    struct Goto {
-        long long target;
-        Location where;
-        std::uint64_t block;
-    };
-    std::vector<Goto> gotos_;
+    std::unique_ptr<lint_detail::BlockTargets> targets_;  // Fanuc: the blocks its GOTOs, cycles and calls name
 };
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).

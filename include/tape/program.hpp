@@ -106,7 +106,7 @@ Finding program_finding(std::string_view rule, const Location& where, std::uint6
 struct LoadedTape {
     Dialect dialect = Dialect::gost;       ///< the dialect it was read in
     std::string dialect_reason;            ///< why, when it was chosen automatically
-    std::string label;                     ///< before the first '%' (§1.8): kept and shown, never executed
+    std::string label;                     ///< before the first '%' (§1.8), in every dialect: never executed
     bool physical_start = false;           ///< "%%": the physical start of the tape (§1.8)
     std::optional<Location> record_end{};  ///< the '%' after the last program: end of record, rewind stop
     std::vector<Program> programs;
@@ -124,7 +124,8 @@ struct LoadedTape {
 class ProgramVisitor {
 public:
     virtual ~ProgramVisitor() = default;
-    /// Text before the first '%' (§1.8), in pieces as lines come.
+    /// Text before the first '%' (§1.8), in pieces as lines come; where the dialect needs no '%', all of
+    /// it when the '%' comes (until then it may yet be a program that '%' closes).
     virtual void label(std::string_view text) { (void)text; }
     /// A '%' starts a program; the header has its start and number and no blocks yet.
     virtual void program_start(const Program& header) { (void)header; }
@@ -146,6 +147,9 @@ public:
 /// How text is read into programs.
 struct LoadOptions {
     Dialect dialect = Dialect::gost;  ///< automatic: chosen from the first 64 KiB (guess_dialect)
+    /// Where the dialect needs no '%': text before the first '%' is label unless it ends a program that
+    /// '%' closes. false: it is the program (a piece cut from inside a text, which has no leader).
+    bool leader = true;
 };
 
 /// The loader fed a piece of text at a time, in bounded memory (a line is held until its LF comes):

@@ -49,7 +49,7 @@ struct SearchQuery {
 
 struct SearchHit {
     Location where;
-    std::string text;  ///< the block as written, or "%41" for a program start
+    std::string text;  ///< the block as written ("O1234 (BRACKET)" for a Fanuc program), or "%41" for a program start
 };
 
 class Searcher : public ProgramVisitor {
@@ -66,6 +66,7 @@ private:
 
     SearchQuery query_;
     std::vector<SearchHit> hits_;
+    std::optional<std::string> number_block_{};  // the program found: the number its O block holds
 };
 
 }  // namespace tape

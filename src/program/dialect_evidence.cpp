@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <string>
 
 #include "program/chars.hpp"
 
@@ -123,6 +124,24 @@ bool foreign_statement(std::string_view s, std::size_t i) {
     return s.compare(i, 6, "GOTO N") == 0 && i + 6 < s.size() && is_upper(s[i + 6]);
 }
 
+// Fanuc's ",C1." chamfer or ",R2." corner after the ',' at i, blanks allowed between (", R 15.").
+bool corner_word_at(std::string_view s, std::size_t i) {
+    std::size_t k = skip(s, i + 1);
+    if (k >= s.size() || (s[k] != 'C' && s[k] != 'R')) return false;
+    k = skip(s, k + 1);
+    return k < s.size() && (is_digit(s[k]) || s[k] == '.');
+}
+
+// M2, M02, M30 or M99 (any case) at i: a program's end.
+bool end_code_at(std::string_view s, std::size_t i) {
+    if (upper(s[i]) != 'M' || (i > 0 && (is_letter(s[i - 1]) || is_digit(s[i - 1])))) return false;
+    std::size_t k = skip(s, i + 1), digits = k;
+    while (digits < s.size() && is_digit(s[digits])) ++digits;
+    if (digits == k || digits - k > 3 || (digits < s.size() && s[digits] == '.')) return false;
+    int code = std::stoi(std::string(s.substr(k, digits - k)));
+    return code == 2 || code == 30 || code == 99;
+}
+
 constexpr std::string_view linuxcnc_codes[] = {"G64 P", "G64P",  "G90.1", "G91.1", "G33.1", "G38.",
                                                "G43.2", "G59.1", "G59.2", "G59.3", "G5.2",  "G5.3"};
 
@@ -132,8 +151,10 @@ const ClueInfo& clue_info(Clue c) { return clues[static_cast<std::size_t>(c)]; }
 
 void Evidence::add(Clue c, std::uint64_t number, std::uint64_t n) {
     auto k = static_cast<std::size_t>(c);
-    if (!count_[k]) first_line_[k] = number;
-    count_[k] += n;
+    auto& count = in_leader_ ? leader_count_ : count_;
+    auto& first = in_leader_ ? leader_first_line_ : first_line_;
+    if (!count[k]) first[k] = number;
+    count[k] += n;
 }
 
 void Evidence::scan(std::string_view text) {
@@ -144,13 +165,29 @@ void Evidence::scan(std::string_view text) {
         line(text.substr(b, end - b), ++number);
         b = end + 1;
     }
+    if (in_leader_) leader_ends(false);
+}
+
+// The text before the first '%' ends: its clues count when it is the program (no '%' came, or it ended
+// a program the '%' closes); as label they are dropped, and the text starts with its '%'.
+void Evidence::leader_ends(bool percent) {
+    in_leader_ = false;
+    if (percent && !leader_ends_program_) {
+        starts_with_percent_ = true;
+        return;
+    }
+    starts_with_percent_ = false;
+    for (std::size_t k = 0; k < clue_count; ++k)
+        if (leader_count_[k]) {
+            first_line_[k] = count_[k] ? std::min(first_line_[k], leader_first_line_[k]) : leader_first_line_[k];
+            count_[k] += leader_count_[k];
+        }
 }
 
 void Evidence::line(std::string_view s, std::uint64_t number) {
     std::size_t i = skip(s, 0);
     if (i >= s.size()) return;
-    if (!seen_text_) starts_with_percent_ = s[i] == '%';
-    seen_text_ = true;
+    if (in_leader_ && s[i] == '%') leader_ends(true);
     // CAM posts name their controller in the header: "(POST LINUXCNC.CPS ...)", "(FANUC 0I-MF)".
     if (mentions(s, "LINUXCNC")) add(Clue::names_linuxcnc, number);
     if (mentions(s, "FANUC") || mentions(s, "HAAS")) add(Clue::names_fanuc, number);
@@ -208,9 +245,7 @@ void Evidence::words(std::string_view s, std::size_t i, std::uint64_t number) {
         for (std::string_view code : linuxcnc_codes)
             if (word_at(s, k, code)) add(Clue::linuxcnc_code, number);
         if (word_at(s, k, "M98") || word_at(s, k, "M97")) add(Clue::subprogram_call, number);
-        if (c == ',' && k + 2 < s.size() && (s[k + 1] == 'C' || s[k + 1] == 'R') &&
-            (is_digit(s[k + 2]) || s[k + 2] == '.'))
-            add(Clue::corner_word, number);
+        if (c == ',' && corner_word_at(s, k)) add(Clue::corner_word, number);
         if ((c == '^' || c == '@') && k + 1 < s.size() && (is_digit(s[k + 1]) || s[k + 1] == '.' || s[k + 1] == '-'))
             add(Clue::polar_word, number);
         if (!o_word_line &&
@@ -222,6 +257,7 @@ void Evidence::words(std::string_view s, std::size_t i, std::uint64_t number) {
             signed_dimension = true;
         if (c == '=' && assigns_to_name(s, k)) assignment = true;
         if (parameter_word_at(s, k)) add(Clue::parameter_word, number);
+        if (in_leader_ && end_code_at(s, k)) leader_ends_program_ = true;
     }
     if (lower) add(Clue::lowercase, number);
     if (signed_dimension) add(Clue::signed_dimension, number);

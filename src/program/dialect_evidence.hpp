@@ -61,7 +61,7 @@ public:
     std::uint64_t foreign() const;
     /// "3 O program number(s) (line 2), 12 macro statement(s) (line 5)": the clues of one side found.
     std::string describe(Side side) const;
-    /// The text starts with '%' (after blank lines): a tape's program start.
+    /// The text starts with '%' (after blank lines, or after label text): a tape's program start.
     bool starts_with_percent() const { return starts_with_percent_; }
 
 private:
@@ -69,9 +69,16 @@ private:
     void words(std::string_view line, std::size_t i, std::uint64_t number);
     void add(Clue c, std::uint64_t number, std::uint64_t n = 1);
 
+    void leader_ends(bool percent);
+
     std::array<std::uint64_t, clue_count> count_{};
     std::array<std::uint64_t, clue_count> first_line_{};
-    bool starts_with_percent_ = false, seen_text_ = false;
+    bool starts_with_percent_ = false;
+    // Before the first '%' the clues are held: that text is label (its clues say nothing of the
+    // program) unless it ends a program, which the '%' then closes.
+    std::array<std::uint64_t, clue_count> leader_count_{};
+    std::array<std::uint64_t, clue_count> leader_first_line_{};
+    bool in_leader_ = true, leader_ends_program_ = false;
 };
 
 }  // namespace tape::detection

@@ -7,6 +7,7 @@
 #include <tuple>
 #include <utility>
 
+#include "program/block_targets.hpp"
 #include "tape/code_tables.hpp"
 #include "tape/functions.hpp"
 #include "tape/rules.hpp"
@@ -182,7 +183,9 @@ bool uses_explicit_points(const Program& program) {
 }
 
 LintVisitor::LintVisitor(const LintOptions& options)
-    : options_(options), sink_([this](Finding f) { keep(std::move(f)); }) {}
+    : options_(options),
+      sink_([this](Finding f) { keep(std::move(f)); }),
+      targets_(std::make_unique<lint_detail::BlockTargets>()) {}
 LintVisitor::~LintVisitor() = default;
 
 void LintVisitor::dialect(const DialectChoice& choice) {
@@ -204,8 +207,6 @@ void LintVisitor::program_start(const Program& header) {
     feed_given_ = no_feed_said_ = subprogram_ = false;
     no_feed_.reset();
     open_.clear();
-    numbers_.clear();
-    gotos_.clear();
 }
 
 void LintVisitor::block(const Block& b) {
@@ -219,8 +220,8 @@ void LintVisitor::block(const Block& b) {
                 "block number " + b.number->text + " does not increase (the block before is " +
                     std::to_string(*last_number_) + ")");
         if (n) last_number_ = n;
-        if (n && dialect_ == Dialect::fanuc) numbers_.push_back(*n);
     }
+    if (dialect_ == Dialect::fanuc) targets_->block(b);
     if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, "99");
     word_checks(sink_, b, dialect_, close_);
     code_checks(sink_, b, dialect_, close_, unknown_codes_);
@@ -280,7 +281,6 @@ void LintVisitor::motion_checks(const Block& b) {
 void LintVisitor::flow_checks(const Block& b) {
     using K = Statement::Kind;
     for (const auto& s : b.statements) {
-        if ((s.kind == K::if_goto || s.kind == K::go_to) && s.number) gotos_.push_back({*s.number, s.where, b.ordinal});
         if (s.kind == K::while_do || s.kind == K::loop_do) {
             if (s.number) open_.push_back({std::to_string(*s.number), "DO", s.where, b.ordinal});
         } else if (s.kind == K::loop_end) {
@@ -387,12 +387,7 @@ void LintVisitor::close_program() {
         add(sink_, "after-end", *after_end_at_, 0, "text after M02/M30 is not part of the program (§1.9)");
     for (const auto& o : open_) report_unclosed(o);
     open_.clear();
-    for (const auto& g : gotos_)
-        if (std::find(numbers_.begin(), numbers_.end(), g.target) == numbers_.end())
-            add(sink_, "goto-target", g.where, g.block,
-                "GOTO " + std::to_string(g.target) + ": no block N" + std::to_string(g.target) + " in this program");
-    gotos_.clear();
-    numbers_.clear();
+    targets_->close(sink_);
     for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, program_points_);
     held_.clear();
 }

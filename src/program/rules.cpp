@@ -11,7 +11,7 @@ constexpr std::string_view all = "gost fanuc linuxcnc";
 // What holds for every control, also when no known dialect fits (none): characters, parity, blocks, comments.
 constexpr std::string_view every = "gost fanuc linuxcnc none";
 
-constexpr std::array<Rule, 37> table = {{
+constexpr std::array<Rule, 39> table = {{
     // The loader: how characters become programs, blocks and words.
     {"unexpected-character", E, every, "ГОСТ 20999-83 tables 1-3; ISO 646 (every control reads 7-bit code)",
      "a character, or a run of characters, that no program of the dialect may hold outside comments (when no "
@@ -60,6 +60,15 @@ constexpr std::array<Rule, 37> table = {{
     {"goto-target", E, "fanuc", "Fanuc Custom Macro B: GOTO n branches to the block with sequence number n",
      "a GOTO to a block number that no block of the same program has",
      "the controller stops with 'sequence number not found' in the middle of machining"},
+    {"block-target", E, "fanuc",
+     "Fanuc lathe: multiple repetitive cycles G70-G73 (P first, Q last block of the profile); Haas: M97 local "
+     "subprogram call",
+     "the P or Q of a lathe cycle G70-G73, or the P of Haas's M97, naming a block number no block of the program "
+     "has (M98 P names a program and M99 P a block of the caller: they are not checked)",
+     "the control stops with 'sequence number not found' when it reaches the cycle or the call"},
+    {"duplicate-target", W, "fanuc", "Fanuc: sequence number search; G70-G73 P/Q, GOTO, Haas M97 P",
+     "a block number that stands on more than one block of the program while a cycle, GOTO or M97 names it",
+     "the control goes to the one it finds first, which may not be the one the programmer meant"},
     {"repeated-dimension", E, all, "ГОСТ 20999-83 §2.4",
      "a dimension or interpolation word twice in one block (Fanuc and LinuxCNC: the axis words and I J K; "
      "their P Q R are parameters)",

@@ -84,8 +84,12 @@ void Searcher::program_start(const Program& p) {
     if (query_.kind == Kind::rewind_stop && p.percent && !at_or_after_from(p.start))
         hits_.assign(1, SearchHit{p.start, text});
     if (query_.kind == Kind::program && hits_.empty() && p.number && at_or_after_from(p.start) &&
-        program_key(*p.number) == program_key(query_.program))
-        hits_.push_back(SearchHit{p.start, text});
+        program_key(*p.number) == program_key(query_.program)) {
+        if (p.numbered_by_block)
+            number_block_ = *p.number;  // the hit is its "O1234" block, as written, where it stands
+        else
+            hits_.push_back(SearchHit{p.start, text});
+    }
 }
 
 // The '%' after the last program (Fanuc's end of record, LinuxCNC's closing '%') stops a rewind too.
@@ -96,6 +100,12 @@ void Searcher::record_end(const Location& where, bool) {
 
 void Searcher::block(const Block& b) {
     using Kind = SearchQuery::Kind;
+    if (number_block_ && std::any_of(b.words.begin(), b.words.end(), [&](const Word& w) {
+            return (w.address == 'O' || w.address == ':') && w.text == *number_block_;
+        })) {
+        hits_.push_back(SearchHit{b.where, b.text()});
+        number_block_.reset();
+    }
     bool numbered = query_.number && b.number && b.number->integer() == query_.number;
     if (query_.kind == Kind::main_block && b.main && at_or_after_from(b.where) &&
         (!query_.number || !b.number || numbered))

@@ -146,12 +146,15 @@ BlockJudge::BlockJudge(const RepairSetup& setup, std::span<const Frame> image, s
 }
 
 LoadedTape BlockJudge::load_with_context(const std::string& block_text) const {
-    return load(before_ + block_text + after_, {}, LoadOptions{s_.dialect});
+    // A piece from inside the text has no leader: what stands before a '%' in it is program text.
+    return load(before_ + block_text + after_, {}, LoadOptions{s_.dialect, false});
 }
 
-// Rules about the program as a whole (a GOTO's target, loops and o-words closed), which a block and its
+// Rules about the program as a whole (a GOTO's or cycle's target, loops and o-words closed), which a block and its
 // neighbours cannot settle.
-bool whole_program_rule(std::string_view id) { return id == "goto-target" || id == "control-flow"; }
+bool whole_program_rule(std::string_view id) {
+    return id == "goto-target" || id == "block-target" || id == "duplicate-target" || id == "control-flow";
+}
 
 // The error findings of the snippet (context, block, context) by key, from the block's first line on.
 std::map<std::string, int> BlockJudge::error_keys(const LoadedTape& t) const {

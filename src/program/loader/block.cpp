@@ -77,10 +77,15 @@ Word& Loader::next_word() {
 std::size_t Loader::block(std::size_t i, std::size_t e) {
     std::size_t end = block_end(i, e), start_at = i;
     i = block_head(i, end);
-    // A comment whose '(' was lost reads as words up to its ')': one finding for all of it.
-    if (std::size_t close = stray_close(i, end); close != std::string_view::npos)
+    // A comment whose '(' was lost reads as words up to its ')': one finding for all of it. Where no
+    // dialect fits, ( ) may be no comment at all (Heidenhain's is ';'): nothing to say of a ')'.
+    if (std::size_t close = stray_close(i, end); close != std::string_view::npos && rules_->dialect != Dialect::none)
         i = flagged(skip_blanks(i, end), end, close + 1,
                     "is taken as a comment whose '(' is missing: ')' closes no comment", "unexpected-character");
+    if (i < end && after_semicolon(start_at) && is_letter(text_[i]) && i + 1 < end && is_letter(text_[i + 1]) &&
+        !listed(macro::name_at(text_, i), macro_keywords))  // words after ';' on its line: a remark, one finding
+        i = flagged(i, end, end,
+                    "is text after ';', which ends the block: it reads as no block (a remark stands in ( ))");
     while ((i = skip_blanks(i, end)) < end) i = block_item(i, end);
     Block& blk = blk_;
     blk.words.resize(words_used_);
@@ -94,6 +99,12 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
     v_.block(blk);
     if (blk.ends) state_ = State::after_end;
     return end < e ? end + 1 : e;
+}
+
+// The block at i follows a ';' that ended the one before it on the same line (Fanuc).
+bool Loader::after_semicolon(std::size_t i) const {
+    while (i > line_start_ && is_blank(text_[i - 1])) --i;
+    return i > line_start_ && text_[i - 1] == ';';
 }
 
 // A block no program goes on after, though it holds no end code: Fanuc's #3000 alarm, LinuxCNC's
@@ -149,6 +160,12 @@ std::size_t Loader::block_item(std::size_t i, std::size_t end) {
                        "is a GRBL console command, not G-code: GRBL runs it when the file is streamed, LinuxCNC "
                        "stops on it",
                        "console-command");
+    if (std::size_t k = skip_blanks(i + 1, end); c == ';' && !rules_->semicolon_comment &&
+                                                 !rules_->semicolon_ends_block && k + 1 < end && is_letter(text_[k]) &&
+                                                 is_letter(text_[k + 1]))
+        return flagged(i, end, end,
+                       "is a ';' comment, which ГОСТ 20999-83 programs do not have: a comment stands in ( ) (§1.5)",
+                       "unexpected-character");
     if (c == ';' && rules_->semicolon_comment) {
         if (comments_used_ == blk_.comments.size()) blk_.comments.emplace_back();
         Comment& k = blk_.comments[comments_used_++];
@@ -165,10 +182,11 @@ std::size_t Loader::block_item(std::size_t i, std::size_t end) {
     if (rules_->o_words && (c == 'o' || c == 'O') && i + 1 < end && (is_digit(text_[i + 1]) || text_[i + 1] == '<'))
         return o_word(i, end);
     if (is_letter(c) && i + 1 < end && is_letter(text_[i + 1])) return letters(i, end);
-    if (c == ',' && rules_->corner_words && i + 1 < end && (text_[i + 1] == 'C' || text_[i + 1] == 'R')) {
-        Word& w = next_word();  // ",C1." chamfer, ",R2." corner: a word of its own, not the C axis or R
+    if (std::size_t k = skip_blanks(i + 1, end);
+        c == ',' && rules_->corner_words && k < end && (text_[k] == 'C' || text_[k] == 'R')) {
+        Word& w = next_word();  // ",C1." chamfer, ",R2." corner (", R 15." as typed): a word of its own
         Location comma = at(i);
-        word(i + 1, end, &i, blk_.ordinal, w);
+        word(k, end, &i, blk_.ordinal, w);
         w.text.insert(0, 1, ',');
         w.address = ',';
         w.where = comma;

@@ -12,7 +12,8 @@ namespace tape {
 
 using namespace loading;
 
-Loader::Loader(ProgramVisitor& visitor, const LoadOptions& options) : v_(visitor), options_(options) {
+Loader::Loader(ProgramVisitor& visitor, const LoadOptions& options)
+    : v_(visitor), options_(options), leader_open_(options.leader) {
     if (options_.dialect != Dialect::automatic) choose(DialectChoice{options_.dialect, ""});
 }
 
@@ -21,7 +22,7 @@ void Loader::choose(DialectChoice choice) {
     linuxcnc_ = choice.dialect == Dialect::linuxcnc;
     if (choice.close) {
         second_found_ = std::make_unique<SecondFindings>();
-        second_ = std::make_unique<Loader>(*second_found_, LoadOptions{*choice.close});
+        second_ = std::make_unique<Loader>(*second_found_, LoadOptions{*choice.close, options_.leader});
     }
     v_.dialect(choice);
 }
@@ -43,7 +44,8 @@ void Loader::feed(std::string_view text, std::span<const std::uint64_t> frame_of
     }
     sniff_ += text;
     sniff_frames_.insert(sniff_frames_.end(), frame_of.begin(), frame_of.end());
-    if (sniff_.size() < dialect_sample_bytes) return;
+    // Exactly dialect_sample_bytes may end inside a line: its end is known only with the next byte.
+    if (sniff_.size() <= dialect_sample_bytes) return;
     choose(guess_dialect(sniff_));
     feed_lines(sniff_, sniff_frames_.size() == sniff_.size() ? std::span<const std::uint64_t>(sniff_frames_)
                                                              : std::span<const std::uint64_t>());
@@ -83,11 +85,12 @@ void Loader::finish() {
                                                       : std::span<const std::uint64_t>());
     }
     if (second_) second_->finish();
-    bool cut_in_block = false;
-    if (!pending_.empty()) {
-        run(pending_, pending_frames_);
-        cut_in_block = last_line_was_block_ && !pending_frames_.empty();
-    }
+    if (!pending_.empty()) run(pending_, pending_frames_);
+    // No '%' came: what was held before it is the program (a program that needs no '%'), and the
+    // comments held after a last '%' start its program.
+    if (state_ == State::label && !held_.empty()) release_leader(true);
+    if (state_ == State::pending && !held_.empty()) start_pending();
+    bool cut_in_block = !pending_.empty() && last_line_was_block_ && !pending_frames_.empty();
     pending_.clear();
     pending_frames_.clear();
     if (state_ == State::pending) close_pending_empty();

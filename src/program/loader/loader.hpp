@@ -55,6 +55,13 @@ private:
 
     void line(std::size_t b, std::size_t e, bool has_lf);
     void label_line(std::size_t b, std::size_t first, std::size_t e, std::string_view whole);
+    bool comment_only(std::size_t i, std::size_t e) const;
+    void hold(std::size_t b, std::string_view whole);
+    bool held_ends_program() const;
+    void release_leader(bool as_program);
+    void start_pending();
+    bool header_comment(std::size_t b, std::size_t first, std::size_t e, std::string_view whole);
+    void replay_held();
     void after_end_line(std::size_t b, bool blank, std::string_view whole);
     void percent_line(std::size_t b, std::size_t pct, std::size_t e);
     void open_pending(std::size_t pct, std::size_t e, bool from_label);
@@ -69,6 +76,7 @@ private:
     std::size_t block(std::size_t i, std::size_t e);
     std::size_t block_head(std::size_t i, std::size_t end);
     bool stops_program(const Block& b) const;
+    bool after_semicolon(std::size_t i) const;
     std::size_t block_item(std::size_t i, std::size_t end);
     std::size_t letters(std::size_t i, std::size_t end);
     std::size_t block_end(std::size_t i, std::size_t e) const;
@@ -131,6 +139,13 @@ private:
     bool last_block_stops_ = false;   // the last block stops the program without an end code
     bool local_subprograms_ = false;  // Haas: the program calls blocks after its M30 (M97 P)
     Program pending_header_;          // a '%' whose program starts with its first block
+    // Lines held back until what they are is known (at most dialect_sample_bytes): where the dialect
+    // needs no '%', the text before the first '%' (label, or the program a closing '%' ends), and the
+    // comment lines between a '%' and the O number of its program.
+    std::string held_;
+    std::vector<std::uint64_t> held_frames_;
+    std::uint64_t held_base_ = 0, held_line_ = 0;  // the offset of its first line, and the line before it
+    bool leader_open_ = true;                      // the text before the first '%' may still be label
     bool pending_from_label_ = false;
     Location program_start_, last_block_where_;
     std::uint64_t last_block_ordinal_ = 0;

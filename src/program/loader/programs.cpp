@@ -1,5 +1,6 @@
 // The loader's second stage: lines become the label, programs (started by '%', an O number, or their
 // first block), the text after a program's end, and the end of the record (ГОСТ 20999-83 §1.4-§1.9).
+#include <tuple>
 #include <utility>
 
 #include "program/loader/loader.hpp"
@@ -17,7 +18,9 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
         label_line(b, first, e, whole);
         return;
     }
+    if (state_ == State::pending && header_comment(b, first, e, whole)) return;
     if (!blank && text_[first] == '%') {
+        if (state_ == State::pending && !held_.empty()) start_pending();
         percent_line(b, first, e);
         return;
     }
@@ -30,7 +33,7 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
                 pending_header_.number = program_number(first, e);
                 pending_header_.numbered_by_block = true;
             }
-            start(std::move(pending_header_));
+            start_pending();
             blocks_in_line(first, e);
             return;
         case State::after_end:
@@ -60,13 +63,20 @@ void Loader::line(std::size_t b, std::size_t e, bool has_lf) {
     }
 }
 
-// Before the first program: label, a '%', or (where the dialect needs no '%') the program itself.
+// Before the first program: label, a '%', or (where the dialect needs no '%') the program itself. Where
+// it needs none, the lines before the first '%' are held until it comes: label (a comment, a part name,
+// set-up notes) unless they end a program, which that '%' then closes (LinuxCNC's closing '%').
 void Loader::label_line(std::size_t b, std::size_t first, std::size_t e, std::string_view whole) {
     bool blank = first >= e;
     auto pct = rules_->needs_percent ? text_.find('%', b) : (blank || text_[first] != '%' ? e : first);
     if (pct != std::string_view::npos && pct < e) {
-        if (pct > b) v_.label(text_.substr(b, pct - b));
+        if (!held_.empty()) release_leader(held_ends_program());
+        leader_open_ = false;
+        if (state_ == State::label && pct > b) v_.label(text_.substr(b, pct - b));
         percent_line(b, pct, e);
+    } else if (leader_open_ && !rules_->needs_percent) {
+        hold(b, whole);
+        if (held_.size() >= dialect_sample_bytes) release_leader(true);  // too long for a label: the program
     } else if (rules_->needs_percent || blank) {
         v_.label(whole);
     } else if (program_number_at(first, e)) {
@@ -79,6 +89,85 @@ void Loader::label_line(std::size_t b, std::size_t first, std::size_t e, std::st
         start(std::move(p));
         blocks_in_line(first, e);
     }
+}
+
+// Fanuc: comment lines between a '%' and the O number are held, so that the O number still names the
+// program they stand in (and no program of comments alone is made before it).
+bool Loader::header_comment(std::size_t b, std::size_t first, std::size_t e, std::string_view whole) {
+    if (!rules_->o_program_number || pending_header_.number || held_.size() >= dialect_sample_bytes) return false;
+    if (first >= e ? held_.empty() : !comment_only(first, e)) return false;
+    hold(b, whole);
+    return true;
+}
+
+// Nothing but comments (and Fanuc's ';') from i to e.
+bool Loader::comment_only(std::size_t i, std::size_t e) const {
+    while ((i = skip_blanks(i, e)) < e) {
+        if (text_[i] == ';' && rules_->semicolon_comment) return true;
+        if (text_[i] == ';' && rules_->semicolon_ends_block) {
+            ++i;
+            continue;
+        }
+        auto close = text_.find(')', i);
+        if (text_[i] != '(' || close == std::string_view::npos || close >= e) return false;
+        i = close + 1;
+    }
+    return true;
+}
+
+void Loader::hold(std::size_t b, std::string_view whole) {
+    if (held_.empty()) {
+        held_base_ = base_ + b;
+        held_line_ = line_no_ - 1;
+    }
+    held_ += whole;
+    if (!frame_of_.empty()) {
+        auto from = frame_of_.begin() + static_cast<std::ptrdiff_t>(b);
+        held_frames_.insert(held_frames_.end(), from, from + static_cast<std::ptrdiff_t>(whole.size()));
+    }
+}
+
+// The held text before the first '%' read on its own: does a block in it end a program?
+bool Loader::held_ends_program() const {
+    struct Ends : ProgramVisitor {
+        bool ended = false;
+        void block(const Block& b) override { ended |= b.ends; }
+    } seen;
+    Loader trial(seen, LoadOptions{rules_->dialect, false});
+    trial.feed(held_, {});
+    trial.finish();
+    return seen.ended;
+}
+
+// The held text before the first '%' is label, or is read as the program it is.
+void Loader::release_leader(bool as_program) {
+    leader_open_ = false;
+    if (as_program) {
+        replay_held();
+        return;
+    }
+    v_.label(held_);
+    held_.clear();
+    held_frames_.clear();
+}
+
+// The program a '%' opened starts, with the comment lines held after the '%'.
+void Loader::start_pending() {
+    start(std::move(pending_header_));
+    if (!held_.empty()) replay_held();
+}
+
+// Loads the held lines at their own places in the text, then goes on where it was.
+void Loader::replay_held() {
+    std::string held = std::move(held_);
+    std::vector<std::uint64_t> frames = std::move(held_frames_);
+    held_.clear();
+    held_frames_.clear();
+    auto saved = std::tuple(text_, frame_of_, base_, line_no_, line_start_, line_ascii_, column_offset_, column_);
+    base_ = held_base_;
+    line_no_ = held_line_;
+    run(held, frames);
+    std::tie(text_, frame_of_, base_, line_no_, line_start_, line_ascii_, column_offset_, column_) = saved;
 }
 
 // Text after a program's end or the end of the record: blank lines count once text has come.

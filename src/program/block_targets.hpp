@@ -1,0 +1,47 @@
+// The blocks a Fanuc or Haas program names by number: GOTO n (Custom Macro B), the P and Q of the lathe
+// cycles G70-G73 (the first and last block of the profile they cut), and Haas's M97 P (a local
+// subprogram: a block of the same program). Checked at the program's end: a target no block has, and
+// a target whose number stands on more than one block. M98 P names a program and M99 P a block of the
+// caller: neither is in the program, so neither is checked.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "tape/program.hpp"
+
+namespace tape::lint_detail {
+
+class BlockTargets {
+public:
+    /// The block's number, and the targets it names.
+    void block(const Block& b);
+    /// The program has ended: its targets' findings, then everything forgotten.
+    void close(const std::function<void(Finding)>& out);
+
+private:
+    struct Numbered {  // a block number: how often it stands, and where its first few stand
+        std::uint64_t count = 0;
+        std::vector<Location> where;
+        std::uint64_t second_block = 0;  // the block it stands on the second time
+    };
+    struct Target {
+        std::string_view rule;  // goto-target or block-target, when no block has it
+        std::string named_by;   // "GOTO 10", "G71 Q58", "M97 P15"
+        long long number;
+        Location where;
+        std::uint64_t block;
+    };
+    void cycle_targets(const Block& b);
+    void missing(const Target& t, const std::function<void(Finding)>& out) const;
+    void repeated(const Target& t, const Numbered& n, const std::function<void(Finding)>& out) const;
+
+    std::unordered_map<long long, Numbered> numbers_;
+    std::vector<Target> targets_;
+};
+
+}  // namespace tape::lint_detail
