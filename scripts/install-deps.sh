@@ -46,6 +46,7 @@ test=(
   dpkg-dev
   file
   man-db
+  xxd
 )
 firmware=(
   gcc-arm-none-eabi
