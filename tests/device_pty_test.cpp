@@ -229,20 +229,23 @@ TEST(DevicePty, ReaderKeepsEveryFrameWhenTheOtherSideCloses) {
     auto line = open_device(pty.device("baud=9600&flow=none"), DeviceUse::read);
     pty.release_slave();
     std::vector<Frame> kept;
+    std::atomic<std::size_t> taken{0};
     ReceiveResult result;
     Worker reader(
         [&] {
             result = receive_frames(*line, ReceiveOptions{.idle_timeout = 5s, .sink = [&](std::span<const Frame> f) {
                                                               kept.insert(kept.end(), f.begin(), f.end());
+                                                              taken += f.size();
                                                           }});
         },
         [&] { pty.close_master(); });
     for (std::size_t i = 0; i < frames.size(); i += 97) {
         std::size_t n = std::min<std::size_t>(97, frames.size() - i);
         ASSERT_EQ(::write(pty.master, frames.data() + i, n), static_cast<ssize_t>(n));
-        std::this_thread::sleep_for(2ms);
+        std::this_thread::sleep_for(2ms);  // in pieces, as a line brings them
     }
-    std::this_thread::sleep_for(100ms);  // let the reader take the last bytes before the line goes
+    // The line goes once the reader has taken the last bytes: a hang-up drops what it has not read.
+    EXPECT_TRUE(eventually([&] { return taken == frames.size(); })) << taken << " of " << frames.size();
     pty.close_master();
     EXPECT_TRUE(reader.join());
     EXPECT_EQ(kept, frames);
@@ -265,16 +268,18 @@ TEST(DevicePty, StoppedReceiverSendsDc3AndStillTakesTheLastCharacters) {
     auto line = open_device(pty.device(), DeviceUse::read);
     std::atomic<bool> stop{false};
     std::vector<Frame> kept;
+    std::atomic<std::size_t> taken{0};
     Worker receiver(
         [&] {
             receive_frames(*line, ReceiveOptions{.stop = &stop, .sink = [&](std::span<const Frame> f) {
                                                      kept.insert(kept.end(), f.begin(), f.end());
+                                                     taken += f.size();
                                                  }});
         },
         [&] { stop = true; });
     std::vector<std::uint8_t> first(50, 0xA5);
     ASSERT_EQ(::write(pty.master, first.data(), first.size()), 50);
-    std::this_thread::sleep_for(100ms);
+    ASSERT_TRUE(eventually([&] { return taken == 50; })) << taken;  // stopped while running
     stop = true;
     std::vector<std::uint8_t> answer;
     pty.receive(answer, 1000ms);
@@ -495,17 +500,19 @@ TEST(DevicePty, StoppedReceiverDropsFlowCodesInTheGracePeriod) {
     auto line = open_device(pty.device(), DeviceUse::read);
     std::atomic<bool> stop{false};
     std::vector<Frame> kept;
+    std::atomic<std::size_t> taken{0};
     Worker receiver(
         [&] {
             receive_frames(
                 *line, ReceiveOptions{.drop_flow_codes = true, .stop = &stop, .sink = [&](std::span<const Frame> f) {
                                           kept.insert(kept.end(), f.begin(), f.end());
+                                          taken += f.size();
                                       }});
         },
         [&] { stop = true; });
     std::vector<std::uint8_t> first = {dc2, 0xA5, 0x0A};
     ASSERT_EQ(::write(pty.master, first.data(), first.size()), 3);
-    std::this_thread::sleep_for(100ms);
+    ASSERT_TRUE(eventually([&] { return taken == 2; })) << taken;  // DC2 dropped, both frames taken while running
     stop = true;
     std::vector<std::uint8_t> answer;
     pty.receive(answer, 1000ms);
