@@ -50,6 +50,7 @@ test=(
   dpkg-dev
   file
   xxd
+  stress-ng
 )
 firmware=(
   gcc-arm-none-eabi
