@@ -113,4 +113,70 @@ void Board::print_stats() const {
     if (hw_.control()) std::cerr << hw_.control()->stats_json() << "\n";
 }
 
+std::uint64_t Board::virtual_now() const {
+    double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() * a_.speed;
+    return static_cast<std::uint64_t>(s * 1e6);
+}
+
+void Board::take_input() {
+    std::uint8_t buf[4096];
+    ssize_t n = ::read(fd_, buf, sizeof buf);
+    if (n > 0) engine_.receive(buf, static_cast<std::size_t>(n));
+}
+
+// The chad box fills at an exact row: looked at after each turn, which punches one row at most.
+void Board::turn() {
+    engine_.poll();
+    hw_.after_poll();
+    if (a_.chad_full_after && hw_.punched().size() >= a_.chad_full_after)
+        hw_.forced_status |= tapefw::status::chad_full;
+}
+
+// The simulated clock brought up to real time. The engine polls between rows, as the firmware's main
+// loop does: rows are given in small steps. After the process was not scheduled, the host's packets
+// that came meanwhile are taken step by step, as the board's USB interrupt would take them, so that
+// the watchdog does not count the simulator's own pause as the host's silence.
+void Board::catch_up() {
+    const std::uint64_t step = static_cast<std::uint64_t>(16e6 / a_.read_rate);
+    std::uint64_t target = virtual_now();
+    while (hw_.now() < target) {
+        take_input();
+        hw_.advance_to(std::min(target, hw_.now() + step), engine_);
+        turn();
+    }
+    turn();
+}
+
+void Board::write_punched(std::FILE* to) {
+    if (hw_.punched().size() <= punched_written_) return;
+    std::fwrite(hw_.punched().data() + punched_written_, 1, hw_.punched().size() - punched_written_, to);
+    std::fflush(to);
+    punched_written_ = hw_.punched().size();
+}
+
+void Board::write_taken(std::FILE* to) {
+    const auto& taken = hw_.control()->taken();
+    if (taken.size() <= taken_written_) return;
+    std::fwrite(taken.data() + taken_written_, 1, taken.size() - taken_written_, to);
+    std::fflush(to);
+    taken_written_ = taken.size();
+}
+
+void Board::send_to_host() {
+    while (!out_.empty()) {
+        ssize_t n = ::write(fd_, out_.data(), out_.size());
+        if (n <= 0) break;
+        out_.erase(0, static_cast<std::size_t>(n));
+    }
+}
+
+// Until the next simulated event, 5 ms at most, or the host's next packet.
+void Board::wait_for_host() {
+    std::uint64_t next = hw_.next_event();
+    std::uint64_t now = virtual_now();
+    int wait_ms = next > now ? static_cast<int>(std::min<double>(5, (next - now) / 1000.0 / a_.speed)) : 0;
+    pollfd p{fd_, static_cast<short>(POLLIN | (out_.empty() ? 0 : POLLOUT)), 0};
+    if (::poll(&p, 1, wait_ms) > 0 && (p.revents & POLLIN)) take_input();
+}
+
 }  // namespace tapesim

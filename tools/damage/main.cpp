@@ -84,8 +84,8 @@ void run(const DamageArgs& a) {
         fail("", e);
     }
     cli::check_outputs({{"-o", a.output}, {"--log", a.log}});
-    refuse_existing(a.output, a.force);
-    refuse_existing(a.log, a.force);
+    cli::refuse_existing(a.output, a.force);
+    cli::refuse_existing(a.log, a.force);
     cli::TapeInput in = cli::read_tape(a.input, a.format);
     options.tracks = in.format->tracks;
     tape::DamageLog log;
