@@ -8,8 +8,8 @@
 #           line (pseudo-terminals, tape emulate/read/receive/feed/punch, the DNC service)
 #   all     the whole suite
 #   -n 20   runs   -j 2 ctest's parallel jobs   -c 2 stress-ng CPU workers   -t build  the build tree
-# CI runs it on the device tests (20 runs, a few minutes); the whole suite five times takes an hour on two
-# cores: `bash scripts/stress-tests.sh -n 5 -j 4 all` (README, Tests).
+# Not part of every CI run (.ci/run): 20 runs of the device tests take some 20 min on two loaded cores, the
+# whole suite five times about an hour (`bash scripts/stress-tests.sh -n 5 -j 4 all`).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 runs=20 jobs=2 hog=2 tree=build
