@@ -9,10 +9,12 @@
 #   firmware  the Cortex-M0+ cross toolchain (scripts/firmware-build.sh)
 #   all       all of these
 #
-# Where a new package goes: `run` when the CLI cannot be built without it; `features` when only one
-# optional feature uses it, and CMake builds that feature only when the library is found, the command
-# answering "built without LIBRARY" otherwise (so the demo stays small); `test` when only tests, the
-# sanitizers, the fuzzers or the package checks use it. One package a line.
+# Where a new package goes: `run` when the CLI cannot be built or used without it (man-db for `man tape`,
+# bash-completion to load its completion); `features` when only one optional feature uses it, and CMake
+# builds that feature only when the library is found, the command answering "built without LIBRARY"
+# otherwise (so the demo stays small); `test` when only tests, the sanitizers, the fuzzers or the package
+# checks use it. One package a line. Every program a test or script calls comes from one of these or from
+# a fresh Debian (tests/deps/programs_packaged.py checks it).
 set -euo pipefail
 
 run=(
@@ -24,6 +26,8 @@ run=(
   nlohmann-json3-dev
   libusb-1.0-0-dev
   libhidapi-dev
+  man-db
+  bash-completion
 )
 features=(
   libtomlplusplus-dev
@@ -45,7 +49,8 @@ test=(
   clang-format-14
   dpkg-dev
   file
-  man-db
+  xxd
+  stress-ng
 )
 firmware=(
   gcc-arm-none-eabi

@@ -94,7 +94,7 @@ TEST(DncService, HangUpMidPunchOutKeptAsFailed) {
     run.write_config();
     ASSERT_TRUE(run.start()) << run.log();
     run.controls[0]->punch("%\nO55\nN10 G00 X1\nN20 G01");
-    std::this_thread::sleep_for(300ms);
+    ASSERT_NE(run.wait_received("%\nO55\nN10 G00 X1\nN20 G01", 5s), "") << run.log();  // all taken, then the hang-up
     run.controls[0]->pty.close_master();
     ASSERT_TRUE(run.wait_log("hung up", 5s)) << run.log();
     auto files = run.received_files();
@@ -228,8 +228,8 @@ TEST(DncService, SigtermEndsSoonKeepingPartialPunchOutsAsFailed) {
     ASSERT_TRUE(run.start()) << run.log();
     run.controls[0]->punch("%\nO10\nN10 G00");
     run.controls[1]->punch("%\nO11\nN10 X");
-    ASSERT_TRUE(run.wait_log("", 1s));
-    std::this_thread::sleep_for(300ms);
+    ASSERT_NE(run.wait_received("%\nO10\nN10 G00", 5s), "") << run.log();
+    ASSERT_NE(run.wait_received("%\nO11\nN10 X", 5s), "") << run.log();
     auto asked = std::chrono::steady_clock::now();
     run.service->signal(SIGTERM);
     EXPECT_EQ(run.service->wait(5s), 0);
@@ -250,12 +250,7 @@ TEST(DncService, SigkillLosesNothingAlreadyReceived) {
     run.write_config();
     ASSERT_TRUE(run.start()) << run.log();
     run.controls[0]->punch("%\nO12\nN10 G00 X1\nN20 Y");
-    std::string path;
-    for (auto end = std::chrono::steady_clock::now() + 5s; path.empty() && std::chrono::steady_clock::now() < end;) {
-        for (const auto& f : run.received_files())
-            if (read_text(run.received() + "/" + f) == "%\nO12\nN10 G00 X1\nN20 Y") path = f;
-        std::this_thread::sleep_for(10ms);
-    }
+    std::string path = run.wait_received("%\nO12\nN10 G00 X1\nN20 Y", 5s);
     ASSERT_FALSE(path.empty()) << "the punch-out is on disk as it arrives";
     run.service->signal(SIGKILL);
     run.service->wait(5s);

@@ -97,6 +97,19 @@ struct DncRun {
         }
         return false;
     }
+    /// The name of the file in received/ that came to hold text within limit ("" if none did): what a
+    /// control punched is on disk as it arrives.
+    std::string wait_received(const std::string& text, std::chrono::milliseconds limit) const {
+        std::string name;
+        eventually(
+            [&] {
+                for (const auto& f : received_files())
+                    if (read_text(received() + "/" + f) == text) name = f;
+                return !name.empty();
+            },
+            limit);
+        return name;
+    }
     std::vector<std::string> received_files() const {
         std::vector<std::string> names;
         for (const auto& e : std::filesystem::directory_iterator(received())) names.push_back(e.path().filename());

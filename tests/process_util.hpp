@@ -36,6 +36,10 @@ public:
         return WIFEXITED(*status) ? WEXITSTATUS(*status) : 128 + WTERMSIG(*status);
     }
     std::string err() const { return read_text(dir_.file("stderr")); }
+    /// Whether stderr came to hold text within timeout: what the program says when it gets somewhere.
+    bool wait_for_err(const std::string& text, std::chrono::milliseconds timeout = std::chrono::seconds(10)) const {
+        return eventually([&] { return err().find(text) != std::string::npos; }, timeout);
+    }
 
 private:
     const TempDir& dir_;

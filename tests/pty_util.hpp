@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <pty.h>
+#include <sys/inotify.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -26,6 +27,7 @@ struct Pty {
     int master = -1;
     std::string slave_path;
     int slave_keep = -1;  // held open so the slave side exists until the code under test opens it
+    int open_watch = -1;  // inotify: the slave opened by anyone but us (the code under test)
     std::string error;    // why there is none, when openpty failed
 
     Pty() {
@@ -45,10 +47,17 @@ struct Pty {
         // Spawned processes must not inherit our ends: a hang-up is the last close of the master.
         ::fcntl(master, F_SETFD, FD_CLOEXEC);
         ::fcntl(slave, F_SETFD, FD_CLOEXEC);
+        // Watched from now on, before the code under test starts: our own open came before.
+        open_watch = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+        if (open_watch >= 0 && ::inotify_add_watch(open_watch, name, IN_OPEN) < 0) {
+            ::close(open_watch);
+            open_watch = -1;
+        }
     }
     ~Pty() {
         close_master();
         if (slave_keep >= 0) ::close(slave_keep);
+        if (open_watch >= 0) ::close(open_watch);
     }
     Pty(const Pty&) = delete;
     Pty& operator=(const Pty&) = delete;
@@ -61,6 +70,20 @@ struct Pty {
     void close_master() {
         if (master >= 0) ::close(master);
         master = -1;
+    }
+    /// Whether the code under test opened the slave within timeout. A test that hangs up must wait for
+    /// this: hung up before, the line is gone (or its number taken by another test's pseudo-terminal).
+    bool wait_opened(std::chrono::milliseconds timeout = std::chrono::seconds(10)) const {
+        if (open_watch < 0) return false;
+        auto end = std::chrono::steady_clock::now() + timeout;
+        for (;;) {
+            alignas(inotify_event) char buf[sizeof(inotify_event) + 256];
+            if (::read(open_watch, buf, sizeof buf) > 0) return true;  // IN_OPEN is the only event watched
+            auto left = std::chrono::duration_cast<std::chrono::milliseconds>(end - std::chrono::steady_clock::now());
+            if (left.count() <= 0) return false;
+            pollfd p{open_watch, POLLIN, 0};
+            ::poll(&p, 1, static_cast<int>(left.count()) + 1);
+        }
     }
     std::string device(const std::string& settings = "baud=115200&flow=xonxoff") const {
         return "serial:" + slave_path + "?" + settings;

@@ -3,10 +3,12 @@
 
 #include <stdlib.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tape/frame.hpp"
@@ -23,6 +25,18 @@ struct TempDir {
     TempDir& operator=(const TempDir&) = delete;
     std::string file(const std::string& name) const { return path + "/" + name; }
 };
+
+/// Whether pred() came true within timeout, looked at every few milliseconds: a test waits for what it
+/// expects to happen, with a deadline, never for a fixed time that a loaded machine overruns.
+template <class Pred>
+bool eventually(Pred pred, std::chrono::milliseconds timeout = std::chrono::seconds(10)) {
+    auto end = std::chrono::steady_clock::now() + timeout;
+    while (!pred()) {
+        if (std::chrono::steady_clock::now() >= end) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return true;
+}
 
 inline std::string sample_path(const std::string& name) { return std::string(TAPE_SOURCE_DIR) + "/tapes/" + name; }
 

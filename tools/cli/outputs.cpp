@@ -1,5 +1,6 @@
 #include "cli/outputs.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <iostream>
@@ -36,10 +37,22 @@ void refuse_binary_terminal(const std::string& path, bool binary, bool force) {
              "refusing to write a binary tape image to a terminal (use -o FILE, --format holes, or --force)");
 }
 
+bool written_into(const std::string& path) {
+    struct stat st {};
+    return !path.empty() && path != "-" && ::stat(path.c_str(), &st) == 0 &&
+           (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode));
+}
+
+void refuse_existing(const std::string& path, bool force) {
+    struct stat st {};
+    if (force || path.empty() || path == "-" || ::lstat(path.c_str(), &st) != 0 || written_into(path)) return;
+    fail(path, tape::Error(tape::Errc::exists, "already exists", tape::Hint{tape::Hint::Action::replace_output}));
+}
+
 std::unique_ptr<tape::OutputFile> open_output(const std::string& path, bool force) {
     claim_output(path);
     try {
-        return std::make_unique<tape::OutputFile>(path, force);
+        return std::make_unique<tape::OutputFile>(path, force || written_into(path));
     } catch (const tape::Error& e) {
         fail(path.empty() || path == "-" ? "stdout" : path, e);
     }
@@ -55,7 +68,7 @@ void write_output(const std::string& path, const std::string& data, bool binary,
         return;
     }
     try {
-        tape::write_file_atomic(path, data, force);
+        tape::write_file_atomic(path, data, force || written_into(path));
     } catch (const tape::Error& e) {
         fail(path, e);
     }

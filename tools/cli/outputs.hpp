@@ -22,6 +22,14 @@ std::string image_text(const tape::ImageFormat& format, std::span<const tape::Fr
 /// Fails (usage) when a binary image would go to standard output on a terminal without --force.
 void refuse_binary_terminal(const std::string& path, bool binary, bool force);
 
+/// Whether OUT is written into as it is, never replaced: a character device (/dev/null, a terminal) or a
+/// FIFO. Such an output is no file that needs --force to be written.
+bool written_into(const std::string& path);
+
+/// Fails (exists, exit 2) when OUT is a file that exists and force is not given: called for every output of
+/// a run before the first is written, so that a refusal leaves nothing half done.
+void refuse_existing(const std::string& path, bool force);
+
 /// OUT ("-" or empty = stdout) opened to be written as it comes and made final by commit(), after the
 /// checks every output gets (not an input or another output of the run; not replaced without force).
 /// Failure ends the program naming OUT.

@@ -74,13 +74,6 @@ std::string log_lines(const tape::DamageLog& log) {
     return out;
 }
 
-// Both outputs are checked before either is written, so that a refusal leaves nothing half done.
-void refuse_existing(const std::string& path, bool force) {
-    struct stat st {};
-    if (force || path.empty() || path == "-" || ::lstat(path.c_str(), &st) != 0) return;
-    fail(path, tape::Error(tape::Errc::exists, "already exists", tape::Hint{tape::Hint::Action::replace_output}));
-}
-
 void run(const DamageArgs& a) {
     if (a.output == "-" && a.log == "-") fail("", tape::Errc::usage, "-o and --log cannot both be standard output");
     const tape::ImageFormat& format = cli::output_format(a.format, a.output);
@@ -91,8 +84,8 @@ void run(const DamageArgs& a) {
         fail("", e);
     }
     cli::check_outputs({{"-o", a.output}, {"--log", a.log}});
-    refuse_existing(a.output, a.force);
-    refuse_existing(a.log, a.force);
+    cli::refuse_existing(a.output, a.force);
+    cli::refuse_existing(a.log, a.force);
     cli::TapeInput in = cli::read_tape(a.input, a.format);
     options.tracks = in.format->tracks;
     tape::DamageLog log;

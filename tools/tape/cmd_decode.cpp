@@ -37,7 +37,7 @@ bool say_decoded(const std::string& name, const tape::Diagnostic& d, bool raw, b
 // OUT, claimed by run() before the tape was read.
 std::unique_ptr<tape::OutputFile> open_output_or_fail(const std::string& path, bool force) {
     try {
-        return std::make_unique<tape::OutputFile>(path, force);
+        return std::make_unique<tape::OutputFile>(path, force || written_into(path));
     } catch (const tape::Error& e) {
         fail(path, e);
     }

@@ -65,6 +65,12 @@ void keep_freed_memory() {
 void run(const RestoreArgs& a) {
     keep_freed_memory();
     check_outputs({{"-o", a.output}, {"--report", a.report}, {"--html", a.html}});
+    // Every output is looked at before the reads are, and before anything is written: a refusal after the
+    // image was written would leave a run half done.
+    std::string doubts_file = tape::doubts_file_for(a.output);
+    bool doubts = a.output != "-" && !a.no_doubts_file && a.report != doubts_file;
+    for (const std::string& out : {a.output, doubts ? doubts_file : "", a.report, a.html})
+        refuse_existing(out, a.force);
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     const tape::ImageFormat& out_format = output_format(a.format, a.output);
@@ -90,9 +96,7 @@ void run(const RestoreArgs& a) {
     }
     report.image_name = a.output;
     write_output(a.output, report.image_bytes, out_format.binary, a.force);
-    std::string doubts_file = tape::doubts_file_for(a.output);
-    if (a.output != "-" && !a.no_doubts_file && a.report != doubts_file)
-        write_output(doubts_file, restore_report_json(report), false, a.force);
+    if (doubts) write_output(doubts_file, restore_report_json(report), false, a.force);
     std::string text = a.json ? restore_report_json(report) : restore_report_text(report);
     write_output(a.report.empty() ? "-" : a.report, text, false, a.force);
     if (!a.html.empty()) write_output(a.html, restore_report_html(report), false, a.force);

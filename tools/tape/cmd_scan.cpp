@@ -34,12 +34,6 @@ void write_report(const ScanArgs& a, const std::string& text) {
     write_output("-", text, false, a.force);
 }
 
-// An output that exists is refused before the pictures are read, not after.
-void refuse_existing(const std::string& path, bool force) {
-    if (force || path.empty() || path == "-" || !tape::path_exists(path)) return;
-    fail(path, tape::Error(tape::Errc::exists, "already exists", tape::Hint{tape::Hint::Action::replace_output}));
-}
-
 void run(const ScanArgs& a) {
     if (!tape::scan_available()) fail("", tape::Errc::io, std::string(tape::scan_unavailable_message()));
     check_outputs({{"-o", a.output}, {"--report", a.report}, {"--debug-svg", a.debug_svg}});

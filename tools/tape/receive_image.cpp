@@ -93,7 +93,7 @@ public:
         : line_(line), output_(output), format_(format), annotate_(annotate) {
         claim_output(output);
         try {
-            out_ = std::make_unique<tape::FrameFileWriter>(output, format, &annotate_, force);
+            out_ = std::make_unique<tape::FrameFileWriter>(output, format, &annotate_, force || written_into(output));
         } catch (const tape::Error& e) {
             fail(output, e);
         }

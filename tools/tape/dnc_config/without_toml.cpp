@@ -6,8 +6,8 @@ namespace cli {
 
 tape::dnc::ServiceConfig load_dnc_config(const std::string&) {
     throw tape::Error(tape::Errc::usage,
-                      "built without toml++: tape dnc cannot read its configuration (install libtomlplusplus-dev "
-                      "and build again)");
+                      "built without toml++: tape dnc cannot read its configuration (install libtomlplusplus-dev, "
+                      "or run scripts/install-deps.sh features, and build again)");
 }
 
 }  // namespace cli
