@@ -8,9 +8,9 @@
 #include <array>
 #include <random>
 
+#include "every_tape.hpp"
 #include "tape/code.hpp"
 #include "tape/decode.hpp"
-#include "every_tape.hpp"
 #include "test_util.hpp"
 
 namespace {

@@ -5,10 +5,10 @@
 
 #include <random>
 
+#include "every_tape.hpp"
 #include "tape/code.hpp"
 #include "tape/detect.hpp"
 #include "tape/survey.hpp"
-#include "every_tape.hpp"
 #include "test_util.hpp"
 
 namespace {
