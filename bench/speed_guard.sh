@@ -11,11 +11,11 @@
 #   tape encode, the same program              <= 3x the read  6x
 #   tape lint, a 200 000-block program         <= 0.1 s CPU    0.2 s
 #
-# Usage: bench/speed_guard.sh [TAPE]   (default build/bin/tape; RUNS=5 and TMPDIR as usual). The files
+# Usage: bench/speed_guard.sh [TAPE]   (default build/bin/tape; RUNS, 7 unless set, and TMPDIR as usual). The files
 # (about 260 MB) are made in a temporary folder, removed at the end. Needs bash, awk and dd only.
 set -euo pipefail
 tape=${1:-build/bin/tape}
-runs=${RUNS:-5}
+runs=${RUNS:-7}
 [ -x "$tape" ] || {
   echo "speed-guard: no tape program at $tape (build it first)" >&2
   exit 2

@@ -33,14 +33,12 @@ std::string lines_of(const std::vector<Location>& where, std::uint64_t count) {
 
 void BlockTargets::block(const Block& b) {
     if (b.number)
-        if (auto n = b.number->integer()) {
-            Numbered& seen = numbers_[*n];
-            if (++seen.count == 2) seen.second_block = b.ordinal;
-            if (seen.where.size() < lines_listed) seen.where.push_back(b.number->where);
-        }
+        if (auto n = b.number->integer()) numbered_.push_back({*n, b.ordinal, b.number->where});
     for (const auto& s : b.statements)
         if ((s.kind == Statement::Kind::if_goto || s.kind == Statement::Kind::go_to) && s.number)
             targets_.push_back({"goto-target", "GOTO " + std::to_string(*s.number), *s.number, s.where, b.ordinal});
+    // Both kinds of target are P words: a block without one (most) names none.
+    if (std::none_of(b.words.begin(), b.words.end(), [](const Word& w) { return w.address == 'P'; })) return;
     cycle_targets(b);
     if (code(b, 'M', {97}))
         if (const Word* p = plain(b, 'P'))
@@ -63,19 +61,28 @@ void BlockTargets::cycle_targets(const Block& b) {
     targets_.push_back({"block-target", cycle + q->text, *q->integer(), q->where, b.ordinal});
 }
 
+// The numbered blocks are sorted by number only when a target asks: most programs name none, and a
+// long one then costs a record a block, not a map's node.
 void BlockTargets::close(const std::function<void(Finding)>& out) {
-    std::vector<long long> said;  // a repeated number is said once, for the first target naming it
-    for (const auto& t : targets_) {
-        auto it = numbers_.find(t.number);
-        if (it == numbers_.end()) {
-            missing(t, out);
-        } else if (it->second.count > 1 && std::find(said.begin(), said.end(), t.number) == said.end()) {
-            said.push_back(t.number);
-            repeated(t, it->second, out);
+    if (!targets_.empty()) {
+        auto by_number = [](const NumberAt& a, const NumberAt& b) { return a.number < b.number; };
+        std::stable_sort(numbered_.begin(), numbered_.end(), by_number);  // equal numbers keep their order
+        std::vector<long long> said;  // a repeated number is said once, for the first target naming it
+        for (const auto& t : targets_) {
+            auto [first, last] =
+                std::equal_range(numbered_.begin(), numbered_.end(), NumberAt{t.number, 0, {}}, by_number);
+            if (first == last) {
+                missing(t, out);
+            } else if (last - first > 1 && std::find(said.begin(), said.end(), t.number) == said.end()) {
+                said.push_back(t.number);
+                Numbered n{static_cast<std::uint64_t>(last - first), {}, std::next(first)->block};
+                for (auto at = first; at != last && n.where.size() < lines_listed; ++at) n.where.push_back(at->where);
+                repeated(t, n, out);
+            }
         }
     }
     targets_.clear();
-    numbers_.clear();
+    numbered_.clear();
 }
 
 void BlockTargets::missing(const Target& t, const std::function<void(Finding)>& out) const {

@@ -9,7 +9,6 @@
 #include <functional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 #include "tape/program.hpp"
@@ -40,7 +39,12 @@ private:
     void missing(const Target& t, const std::function<void(Finding)>& out) const;
     void repeated(const Target& t, const Numbered& n, const std::function<void(Finding)>& out) const;
 
-    std::unordered_map<long long, Numbered> numbers_;
+    struct NumberAt {  // a numbered block: its number, its ordinal, where the number stands
+        long long number;
+        std::uint64_t block;
+        Location where;
+    };
+    std::vector<NumberAt> numbered_;
     std::vector<Target> targets_;
 };
 

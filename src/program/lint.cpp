@@ -19,6 +19,23 @@ constexpr std::string_view dimension_order = "XYZUVWPQRABC";
 constexpr std::string_view interpolation_order = "IJK";
 constexpr std::string_view unsigned_addresses = "NGFSTMEO";
 
+// A set of address letters as a table: these are asked of every word of every block.
+class Letters {
+public:
+    constexpr explicit Letters(std::string_view a, std::string_view b = "") {
+        for (char c : a) in_[static_cast<unsigned char>(c)] = true;
+        for (char c : b) in_[static_cast<unsigned char>(c)] = true;
+    }
+    constexpr bool has(char c) const { return in_[static_cast<unsigned char>(c)]; }
+
+private:
+    std::array<bool, 256> in_{};
+};
+constexpr Letters dimension_letters(dimension_order, interpolation_order);
+// Fanuc and LinuxCNC: P Q R are parameters (dwell, cycle depths, radius), not dimensions.
+constexpr Letters axis_or_center_letters("XYZUVWABCIJK"), end_point_letters("XYZUVWABC");
+constexpr Letters unsigned_letters(unsigned_addresses);
+
 // Recommended order within a block (§2.2): G, X Y Z U V W P Q R A B C, I J K, F, S, T, M.
 // Addresses whose place a controller's format decides (D E H L O N) have no rank: -1.
 int order_rank(char a) {
@@ -39,13 +56,9 @@ int order_rank(char a) {
     }
 }
 
-bool is_dimension(char a) {
-    return dimension_order.find(a) != std::string_view::npos || interpolation_order.find(a) != std::string_view::npos;
-}
-
-// Fanuc and LinuxCNC: P Q R are parameters (dwell, cycle depths, radius), not dimensions.
-bool is_axis_or_center(char a) { return std::string_view("XYZUVWABCIJK").find(a) != std::string_view::npos; }
-bool is_end_point(char a) { return std::string_view("XYZUVWABC").find(a) != std::string_view::npos; }
+bool is_dimension(char a) { return dimension_letters.has(a); }
+bool is_axis_or_center(char a) { return axis_or_center_letters.has(a); }
+bool is_end_point(char a) { return end_point_letters.has(a); }
 
 using Add = const std::function<void(Finding)>&;
 
@@ -153,7 +166,7 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
                 else if (!lathe_cycle)
                     group[g] = index_of(b, w);
             }
-        if (w.sign && unsigned_addresses.find(w.address) != std::string_view::npos)
+        if (w.sign && unsigned_letters.has(w.address))
             add(out, "sign-not-allowed", w.where, b.ordinal,
                 w.text + ": " + w.address + " words have no sign (§3.1.1, §3.3)");
         int rank = order_rank(w.address);
