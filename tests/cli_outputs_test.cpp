@@ -18,29 +18,6 @@
 
 namespace {
 
-struct Outcome {
-    int status = -1;
-    std::string out, err;
-};
-
-Outcome run(const std::string& program, const std::vector<std::string>& args, const TempDir& dir) {
-    pid_t pid = spawn_to_files(program, args, dir.file("stdout"), dir.file("stderr"));
-    EXPECT_GT(pid, 0);
-    auto status = wait_for_exit(pid, std::chrono::seconds(30));
-    Outcome r;
-    if (!status) {
-        ::kill(pid, SIGKILL);
-        ::waitpid(pid, nullptr, 0);
-    } else {
-        r.status = WIFEXITED(*status) ? WEXITSTATUS(*status) : 128 + WTERMSIG(*status);
-    }
-    r.out = read_text(dir.file("stdout"));
-    r.err = read_text(dir.file("stderr"));
-    return r;
-}
-
-Outcome tape_run(const std::vector<std::string>& args, const TempDir& dir) { return run(TAPE_BINARY, args, dir); }
-
 std::string text_program() { return sample_path("circle-examples.txt"); }
 std::string iso_tape() { return sample_path("circle-examples.iso.ptp"); }
 

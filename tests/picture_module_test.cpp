@@ -24,17 +24,6 @@ private:
     const char* name_;
 };
 
-struct Outcome {
-    int status;
-    std::string err;
-};
-
-Outcome run_tape(const std::vector<std::string>& args, const TempDir& dir) {
-    Process p(args, dir);
-    int status = p.wait(std::chrono::seconds(60));
-    return {status, p.err()};
-}
-
 TEST(PictureModule, TheProgramLinksNoPictureLibrary) {
     TempDir dir;
     std::string needed = dir.file("needed");
@@ -48,7 +37,7 @@ TEST(PictureModule, TheProgramLinksNoPictureLibrary) {
 TEST(PictureModule, DecodeLoadsNoPictureModule) {
     TempDir dir;
     Env files("LD_DEBUG", "files");  // the dynamic loader names every object it loads, dlopen's too
-    Outcome r = run_tape({"decode", sample_path("16k20f3s5-turning.iso.ptp"), "-o", dir.file("out.txt")}, dir);
+    Outcome r = tape_run({"decode", sample_path("16k20f3s5-turning.iso.ptp"), "-o", dir.file("out.txt")}, dir);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("libusb"), std::string::npos) << "LD_DEBUG said nothing: " << r.err;
     EXPECT_EQ(r.err.find("tape-pictures"), std::string::npos);
@@ -57,28 +46,28 @@ TEST(PictureModule, DecodeLoadsNoPictureModule) {
 
 TEST(PictureModule, RenderAndScanLoadItAndReadBack) {
     TempDir dir;
-    Outcome encode = run_tape({"encode", sample_path("circle-examples.txt"), "-o", dir.file("c.ptp")}, dir);
+    Outcome encode = tape_run({"encode", sample_path("circle-examples.txt"), "-o", dir.file("c.ptp")}, dir);
     ASSERT_EQ(encode.status, 0) << encode.err;
     {
         Env files("LD_DEBUG", "files");
-        Outcome render = run_tape({"render", dir.file("c.ptp"), "-o", dir.file("c.png")}, dir);
+        Outcome render = tape_run({"render", dir.file("c.ptp"), "-o", dir.file("c.png")}, dir);
         if (render.status == 3 && render.err.find("built without OpenCV") != std::string::npos)
             GTEST_SKIP() << "built without OpenCV: " << render.err;
         ASSERT_EQ(render.status, 0) << render.err;
         EXPECT_NE(render.err.find("tape-pictures"), std::string::npos);
     }
-    Outcome scan = run_tape({"scan", dir.file("c.png"), "-o", dir.file("s.ptp")}, dir);
+    Outcome scan = tape_run({"scan", dir.file("c.png"), "-o", dir.file("s.ptp")}, dir);
     ASSERT_EQ(scan.status, 0) << scan.err;
     EXPECT_EQ(read_text(dir.file("s.ptp")), read_text(dir.file("c.ptp")));
 }
 
 TEST(PictureModule, MissingOrBrokenModuleIsSaidWithExit3) {
     TempDir dir;
-    Outcome encode = run_tape({"encode", sample_path("circle-examples.txt"), "-o", dir.file("c.ptp")}, dir);
+    Outcome encode = tape_run({"encode", sample_path("circle-examples.txt"), "-o", dir.file("c.ptp")}, dir);
     ASSERT_EQ(encode.status, 0) << encode.err;
     {
         Env module("TAPE_PICTURE_MODULE", dir.file("no-such-module.so"));
-        Outcome render = run_tape({"render", dir.file("c.ptp"), "-o", dir.file("c.png")}, dir);
+        Outcome render = tape_run({"render", dir.file("c.ptp"), "-o", dir.file("c.png")}, dir);
         EXPECT_EQ(render.status, 3);
         if (render.err.find("built without OpenCV") != std::string::npos) GTEST_SKIP() << render.err;
         EXPECT_NE(render.err.find("the picture module is not installed (looked for " + dir.file("no-such-module.so")),
@@ -88,7 +77,7 @@ TEST(PictureModule, MissingOrBrokenModuleIsSaidWithExit3) {
     }
     std::ofstream(dir.file("broken.so")) << "not a shared object\n";
     Env module("TAPE_PICTURE_MODULE", dir.file("broken.so"));
-    Outcome scan = run_tape({"scan", dir.file("c.png"), "-o", dir.file("s.ptp")}, dir);
+    Outcome scan = tape_run({"scan", dir.file("c.png"), "-o", dir.file("s.ptp")}, dir);
     EXPECT_EQ(scan.status, 3);
     EXPECT_NE(scan.err.find("cannot load the picture module"), std::string::npos) << scan.err;
 }

@@ -45,3 +45,33 @@ private:
     const TempDir& dir_;
     pid_t pid_ = -1;
 };
+
+/// What one finished run of a program said: its exit status (-1 when killed at the deadline), its
+/// standard output and standard error.
+struct Outcome {
+    int status = -1;
+    std::string out, err;
+};
+
+/// Runs program with args to the end (killed at timeout), its output in the files "stdout" and "stderr" of dir.
+inline Outcome run(const std::string& program, const std::vector<std::string>& args, const TempDir& dir,
+                   std::chrono::seconds timeout = std::chrono::seconds(60)) {
+    pid_t pid = spawn_to_files(program, args, dir.file("stdout"), dir.file("stderr"));
+    if (pid < 0) throw std::runtime_error("spawn failed: " + program);
+    auto status = wait_for_exit(pid, timeout);
+    Outcome r;
+    if (!status) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, nullptr, 0);
+    } else {
+        r.status = WIFEXITED(*status) ? WEXITSTATUS(*status) : 128 + WTERMSIG(*status);
+    }
+    r.out = read_text(dir.file("stdout"));
+    r.err = read_text(dir.file("stderr"));
+    return r;
+}
+
+/// The tape binary under test, run so.
+inline Outcome tape_run(const std::vector<std::string>& args, const TempDir& dir) {
+    return run(TAPE_BINARY, args, dir);
+}
