@@ -7,13 +7,13 @@
 // where the tape had a stretch without holes (between repeats of a message); it is read as one blank
 // frame. '#' starts a comment. Read only: raw is the exact format to write, holes the one to look at.
 #include "image_formats.hpp"
+#include "line_reader.hpp"
 #include "tape/error.hpp"
 
 namespace tape {
 namespace {
 
 constexpr std::string_view bits_extensions[] = {".bits"};
-constexpr std::size_t longest_line = 4096;
 constexpr std::size_t digits = 8;
 
 // One line: a frame, nothing (an empty or comment line: `empty` says which), or false for a line that
@@ -53,31 +53,14 @@ int bits_match(std::span<const std::uint8_t> prefix) {
     return frames >= 4 ? 90 : 0;  // above dump, which takes a line of 8 digits for an offset
 }
 
-class BitsReader : public ImageReader {
-public:
-    void read(std::span<const std::uint8_t> bytes, std::vector<Frame>& out) override {
-        for (std::uint8_t c : bytes) {
-            if (c == '\n') {
-                take(out);
-                continue;
-            }
-            if (line_.size() >= longest_line) fail(line_no_ + 1, "a line of more than 4096 characters");
-            line_ += static_cast<char>(c);
-        }
-    }
-    // The last line may lack its LF; empty lines after the last frame are no tape.
-    void finish(std::vector<Frame>& out) override {
-        if (!line_.empty()) take(out);
-    }
-
+class BitsReader : public LineReader {
 private:
-    void take(std::vector<Frame>& out) {
-        ++line_no_;
+    // Empty lines after the last frame are no tape: blank frames wait for the frame after them.
+    void take_line(std::string_view line, std::vector<Frame>& out) override {
         std::optional<Frame> f;
         bool empty = false;
-        if (!parse_bits(line_, f, empty))
-            fail(line_no_, "expected one frame a line as eight binary digits (0 or 1), track 8 first");
-        line_.clear();
+        if (!parse_bits(line, f, empty))
+            fail("expected one frame a line as eight binary digits (0 or 1), track 8 first");
         if (empty && seen_frame_) ++blanks_;
         if (!f) return;
         out.insert(out.end(), blanks_, blank_frame);
@@ -85,12 +68,8 @@ private:
         out.push_back(*f);
         seen_frame_ = true;
     }
-    [[noreturn]] static void fail(std::uint64_t line, const std::string& why) {
-        throw Error(Errc::bad_image, Position{.line = line}, why);
-    }
 
-    std::string line_;  // the line being read: a chunk may end inside it
-    std::uint64_t line_no_ = 0, blanks_ = 0;
+    std::uint64_t blanks_ = 0;
     bool seen_frame_ = false;
 };
 

@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "image_formats.hpp"
+#include "line_reader.hpp"
 #include "tape/error.hpp"
 #include "tape/limits.hpp"
 
@@ -13,7 +14,6 @@ namespace tape {
 namespace {
 
 constexpr std::string_view dump_extensions[] = {".xxd"};  // else the content says it is a dump
-constexpr std::size_t longest_line = 4096;
 
 enum class Style { none, xxd, hexdump, od, words };
 
@@ -110,32 +110,14 @@ int dump_match(std::span<const std::uint8_t> prefix) {
     return lines >= 2 && style != Style::none ? 85 : 0;
 }
 
-class DumpReader : public ImageReader {
-public:
-    void read(std::span<const std::uint8_t> bytes, std::vector<Frame>& out) override {
-        for (std::uint8_t c : bytes) {
-            if (c == '\n') {
-                take(out);
-                continue;
-            }
-            if (line_.size() >= longest_line) fail("a line of more than 4096 characters");
-            line_ += static_cast<char>(c);
-        }
-    }
-    void finish(std::vector<Frame>& out) override {
-        if (!line_.empty()) take(out);
+class DumpReader : public LineReader {
+private:
+    void lines_done(std::vector<Frame>&) override {
         if (repeat_) fail("the dump ends with '*' and no offset after it: how often the line repeats is not known");
     }
-
-private:
-    void take(std::vector<Frame>& out) {
-        ++line_no_;
-        if (line_.find_first_not_of(" \t\r") == std::string::npos) {
-            line_.clear();
-            return;
-        }
-        DumpLine d = parse_dump_line(line_);
-        line_.clear();
+    void take_line(std::string_view line, std::vector<Frame>& out) override {
+        if (line.find_first_not_of(" \t\r") == std::string_view::npos) return;
+        DumpLine d = parse_dump_line(line);
         if (d.style == Style::none)
             fail("neither a line of xxd, hexdump -C nor od -t x1 output; dump the tape with od -An -tx1 -v FILE");
         if (d.style == Style::words)
@@ -169,12 +151,7 @@ private:
         next_offset_ = offset;
     }
 
-    [[noreturn]] void fail(const std::string& why) const {
-        throw Error(Errc::bad_image, Position{.line = line_no_}, why);
-    }
-
-    std::string line_;
-    std::uint64_t line_no_ = 0, next_offset_ = 0;
+    std::uint64_t next_offset_ = 0;
     std::vector<std::uint8_t> last_;  // the last line's bytes, for '*'
     bool repeat_ = false;
 };

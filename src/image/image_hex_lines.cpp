@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "image_formats.hpp"
+#include "line_reader.hpp"
 #include "tape/error.hpp"
 #include "tape/five_track.hpp"
 
@@ -16,7 +17,6 @@ namespace {
 
 constexpr std::string_view hex8_extensions[] = {".hex8"};
 constexpr std::string_view hex5_extensions[] = {".hex5"};
-constexpr std::size_t longest_line = 4096;  // a longer one is no line of these files: bounded memory
 
 int digit_value(char c) {
     if (c >= '0' && c <= '9') return c - '0';
@@ -75,45 +75,26 @@ int lines_match(std::span<const std::uint8_t> prefix, int tracks) {
     return five && punched >= 4 ? 80 : 0;
 }
 
-class LinesReader : public ImageReader {
+class LinesReader : public LineReader {
 public:
     explicit LinesReader(int tracks) : tracks_(tracks) {}
-    void read(std::span<const std::uint8_t> bytes, std::vector<Frame>& out) override {
-        for (std::uint8_t c : bytes) {
-            if (c == '\n') {
-                take(out);
-                continue;
-            }
-            if (line_.size() >= longest_line) fail(line_no_ + 1, "a line of more than 4096 characters");
-            line_ += static_cast<char>(c);
-        }
-    }
-    void finish(std::vector<Frame>& out) override {
-        if (!line_.empty()) take(out);  // the last line may lack its LF
-    }
     std::optional<Code> declared_code() const override { return declared_; }
 
 private:
-    void take(std::vector<Frame>& out) {
-        ++line_no_;
-        if (!declared_ && frames_ == 0) declared_ = header_code(line_);  // the header comes before the frames
+    void take_line(std::string_view line, std::vector<Frame>& out) override {
+        if (!declared_ && frames_ == 0) declared_ = header_code(line);  // the header comes before the frames
         try {
-            if (auto f = parse_line(line_, tracks_)) {
+            if (auto f = parse_line(line, tracks_)) {
                 out.push_back(*f);
                 ++frames_;
             }
         } catch (const LineFault& fault) {
-            fail(line_no_, fault.why);
+            fail(fault.why);
         }
-        line_.clear();
-    }
-    [[noreturn]] static void fail(std::uint64_t line, const std::string& why) {
-        throw Error(Errc::bad_image, Position{.line = line}, why);
     }
 
     int tracks_;
-    std::string line_;  // the line being read: a chunk may end inside it
-    std::uint64_t line_no_ = 0, frames_ = 0;
+    std::uint64_t frames_ = 0;
     std::optional<Code> declared_;
 };
 
