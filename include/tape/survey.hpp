@@ -24,6 +24,8 @@ struct ParityCounts {
     std::optional<Parity> dominant() const;
     /// Frames that do not fit p.
     std::uint64_t misfits(Parity p) const;
+    /// The counts of another stretch of tape added.
+    ParityCounts& operator+=(const ParityCounts& o);
 };
 
 ParityCounts count_parity(std::span<const Frame> frames);

@@ -19,13 +19,6 @@ namespace {
 // lines of the messages and the line ends decode reports: no second pass over the text.
 using CleanRun = std::size_t (*)(const Frame* in, std::size_t n, char* out, std::uint64_t* newlines);
 
-// The bytes of a vector of per-byte counts added up.
-std::uint64_t byte_sum(swar::bytes16 counts) {
-    swar::words2 w = reinterpret_cast<swar::words2>(counts);
-    w = (w & 0x00FF00FF00FF00FFULL) + ((w >> 8) & 0x00FF00FF00FF00FFULL);  // four 16-bit sums a lane
-    return ((w[0] + w[1]) * 0x0001000100010001ULL) >> 48;
-}
-
 std::size_t iso_even_clean_sse2(const Frame* in, std::size_t n, char* out, std::uint64_t* newlines) {
     constexpr std::size_t step = 64;
     std::size_t i = 0;
@@ -49,7 +42,7 @@ std::size_t iso_even_clean_sse2(const Frame* in, std::size_t n, char* out, std::
                 lines -= reinterpret_cast<swar::bytes16>(c == '\n');
             }
         }
-        *newlines += byte_sum(lines);
+        *newlines += swar::byte_sum(lines);
     }
     return i;
 }

@@ -53,11 +53,7 @@ void Detector::feed(std::span<const Frame> frames) {
     e.frames += frames.size();
     for (auto& s : surveyors_) s.feed(frames, t);
     binary_.feed(frames);
-    e.parity.frames += t.parity.frames;
-    e.parity.even += t.parity.even;
-    e.parity.odd += t.parity.odd;
-    e.parity.mark += t.parity.mark;
-    e.parity.space += t.parity.space;
+    e.parity += t.parity;
     std::uint64_t punched = frames.size() - t.count[blank_frame];
     e.punched += punched;
     e.significant += punched - t.count[0xFF] - t.count[0x7F];

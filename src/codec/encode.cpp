@@ -20,18 +20,6 @@ namespace {
 // (for messages) on the way. NUL and DEL are caught by the byte minimum and maximum of the block.
 using IsoEvenRun = std::size_t (*)(const char* in, std::size_t n, Frame* out, std::size_t* newlines);
 
-// Adds up the bytes of a vector of per-byte newline counts (each at most 252).
-std::size_t byte_sum(swar::bytes16 counts) {
-    std::uint64_t w[2];
-    std::memcpy(w, &counts, sizeof w);
-    std::size_t sum = 0;
-    for (std::uint64_t x : w) {
-        x = (x & 0x00FF00FF00FF00FFULL) + ((x >> 8) & 0x00FF00FF00FF00FFULL);  // four sums, each < 2^16
-        sum += static_cast<std::size_t>((x * 0x0001000100010001ULL) >> 48);
-    }
-    return sum;
-}
-
 template <bool plain>
 std::size_t iso_even_sse2(const char* in, std::size_t n, Frame* out, std::size_t* newlines) {
     constexpr std::size_t step = 64;
@@ -58,7 +46,7 @@ std::size_t iso_even_sse2(const char* in, std::size_t n, Frame* out, std::size_t
             for (int k = 0; k < 4; ++k) swar::store16(out + i + 16 * k, v[k] | swar::parity_track16(v[k]));
             lines += nl;
         }
-        if constexpr (plain) *newlines += byte_sum(lines);
+        if constexpr (plain) *newlines += swar::byte_sum(lines);
     }
     return i;
 }

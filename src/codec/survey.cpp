@@ -5,17 +5,15 @@
 
 namespace tape {
 
-ParityCounts count_parity(std::span<const Frame> frames) {
-    ParityCounts c;
-    for (Frame f : frames) {
-        if (f == 0) continue;
-        ++c.frames;
-        if (hole_count(f) % 2 == 0) ++c.even;
-        if (f & 0x80) ++c.mark;
-    }
-    c.odd = c.frames - c.even;
-    c.space = c.frames - c.mark;
-    return c;
+ParityCounts count_parity(std::span<const Frame> frames) { return FrameTally(frames).parity; }
+
+ParityCounts& ParityCounts::operator+=(const ParityCounts& o) {
+    frames += o.frames;
+    even += o.even;
+    odd += o.odd;
+    mark += o.mark;
+    space += o.space;
+    return *this;
 }
 
 std::uint64_t ParityCounts::misfits(Parity p) const {
@@ -80,11 +78,7 @@ void Surveyor::feed(std::span<const Frame> frames) { feed(frames, FrameTally(fra
 
 void Surveyor::feed(std::span<const Frame> frames, const FrameTally& t) {
     s_.frames += frames.size();
-    s_.parity.frames += t.parity.frames;
-    s_.parity.even += t.parity.even;
-    s_.parity.odd += t.parity.odd;
-    s_.parity.mark += t.parity.mark;
-    s_.parity.space += t.parity.space;
+    s_.parity += t.parity;
     count_blank_tape(t);
     for (int v = 1; v < 256; ++v) {
         std::uint64_t n = t.count[v];

@@ -76,6 +76,13 @@ inline bytes16 parity_track16(bytes16 v) {
     return reinterpret_cast<bytes16>(p << 7);
 }
 
+/// The sixteen bytes of v added up (each a count of at most 255): folded to 16-bit sums, then one multiply.
+inline std::uint64_t byte_sum(bytes16 v) {
+    words2 w = reinterpret_cast<words2>(v);
+    w = (w & 0x00FF00FF00FF00FFULL) + ((w >> 8) & 0x00FF00FF00FF00FFULL);  // four 16-bit sums a lane
+    return ((w[0] + w[1]) * 0x0001000100010001ULL) >> 48;
+}
+
 /// True when any byte of v is non-zero.
 inline bool any16(bytes16 v) {
     std::uint64_t w[2];
@@ -129,9 +136,7 @@ inline std::size_t count_newlines(const char* p, std::size_t n) {
         bytes16 hits{};  // per byte lane: LFs seen, at most 255 before they are added up
         std::size_t end = n - i >= 255 * 16 ? i + 255 * 16 : n - (n - i) % 16;
         for (; i < end; i += 16) hits -= reinterpret_cast<bytes16>(load16(p + i) == '\n');
-        words2 w = reinterpret_cast<words2>(hits);
-        w = (w & 0x00FF00FF00FF00FFULL) + ((w >> 8) & 0x00FF00FF00FF00FFULL);  // four 16-bit sums a lane
-        count += static_cast<std::size_t>(((w[0] + w[1]) * 0x0001000100010001ULL) >> 48);
+        count += static_cast<std::size_t>(byte_sum(hits));
     }
     for (; i < n; ++i) count += p[i] == '\n';
     return count;
