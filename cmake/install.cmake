@@ -36,6 +36,8 @@ install(TARGETS tape-damage tape-adapter-sim RUNTIME DESTINATION ${CMAKE_INSTALL
 install(FILES ${TAPE_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions COMPONENT runtime)
 install(FILES data/eia-rs244.tab data/ita2.tab data/mtk2.tab data/elliott900.tab data/elliott920.tab DESTINATION ${CMAKE_INSTALL_DATADIR}/tape
         COMPONENT runtime)
+install(FILES ${TAPE_MACHINE_FILES} data/machines/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/tape/machines
+        COMPONENT runtime)
 # tape dnc's systemd unit (with the installed binary's path) and its sample configuration; the unit goes to the
 # prefix's lib/systemd/system, systemd's own folder when the prefix is /usr.
 set(TAPE_BINDIR ${CMAKE_INSTALL_FULL_BINDIR})
