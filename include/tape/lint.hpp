@@ -18,11 +18,16 @@ namespace tape {
 namespace lint_detail {
 class BlockTargets;
 }
+struct MachineProfile;
+class MachineFormat;
 
 struct LintOptions {
     const FormatSpec* spec = nullptr;  ///< also check every word against this controller format
     std::size_t max_per_rule = 0;  ///< list the first this many findings of a rule by position, count the rest (0: all)
     bool strict = false;           ///< blank tape inside a block is an error, not a warning
+    /// Also check the program against this machine: its word format as its format-changing codes set
+    /// it (in place of spec), its feed and speed codes (tape/machine_checks.hpp).
+    const MachineProfile* machine = nullptr;
 };
 
 /// Every finding: the loader's syntax findings and the rules of tape/rules.hpp that apply to the
@@ -30,7 +35,7 @@ struct LintOptions {
 std::vector<Finding> lint(const LoadedTape& tape, const LintOptions& options = {});
 
 /// The same checks fed by the loader as it streams (ProgramLoader, load_each): the loader's findings
-/// and the rules, in bounded memory. A program's blocks are held only with a controller format, whose
+/// and the rules, in bounded memory. A program's blocks are held only with a controller format or a machine, whose
 /// checks must first know whether the program writes decimal points anywhere.
 class LintVisitor : public ProgramVisitor {
 public:
@@ -57,6 +62,7 @@ public:
 
 private:
     void close_program();
+    void machine_program_checks();
     void keep(Finding f);
     void motion_checks(const Block& b);
     void flow_checks(const Block& b);
@@ -84,7 +90,7 @@ private:
     std::uint64_t program_blocks_ = 0;
     std::optional<long long> last_number_{};
     std::optional<Location> after_end_at_{};  // the first text after the end that is not blank
-    std::vector<Block> held_;                 // with a controller format: the program's blocks
+    std::vector<Block> held_;                 // with a controller format or a machine: the program's blocks
     int motion_ = -1;                         // the G code of group a in effect (0-3), or -1
     bool feed_given_ = false, no_feed_said_ = false;
     bool subprogram_ = false;           // the program ends with M99: it runs at its caller's feed
@@ -96,7 +102,8 @@ private:
         std::uint64_t block;
     };
     std::vector<Open> open_;
-    std::unique_ptr<lint_detail::BlockTargets> targets_;  // Fanuc: the blocks its GOTOs, cycles and calls name
+    std::unique_ptr<lint_detail::BlockTargets> targets_;
+    std::unique_ptr<MachineFormat> machine_format_;  // with a machine: the word format block by block  // Fanuc: the blocks its GOTOs, cycles and calls name
 };
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).

@@ -10,6 +10,7 @@
 #include "program/block_targets.hpp"
 #include "tape/code_tables.hpp"
 #include "tape/functions.hpp"
+#include "tape/machine_checks.hpp"
 #include "tape/rules.hpp"
 
 namespace tape {
@@ -91,14 +92,16 @@ bool has_g(const Block& b, std::initializer_list<long long> codes) {
     return false;
 }
 
-void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points) {
+// note: with a machine, what its format mode adds to a word's finding ("G10 in effect: long dimensions").
+void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points, const MachineFormat* note = nullptr) {
     if (b.main && !s.main_block)
         add(out, "spec-main", b.where, b.ordinal, "the controller format has no ':' main blocks");
     if (b.skip && !s.block_skip)
         add(out, "spec-skip", b.where, b.ordinal, "the controller format has no '/' block skip");
     auto check = [&](const Word& w) {
         if (w.macro || !w.known) return;  // a macro value has no digits to count; a flagged word was reported
-        for (auto& [rule, message] : check_word(w, s, points)) add(out, rule, w.where, b.ordinal, message);
+        for (auto& [rule, message] : check_word(w, s, points))
+            add(out, rule, w.where, b.ordinal, note && rule == "spec-digits" ? message + note->note(w) : message);
     };
     if (b.number) check(*b.number);
     for (const auto& w : b.words) check(w);
@@ -198,7 +201,8 @@ bool uses_explicit_points(const Program& program) {
 LintVisitor::LintVisitor(const LintOptions& options)
     : options_(options),
       sink_([this](Finding f) { keep(std::move(f)); }),
-      targets_(std::make_unique<lint_detail::BlockTargets>()) {}
+      targets_(std::make_unique<lint_detail::BlockTargets>()),
+      machine_format_(options.machine ? std::make_unique<MachineFormat>(*options.machine) : nullptr) {}
 LintVisitor::~LintVisitor() = default;
 
 void LintVisitor::dialect(const DialectChoice& choice) {
@@ -240,7 +244,7 @@ void LintVisitor::block(const Block& b) {
     code_checks(sink_, b, dialect_, close_, unknown_codes_);
     motion_checks(b);
     flow_checks(b);
-    if (options_.spec) held_.push_back(b);
+    if (options_.spec || options_.machine) held_.push_back(b);
     quiet_ = false;
 }
 
@@ -401,8 +405,22 @@ void LintVisitor::close_program() {
     for (const auto& o : open_) report_unclosed(o);
     open_.clear();
     targets_->close(sink_);
-    for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, program_points_);
+    if (options_.machine)
+        machine_program_checks();
+    else
+        for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, program_points_);
     held_.clear();
+}
+
+// The machine's word format, mode by mode, and its own checks (a profile without a format has only these).
+void LintVisitor::machine_program_checks() {
+    const MachineProfile& m = *options_.machine;
+    machine_format_->program_start();
+    for (const auto& b : held_) {
+        const FormatSpec& s = machine_format_->block(b);
+        if (!m.format.words.empty()) spec_checks(sink_, s, b, program_points_, machine_format_.get());
+        machine_checks(m, b, sink_);
+    }
 }
 
 std::vector<Finding> LintVisitor::findings() const {

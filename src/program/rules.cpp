@@ -11,7 +11,7 @@ constexpr std::string_view all = "gost fanuc linuxcnc";
 // What holds for every control, also when no known dialect fits (none): characters, parity, blocks, comments.
 constexpr std::string_view every = "gost fanuc linuxcnc none";
 
-constexpr std::array<Rule, 39> table = {{
+constexpr std::array<Rule, 42> table = {{
     // The loader: how characters become programs, blocks and words.
     {"unexpected-character", E, every, "ГОСТ 20999-83 tables 1-3; ISO 646 (every control reads 7-bit code)",
      "a character, or a run of characters, that no program of the dialect may hold outside comments (when no "
@@ -113,6 +113,14 @@ constexpr std::array<Rule, 39> table = {{
      "the controller rejects the block"},
     {"spec-skip", E, all, "ГОСТ 20999-83 §2.7, §9", "a '/' block skip where the controller format has none",
      "the controller rejects the block"},
+    {"machine-feed-code", E, all, "the machine's profile (tape machines show NAME): its feed code table",
+     "a feed word whose first digit is no mode of the machine's feed code table (the 16К20Ф3С5's table 3: 1, 2, 7)",
+     "the control rejects the word, or runs the feed in another mode"},
+    {"machine-prefix", E, all, "the machine's profile: S, T and M words of three digits, the first 0 or 1",
+     "an S, T or M word whose first digit is not 0 (at once) or 1 (after the machine's acknowledgement)",
+     "the control rejects the word"},
+    {"machine-speed-code", E, all, "the machine's profile: its spindle speed code table",
+     "a speed code outside the machine's complete speed table", "the control rejects the word"},
     {"spec-word", E, all, "ГОСТ 20999-83 §9", "tape format: a word that cannot be written in the controller format",
      "the value does not fit the digits the controller reads"},
     // The codec's bad frames, which lint lists among the findings of a damaged tape read with -k.

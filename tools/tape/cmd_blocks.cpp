@@ -2,11 +2,13 @@
 
 #include "cli/globals.hpp"
 #include "cli/json.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/outputs.hpp"
 #include "cli/programs.hpp"
 #include "commands.hpp"
 #include "tape/code_tables.hpp"
+#include "tape/machine_checks.hpp"
 #include "tape/utf8_text.hpp"
 
 namespace cli {
@@ -16,7 +18,8 @@ struct BlocksArgs {
     std::string input = "-";
     ProgramSource source;
     bool json = false, explain = false, strict = false;
-    std::string lang = "en";
+    std::string lang = "en", machine;
+    std::optional<tape::MachineProfile> profile{};  // --machine, loaded before the listing starts
 };
 
 std::string statement_kind(tape::Statement::Kind k) {
@@ -119,7 +122,8 @@ public:
             if (!flagged.empty()) out_ += "    ! not read: " + flagged;
             if (a_.explain) {
                 machine_.block(b);
-                std::string e = tape::explain_codes(b, dialect_, machine_.machine(), a_.lang == "ru");
+                std::string e = a_.profile ? tape::explain_machine_codes(b, *a_.profile, a_.lang == "ru")
+                                           : tape::explain_codes(b, dialect_, machine_.machine(), a_.lang == "ru");
                 if (!e.empty()) out_ += "    ; " + e;
             }
             out_ += "\n";
@@ -225,8 +229,10 @@ private:
     std::uint64_t programs_ = 0, blocks_ = 0;
 };
 
-void run(const BlocksArgs& a) {
+void run(BlocksArgs& a) {
+    a.profile = machine_or_fail(a.machine);
     ProgramInput in = open_program(a.input, a.source);
+    if (a.profile && a.source.dialect == "auto") in.load.dialect = a.profile->dialect;
     std::optional<tape::LeaderLabel> leader;
     try {
         if (in.from_tape) leader = in.input->label();
@@ -251,6 +257,7 @@ void add_blocks(CLI::App& app) {
     sub->add_flag("--explain", a->explain,
                   "Name the G and M functions of each block as the dialect's table does (ГОСТ 20999-83 tables 4-8, "
                   "Fanuc lathe or mill, LinuxCNC)");
+    add_machine_option(sub, a->machine, "--explain names its G and M codes, feed, speed and tool words");
     sub->add_flag("--strict", a->strict, "Blank tape inside a block is an error: exit 1");
     sub->add_option("--lang", a->lang, "Language of --explain: en or ru")
         ->check(CLI::IsMember({"en", "ru"}))

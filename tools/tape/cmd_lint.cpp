@@ -3,6 +3,7 @@
 
 #include "cli/globals.hpp"
 #include "cli/json.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "cli/options.hpp"
@@ -18,7 +19,7 @@ namespace cli {
 namespace {
 
 struct LintArgs {
-    std::string input = "-", spec, explain;
+    std::string input = "-", spec, explain, machine;
     ProgramSource source;
     bool json = false, rules = false, strict = false;
     std::uint64_t max = 0;
@@ -103,7 +104,11 @@ void run(const LintArgs& a) {
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     // Streamed: a tape of any length is checked in bounded memory (--max-errors findings a rule).
     ProgramInput in = open_program(a.input, a.source);
-    tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict});
+    auto machine = machine_or_fail(a.machine);
+    if (machine && spec) fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");
+    if (machine && a.source.dialect == "auto") in.load.dialect = machine->dialect;
+    tape::LintVisitor linter(
+        tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict, machine ? &*machine : nullptr});
     load_program(in, linter, true);
     std::vector<tape::Finding> findings = linter.findings();
     std::uint64_t unlisted = 0;
@@ -156,6 +161,7 @@ void add_lint(CLI::App& app) {
     sub->add_option("--explain", a->explain, "Print what RULE checks, why, and its reference; no input is read")
         ->option_text("RULE");
     sub->add_flag("--rules", a->rules, "List every rule: id, severity, the dialects it applies to; no input is read");
+    add_machine_option(sub, a->machine, "its word format as its G codes set it (in place of --spec), feed and speed codes");
     sub->add_flag("--strict", a->strict, "Blank tape inside a block (a character that lost its holes?) is an error");
     sub->callback([a] { run(*a); });
 }
