@@ -1,69 +1,105 @@
-// A scan of TOML's lexical states (comment, basic and literal strings, their multi-line forms) that
-// finds the bytes above 0x7F standing outside all of them (toml_guard.hpp).
-#include "common/toml_guard.hpp"
+#include "toml_guard.hpp"
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
-#include <tuple>
-#include <utility>
 
 #include "tape/error.hpp"
 
 namespace tape {
 namespace {
 
-enum class State { bare, comment, basic, literal, multi_basic, multi_literal };
+enum class In { code, comment, basic, literal, multi_basic, multi_literal };
 
-bool starts(std::string_view t, std::size_t i, std::string_view what) { return t.substr(i, what.size()) == what; }
-
-// The state after the opening of a string or comment at i, and how many bytes the opening takes.
-std::pair<State, std::size_t> opening(std::string_view t, std::size_t i) {
-    if (t[i] == '#') return {State::comment, 1};
-    if (starts(t, i, "\"\"\"")) return {State::multi_basic, 3};
-    if (starts(t, i, "'''")) return {State::multi_literal, 3};
-    if (t[i] == '"') return {State::basic, 1};
-    if (t[i] == '\'') return {State::literal, 1};
-    return {State::bare, 1};
+// The character at `at` as the user typed it, when it is whole UTF-8; its byte in hex otherwise.
+std::string shown_at(std::string_view text, std::size_t at) {
+    auto lead = static_cast<unsigned char>(text[at]);
+    std::size_t length = lead >= 0xF0 && lead < 0xF5 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC2 && lead < 0xE0 ? 2 : 0;
+    bool whole = length > 0 && at + length <= text.size();
+    for (std::size_t k = 1; whole && k < length; ++k) whole = (static_cast<unsigned char>(text[at + k]) & 0xC0) == 0x80;
+    if (whole) return "'" + std::string(text.substr(at, length)) + "'";
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "byte 0x%02X", lead);
+    return hex;
 }
 
-// How many bytes close the string or comment of state s at i, or 0 when it does not close there.
-std::size_t closing(State s, std::string_view t, std::size_t i) {
-    switch (s) {
-        case State::comment: return t[i] == '\n' ? 1 : 0;
-        case State::basic: return t[i] == '"' || t[i] == '\n' ? 1 : 0;
-        case State::literal: return t[i] == '\'' || t[i] == '\n' ? 1 : 0;
-        case State::multi_basic: return starts(t, i, "\"\"\"") ? 3 : 0;
-        case State::multi_literal: return starts(t, i, "'''") ? 3 : 0;
-        default: return 0;
+// Characters (not bytes) from the start of the line up to `at`, counted from 1.
+std::uint64_t column_of(std::string_view text, std::size_t line_start, std::size_t at) {
+    std::uint64_t column = 1;
+    for (std::size_t k = line_start; k < at; ++k) column += (static_cast<unsigned char>(text[k]) & 0xC0) != 0x80;
+    return column;
+}
+
+bool opens(std::string_view text, std::size_t at, std::string_view delimiter) {
+    return text.substr(at, delimiter.size()) == delimiter;
+}
+
+// Past a multi-line string's closing delimiter: up to two more quotes belong to the string ("""a""""").
+std::size_t past_close(std::string_view text, std::size_t at, char quote) {
+    at += 3;
+    for (int extra = 0; extra < 2 && at < text.size() && text[at] == quote; ++extra) ++at;
+    return at;
+}
+
+// Where the scan goes from `code` at `i`: the state it enters and the index past what it consumed.
+std::size_t enter(std::string_view text, std::size_t i, In& in) {
+    if (text[i] == '#') return in = In::comment, i + 1;
+    if (opens(text, i, "\"\"\"")) return in = In::multi_basic, i + 3;
+    if (opens(text, i, "'''")) return in = In::multi_literal, i + 3;
+    if (text[i] == '"') return in = In::basic, i + 1;
+    if (text[i] == '\'') return in = In::literal, i + 1;
+    return i + 1;
+}
+
+// One step inside a string or a comment (not at a newline): the index past what it consumed.
+std::size_t inside(std::string_view text, std::size_t i, In& in) {
+    char c = text[i];
+    switch (in) {
+        case In::basic:
+            if (c == '\\') return i + 1 < text.size() && text[i + 1] != '\n' ? i + 2 : i + 1;
+            if (c == '"') in = In::code;
+            return i + 1;
+        case In::literal:
+            if (c == '\'') in = In::code;
+            return i + 1;
+        case In::multi_basic:
+            if (c == '\\') return i + 1 < text.size() && text[i + 1] != '\n' ? i + 2 : i + 1;
+            if (opens(text, i, "\"\"\"")) return in = In::code, past_close(text, i, '"');
+            return i + 1;
+        case In::multi_literal:
+            if (opens(text, i, "'''")) return in = In::code, past_close(text, i, '\'');
+            return i + 1;
+        default:
+            return i + 1;
     }
 }
 
 }  // namespace
 
 void reject_bare_non_ascii(std::string_view text, std::string_view file) {
-    State s = State::bare;
-    std::size_t line = 1;
+    In in = In::code;
+    std::uint64_t line = 1;
+    std::size_t line_start = 0;
     for (std::size_t i = 0; i < text.size();) {
-        unsigned char c = static_cast<unsigned char>(text[i]);
-        std::size_t step = 1;
-        if (s == State::bare) {
-            if (c > 0x7F) {
-                char hex[8];
-                std::snprintf(hex, sizeof hex, "0x%02X", c);
-                throw Error(Errc::usage, Position{.line = line},
-                            std::string(file) + ": line " + std::to_string(line) + ": byte " + hex +
-                                " outside a string or comment (TOML allows letters other than ASCII only in quotes)");
-            }
-            std::tie(s, step) = opening(text, i);
-        } else if ((s == State::basic || s == State::multi_basic) && c == '\\' && i + 1 < text.size() &&
-                   text[i + 1] != '\n') {
-            step = 2;  // an escaped quote does not close the string
-        } else if (std::size_t n = closing(s, text, i)) {
-            s = State::bare;
-            step = n;
+        if (text[i] == '\n') {
+            ++line;
+            line_start = ++i;
+            // A comment and a one-line string end with their line (an unclosed string is the parser's to say).
+            if (in == In::comment || in == In::basic || in == In::literal) in = In::code;
+            continue;
         }
-        for (std::size_t k = i; k < i + step && k < text.size(); ++k) line += text[k] == '\n';
-        i += step;
+        if (in != In::code) {
+            i = inside(text, i, in);
+            continue;
+        }
+        if (static_cast<unsigned char>(text[i]) >= 0x80) {
+            Position where{.line = line, .column = column_of(text, line_start, i)};
+            throw Error(Errc::usage, where,
+                        shown_at(text, i) + " outside quotes: in " + std::string(file) +
+                            " (TOML) text other than ASCII goes only in a string (name = \"...\") or after # "
+                            "in a comment");
+        }
+        i = enter(text, i, in);
     }
 }
 
