@@ -1,6 +1,6 @@
 # A bad tape dnc configuration is a usage error naming the file, the line and the key, said before any
 # line is opened: a syntax error, an unknown key, a value out of range, a name given twice, a missing
-# folder, a bad device string. tape dnc status reads the same file first.
+# folder, a bad device string, text outside quotes. tape dnc status reads the same file first.
 mkdir programs received
 base='[library]
 programs = "programs"
@@ -27,6 +27,9 @@ printf '%s[[machine]]\nname = "../mill"\ndevice = "serial:/dev/ttyS0"\n' "$base"
 $TAPE dnc --config bad-name.toml; echo "exit $?"
 printf '%s[[machine]\nname = "x"\n' "$base" > syntax.toml
 $TAPE dnc --config syntax.toml; echo "exit $?"
+# A bare non-ASCII character is refused before toml++ 3.3.0 parses it (it reaches __builtin_unreachable).
+printf '%s[[machine]]\nname = Фрезер\ndevice = "serial:/dev/ttyS0"\n' "$base" > bare-text.toml
+$TAPE dnc --config bare-text.toml; echo "exit $?"
 printf '%s' "$base" > no-machine.toml
 $TAPE dnc --config no-machine.toml; echo "exit $?"
 $TAPE dnc status --config unknown-key.toml; echo "exit $?"

@@ -9,7 +9,9 @@
 
 #include "../device_options.hpp"
 #include "../dnc_config.hpp"
+#include "common/toml_guard.hpp"
 #include "tape/error.hpp"
+#include "tape/file_io.hpp"
 #include "tape/serial_settings.hpp"
 
 namespace cli {
@@ -17,6 +19,9 @@ namespace {
 
 using tape::dnc::MachineSettings;
 using tape::dnc::ServiceConfig;
+
+// A configuration is a page or two; a bigger file is no configuration (a device, a log named by mistake).
+constexpr std::uint64_t max_config_bytes = 1 << 20;
 
 std::uint64_t line_of(const toml::node& n) { return n.source().begin.line; }
 
@@ -226,12 +231,13 @@ void read_machines(const toml::node& n, ServiceConfig& c) {
 }  // namespace
 
 ServiceConfig load_dnc_config(const std::string& path) {
+    std::vector<std::uint8_t> bytes = tape::read_file(path, max_config_bytes);
+    std::string text(bytes.begin(), bytes.end());
+    tape::reject_bare_non_ascii(text, path);  // before toml++, which 3.3.0 cannot be trusted with it
     toml::table root;
     try {
-        root = toml::parse_file(path);
+        root = toml::parse(text, path);
     } catch (const toml::parse_error& e) {
-        if (::access(path.c_str(), R_OK) != 0)
-            throw tape::Error(tape::Errc::io, "cannot read the configuration: " + std::string(e.description()));
         bad(e.source().begin.line, std::string(e.description()));
     }
     ServiceConfig c;
