@@ -123,14 +123,14 @@ export class UsbHost {
     for (const i of [device[14], device[15], device[16]]) {
       if (i) strings[i] = decodeString(await this.descriptor(3, i, 255, lang));
     }
+    const eps = bulkEndpoints(config);
+    this.dataIn = eps.in; // known before SET_CONFIGURATION, which arms the device's OUT endpoint
+    this.dataOut = eps.out;
     await this.control(setup(0x00, 9, 1, 0, 0)); // SET_CONFIGURATION 1
     const coding = Uint8Array.from([0x00, 0xc2, 0x01, 0x00, 0, 0, 8]); // 115200 8N1
     await this.control(setup(0x21, 0x20, 0, 0, 7), coding);
     const back = await this.control(setup(0xa1, 0x21, 0, 0, 7));
     await this.control(setup(0x21, 0x22, 3, 0, 0)); // DTR and RTS
-    const eps = bulkEndpoints(config);
-    this.dataIn = eps.in;
-    this.dataOut = eps.out;
     this.dump = describe(device0, device, config, strings, langs, back);
     this.onReady();
   }
