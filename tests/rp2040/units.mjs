@@ -33,6 +33,7 @@ export class Reader {
   }
   startStop() {
     const on = outHigh(this.mcu, 19);
+    if (process.env.PICO_DEBUG) process.stderr.write(`reader: start line ${on} at ${this.mcu.clock.nanos / 1e6} ms, frame ${this.pos}\n`);
     if (on === this.running) return;
     this.running = on;
     if (on) this.frameAlarm.schedule(1e6); // up to speed in 1 ms
