@@ -37,8 +37,8 @@ void Board::start() {
     for (unsigned g = bus_first; g <= bus_strobe; ++g) as_output(g);
     for (unsigned g : {reader_start, reader_reverse, led}) as_output(g);
     for (unsigned g = reader_first; g < reader_first + 8; ++g) as_input(g);
-    for (std::uint8_t g : {control_run, reader_sprocket, reader_tape_out, pico_pins::punch_ready, punch_tape_out, control_reverse,
-                       control_rewind})
+    for (std::uint8_t g : {control_run, reader_sprocket, reader_tape_out, pico_pins::punch_ready, punch_tape_out,
+                           control_reverse, control_rewind})
         as_input(g);
     reg(timer::inte) = 0xF;
     for (unsigned irq : {nvic::irq_timer0, nvic::irq_timer1, nvic::irq_timer2, nvic::irq_timer3, nvic::irq_usbctrl,

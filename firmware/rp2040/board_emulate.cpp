@@ -1,9 +1,9 @@
 // The Pico's side of the emulate role: the control's drive lines watched by edge interrupts, and the
 // frame clock on timer alarm 2 (each slot: data on the lines, setup_us later the strobe for strobe_us;
 // the data stay until the next slot, so they are held for the rest of the period).
-#include "rp2040/board.hpp"
-
 #include <initializer_list>
+
+#include "rp2040/board.hpp"
 #include "rp2040/pins.hpp"
 #include "rp2040/regs.hpp"
 
@@ -87,7 +87,9 @@ void Board::on_frame_alarm() {
             set_strobe(true);
             frame_phase_ = 2;
             return arm_alarm(frame_alarm, slot_at_ + wiring_.setup_us + wiring_.strobe_us);
-        default: set_strobe(false); break;
+        default:
+            set_strobe(false);
+            break;
     }
     frame_phase_ = 0;
     slot_at_ += wiring_.period_us();

@@ -38,10 +38,10 @@ __attribute__((section(".vectors"), used)) const Vectors vectors = {
     __stack_top,
     {reset_handler, fault_handler, fault_handler, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
      ignore_irq, nullptr, nullptr, ignore_irq, ignore_irq},
-    {timer0_irq, timer1_irq, timer2_irq, timer3_irq, ignore_irq, usbctrl_irq, ignore_irq, ignore_irq,
+    {timer0_irq, timer1_irq, timer2_irq, timer3_irq, ignore_irq, usbctrl_irq,  ignore_irq, ignore_irq,
      ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, io_bank0_irq, ignore_irq, ignore_irq,
-     ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq,
-     ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq},
+     ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq,   ignore_irq, ignore_irq,
+     ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq, ignore_irq,   ignore_irq, ignore_irq},
 };
 
 extern "C" void reset_handler() {

@@ -6,7 +6,9 @@
 
 namespace rp {
 
-inline volatile std::uint32_t& reg(std::uint32_t address) { return *reinterpret_cast<volatile std::uint32_t*>(address); }
+inline volatile std::uint32_t& reg(std::uint32_t address) {
+    return *reinterpret_cast<volatile std::uint32_t*>(address);
+}
 // Atomic set and clear aliases of an APB/AHB register (2.1.2): +0x2000 sets, +0x3000 clears the bits written.
 inline void set_bits(std::uint32_t address, std::uint32_t bits) { reg(address + 0x2000) = bits; }
 inline void clear_bits(std::uint32_t address, std::uint32_t bits) { reg(address + 0x3000) = bits; }

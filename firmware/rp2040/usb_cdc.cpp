@@ -8,14 +8,28 @@ namespace {
 
 using namespace rp;
 
-constexpr unsigned ep_in = usbdesc::ep_data_in & 0x0F, ep_out = usbdesc::ep_data_out, ep_notify = usbdesc::ep_notify & 0x0F;
+constexpr unsigned ep_in = usbdesc::ep_data_in & 0x0F, ep_out = usbdesc::ep_data_out,
+                   ep_notify = usbdesc::ep_notify & 0x0F;
 constexpr std::uint32_t in_buffers = 0x180, out_buffers = 0x200, notify_buffer = 0x280;  // DPRAM offsets
 constexpr std::uint32_t packet = usbdesc::max_packet;
 
 // USB 2.0 9.4 and CDC PSTN 6.3: the requests answered.
-enum : std::uint8_t { get_status = 0, clear_feature = 1, set_address = 5, req_get_descriptor = 6, get_configuration = 8,
-                      set_configuration = 9, get_interface = 10, set_interface = 11 };
-enum : std::uint8_t { set_line_coding = 0x20, get_line_coding = 0x21, set_control_line_state = 0x22, send_break = 0x23 };
+enum : std::uint8_t {
+    get_status = 0,
+    clear_feature = 1,
+    set_address = 5,
+    req_get_descriptor = 6,
+    get_configuration = 8,
+    set_configuration = 9,
+    get_interface = 10,
+    set_interface = 11
+};
+enum : std::uint8_t {
+    set_line_coding = 0x20,
+    get_line_coding = 0x21,
+    set_control_line_state = 0x22,
+    send_break = 0x23
+};
 
 // The controller's RAM is written a word at a time (its buffers are 64-byte aligned).
 void to_dpram(std::uint32_t offset, const std::uint8_t* bytes, std::size_t n) {
@@ -93,15 +107,19 @@ void UsbCdc::on_setup() {
     ep0_data1_ = true;  // every data or status stage starts with DATA1
     ep0_in_left_ = 0;
     switch (s.type & 0x60) {
-        case 0x00: return standard_request(s);
-        case 0x20: return class_request(s);
-        default: return ep0_stall();
+        case 0x00:
+            return standard_request(s);
+        case 0x20:
+            return class_request(s);
+        default:
+            return ep0_stall();
     }
 }
 
 void UsbCdc::standard_request(const Setup& s) {
     switch (s.request) {
-        case req_get_descriptor: return get_descriptor(s);
+        case req_get_descriptor:
+            return get_descriptor(s);
         case set_address:
             pending_address_ = static_cast<std::uint8_t>(s.value & 0x7F);  // after the status stage
             return ep0_status_in();
@@ -110,10 +128,17 @@ void UsbCdc::standard_request(const Setup& s) {
             configuration_ = static_cast<std::uint8_t>(s.value);
             if (configuration_) configure_endpoints();
             return ep0_status_in();
-        case get_configuration: ep0_reply_[0] = configuration_; return reply(ep0_reply_, 1, s.length);
-        case get_status: ep0_reply_[0] = ep0_reply_[1] = 0; return reply(ep0_reply_, 2, s.length);
-        case get_interface: ep0_reply_[0] = 0; return reply(ep0_reply_, 1, s.length);
-        case set_interface: return s.value == 0 ? ep0_status_in() : ep0_stall();
+        case get_configuration:
+            ep0_reply_[0] = configuration_;
+            return reply(ep0_reply_, 1, s.length);
+        case get_status:
+            ep0_reply_[0] = ep0_reply_[1] = 0;
+            return reply(ep0_reply_, 2, s.length);
+        case get_interface:
+            ep0_reply_[0] = 0;
+            return reply(ep0_reply_, 1, s.length);
+        case set_interface:
+            return s.value == 0 ? ep0_status_in() : ep0_stall();
         case clear_feature:
             // ENDPOINT_HALT: the endpoint's next packet is DATA0 again.
             if ((s.type & 0x1F) == 2) {
@@ -121,13 +146,15 @@ void UsbCdc::standard_request(const Setup& s) {
                 if ((s.index & 0x7F) == ep_out) out_.data1 = false;
             }
             return ep0_status_in();
-        default: return ep0_stall();
+        default:
+            return ep0_stall();
     }
 }
 
 void UsbCdc::class_request(const Setup& s) {
     switch (s.request) {
-        case set_line_coding: return ep0_arm_out(true);
+        case set_line_coding:
+            return ep0_arm_out(true);
         case get_line_coding: {
             std::uint8_t* r = ep0_reply_;
             for (int i = 0; i < 4; ++i) r[i] = static_cast<std::uint8_t>(coding_.baud >> (8 * i));
@@ -136,19 +163,30 @@ void UsbCdc::class_request(const Setup& s) {
             r[6] = coding_.data_bits;
             return reply(r, 7, s.length);
         }
-        case set_control_line_state: control_lines_ = s.value & 3; return ep0_status_in();
-        case send_break: return ep0_status_in();
-        default: return ep0_stall();
+        case set_control_line_state:
+            control_lines_ = s.value & 3;
+            return ep0_status_in();
+        case send_break:
+            return ep0_status_in();
+        default:
+            return ep0_stall();
     }
 }
 
 void UsbCdc::get_descriptor(const Setup& s) {
     usbdesc::Bytes d{nullptr, 0};
     switch (s.value >> 8) {
-        case 1: d = usbdesc::device(); break;
-        case 2: d = usbdesc::configuration(); break;
-        case 3: d = usbdesc::string(static_cast<std::uint8_t>(s.value), serial_, string_buffer_); break;
-        default: break;  // no device qualifier: a full-speed-only device stalls it (USB 2.0 9.6.2)
+        case 1:
+            d = usbdesc::device();
+            break;
+        case 2:
+            d = usbdesc::configuration();
+            break;
+        case 3:
+            d = usbdesc::string(static_cast<std::uint8_t>(s.value), serial_, string_buffer_);
+            break;
+        default:
+            break;  // no device qualifier: a full-speed-only device stalls it (USB 2.0 9.6.2)
     }
     if (!d.data) return ep0_stall();
     reply(d.data, d.size, s.length);
@@ -219,7 +257,8 @@ void UsbCdc::ep0_out_done() {
 }
 
 void UsbCdc::configure_endpoints() {
-    reg(usb::ep_ctrl(ep_notify, true)) = usb::ep_enable | usb::ep_int_per_buffer | usb::ep_type_interrupt | notify_buffer;
+    reg(usb::ep_ctrl(ep_notify, true)) =
+        usb::ep_enable | usb::ep_int_per_buffer | usb::ep_type_interrupt | notify_buffer;
     reg(usb::ep_ctrl(ep_in, true)) = usb::ep_enable | usb::ep_int_per_buffer | usb::ep_type_bulk | in_buffers;
     reg(usb::ep_ctrl(ep_out, false)) = usb::ep_enable | usb::ep_int_per_buffer | usb::ep_type_bulk | out_buffers;
     in_ = {};

@@ -58,7 +58,7 @@ private:
     bool ep0_data1_ = true;
     const std::uint8_t* ep0_in_ = nullptr;  // IN data stage still to send
     std::size_t ep0_in_left_ = 0;
-    bool ep0_in_zlp_ = false;  // the data stage ends with a zero-length packet
+    bool ep0_in_zlp_ = false;    // the data stage ends with a zero-length packet
     bool ep0_out_data_ = false;  // the armed EP0 OUT buffer is a data stage (SET_LINE_CODING)
     std::uint8_t ep0_reply_[8] = {};
     std::uint8_t string_buffer_[64] = {};

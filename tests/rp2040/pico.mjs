@@ -12,7 +12,7 @@
 // Usage: pico.mjs IMAGE.elf [--tape FILE [--head-at-end]] [--punch] [--control] [--stop-every N]
 //        [--flash-id HEX16] [--usb-dump FILE] [--out DIR] [--speed X]
 import { spawn } from 'node:child_process';
-import { readFileSync, writeFileSync } from 'node:fs';
+import { appendFileSync, readFileSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -86,10 +86,16 @@ function bridge(host) {
 }
 
 // Runs the emulated chip no faster than real time (times speed), in slices that let I/O in between.
+// A slice runs at most 2 ms of the chip's time: after the process was not scheduled for a while, the
+// chip falls behind instead of catching up in a burst, which would compress, in the host's real time,
+// the adapter's time-outs (its 500 ms watchdog among them).
 function run(mcu, speed) {
   const t0 = performance.now(), n0 = mcu.clock.nanos;
+  let last = t0;
   const slice = () => {
-    const target = n0 + (performance.now() - t0) * 1e6 * speed;
+    const now = performance.now();
+    const target = mcu.clock.nanos + Math.min((now - last) * 1e6 * speed, 2e6);
+    last = now;
     for (let i = 0; i < 100000 && mcu.clock.nanos < target; i++) {
       if (mcu.core.waiting) {
         const next = mcu.clock.nanosToNextAlarm;
@@ -120,10 +126,17 @@ async function main() {
     if (o.usbDump) writeFileSync(o.usbDump, host.dump);
     process.stdout.write(`adapter:${name}\n`);
   };
+  // What the punch punched and the control took, each row as it comes (a test waits on them).
+  if (o.out) {
+    for (const [unit, file] of [[units.punch, 'punched.bin'], [units.control, 'taken.bin']]) {
+      if (!unit) continue;
+      const path = join(o.out, file);
+      writeFileSync(path, '');
+      unit.onRow = (row) => appendFileSync(path, Uint8Array.of(row));
+    }
+  }
   const finish = () => {
     if (o.out) {
-      if (units.punch) writeFileSync(join(o.out, 'punched.bin'), Uint8Array.from(units.punch.rows));
-      if (units.control) writeFileSync(join(o.out, 'taken.bin'), Uint8Array.from(units.control.taken));
       const stats = { virtual_per_real: ratio(), virtual_ms: mcu.clock.nanos / 1e6 };
       if (units.reader) Object.assign(stats, units.reader.stats());
       if (units.control) stats.frames_after_stop = units.control.afterStop;

@@ -69,6 +69,7 @@ export class Punch {
     pin(mcu, 8).addListener(() => {
       if (!outHigh(mcu, 8)) return;
       this.rows.push(bus(mcu, 0));
+      this.onRow?.(this.rows.at(-1));
       setIn(mcu, 22, false);
       this.readyAlarm.schedule(this.cycle);
     });
@@ -99,6 +100,7 @@ export class Control {
   strobe() {
     const frame = bus(this.mcu, 0);
     this.taken.push(frame);
+    this.onRow?.(frame);
     if (!this.run) {
       this.afterStop[this.afterStop.length - 1]++;
       return;
