@@ -17,9 +17,9 @@ using namespace std::chrono_literals;
 
 namespace {
 
-#define PICO_OR_SKIP(name, dir, ...)                                                 \
-    if (std::string why = pico::unavailable(); !why.empty()) GTEST_SKIP() << why;    \
-    pico::Pico name(dir, __VA_ARGS__);                                               \
+#define PICO_OR_SKIP(name, dir, ...)                                              \
+    if (std::string why = pico::unavailable(); !why.empty()) GTEST_SKIP() << why; \
+    pico::Pico name(dir, __VA_ARGS__);                                            \
     ASSERT_FALSE(name.device.empty()) << "the emulated Pico did not come up: " << name.err()
 
 std::vector<std::uint8_t> pattern(std::size_t n, unsigned salt) {
@@ -29,8 +29,8 @@ std::vector<std::uint8_t> pattern(std::size_t n, unsigned salt) {
 }
 
 std::string write_bytes(const TempDir& dir, const std::string& name, const std::vector<std::uint8_t>& bytes) {
-    std::ofstream(dir.file(name), std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()),
-                                                          static_cast<std::streamsize>(bytes.size()));
+    std::ofstream(dir.file(name), std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     return dir.file(name);
 }
 
@@ -39,9 +39,9 @@ TEST(AdapterPico, EnumeratesAsItsDescriptorsSayWithTheFlashIdAsSerial) {
     PICO_OR_SKIP(p, dir, {"--flash-id", "E66138528B4F4D2A"});
     std::string dump = p.file("usb.txt");
     for (const char* line :
-         {"  bcdUSB 2.00\n", "  bDeviceClass 2\n", "  bMaxPacketSize0 64\n", "  idVendor 0x1209\n", "  idProduct 0x0001\n",
-          "  iManufacturer 1 tape project\n", "  iProduct 2 tape adapter\n", "  iSerial 3 E66138528B4F4D2A\n",
-          "    bNumInterfaces 2\n",
+         {"  bcdUSB 2.00\n", "  bDeviceClass 2\n", "  bMaxPacketSize0 64\n", "  idVendor 0x1209\n",
+          "  idProduct 0x0001\n", "  iManufacturer 1 tape project\n", "  iProduct 2 tape adapter\n",
+          "  iSerial 3 E66138528B4F4D2A\n", "    bNumInterfaces 2\n",
           // The communication interface: CDC, ACM, no AT-command protocol; then the data interface.
           "      bInterfaceNumber 0\n      bAlternateSetting 0\n      bNumEndpoints 1\n      bInterfaceClass 2\n"
           "      bInterfaceSubClass 2\n      bInterfaceProtocol 0\n",

@@ -35,7 +35,8 @@ TEST(Rp2040Wiring, EveryPinTheFirmwareNamesIsInTheTableOnceWithItsDirection) {
     std::set<unsigned> seen;
     for (const auto& p : table) {
         EXPECT_TRUE(seen.insert(p.gpio).second) << "GP" << +p.gpio << " twice";
-        EXPECT_TRUE(p.gpio <= 22 || (p.gpio >= 25 && p.gpio <= 28)) << "GP" << +p.gpio << " is not on the Pico's header";
+        EXPECT_TRUE(p.gpio <= 22 || (p.gpio >= 25 && p.gpio <= 28))
+            << "GP" << +p.gpio << " is not on the Pico's header";
     }
     auto dir_of = [](unsigned g) {
         for (const auto& p : table)
@@ -45,8 +46,8 @@ TEST(Rp2040Wiring, EveryPinTheFirmwareNamesIsInTheTableOnceWithItsDirection) {
     for (unsigned g = bus_first; g <= bus_strobe; ++g) EXPECT_EQ(dir_of(g), static_cast<int>(Dir::out)) << g;
     for (unsigned g = reader_first; g < reader_first + 8u; ++g) EXPECT_EQ(dir_of(g), static_cast<int>(Dir::in)) << g;
     for (unsigned g : {reader_start, reader_reverse, led}) EXPECT_EQ(dir_of(g), static_cast<int>(Dir::out)) << g;
-    for (unsigned g : {control_run, reader_sprocket, reader_tape_out, punch_ready, punch_tape_out, control_reverse,
-                       control_rewind})
+    for (unsigned g :
+         {control_run, reader_sprocket, reader_tape_out, punch_ready, punch_tape_out, control_reverse, control_rewind})
         EXPECT_EQ(dir_of(g), static_cast<int>(Dir::in)) << g;
     // The emulate role's default wiring (tapefw::Wiring: data 0..7, strobe 8, start/stop 9) is X3's.
     for (unsigned g = 0; g <= 9; ++g) EXPECT_TRUE(control_side(g)) << g;

@@ -35,8 +35,12 @@ inline std::string unavailable() {
 class Pico {
 public:
     Pico(const TempDir& dir, std::vector<std::string> args) : dir_(dir) {
-        std::vector<std::string> all = {std::string(TAPE_SOURCE_DIR) + "/tests/rp2040/pico.mjs", TAPE_RP2040_ELF,
-                                        "--out", dir.path, "--usb-dump", dir.file("usb.txt")};
+        std::vector<std::string> all = {std::string(TAPE_SOURCE_DIR) + "/tests/rp2040/pico.mjs",
+                                        TAPE_RP2040_ELF,
+                                        "--out",
+                                        dir.path,
+                                        "--usb-dump",
+                                        dir.file("usb.txt")};
         all.insert(all.end(), args.begin(), args.end());
         pid_ = spawn_to_files(TAPE_NODE, all, dir.file("pico.out"), dir.file("pico.err"));
         // It prints the device string once the host side has enumerated the device.
