@@ -67,13 +67,14 @@ TEST(AdapterPico, InfoAndSelftestThroughTheCli) {
     EXPECT_NE(self.out.find(" 0 wrong, 0 bad packets in, 0 out"), std::string::npos) << self.out;
 }
 
-// 10^5 frames from the emulated ФС-1501 at 1500 frames/s (67 s): every one once, in order.
+// 10^5 frames from the emulated ФС-1501 at 1500 frames/s (67 s on the chip's clock; longer in real time
+// on a loaded machine, where the emulator falls behind): every one once, in order.
 TEST(AdapterPico, ReadsAHundredThousandFramesNoneLostNorDoubled) {
     TempDir dir;
     auto tape = pattern(100000, 3);
     PICO_OR_SKIP(p, dir, {"--tape", write_bytes(dir, "tape.bin", tape)});
     Process read({"read", p.device, "-o", dir.file("read.ptp")}, dir);
-    EXPECT_EQ(read.wait(150s), 0) << read.err();
+    EXPECT_EQ(read.wait(400s), 0) << read.err();
     auto got = read_text(dir.file("read.ptp"));
     EXPECT_EQ(got.size(), tape.size());
     EXPECT_TRUE(std::vector<std::uint8_t>(got.begin(), got.end()) == tape) << "the frames differ";
