@@ -130,6 +130,35 @@ TEST(AdapterPico, AHostThatStallsForASecondLosesNothing) {
     EXPECT_EQ(got, tape);
 }
 
+// The emulate role with a host that stalls for a second (its watchdog set longer): the queue runs dry,
+// the strobe is held, and the control takes every frame once, in order, none wrong.
+TEST(AdapterPico, AnEmulatingHostThatStallsForASecondHoldsTheStrobe) {
+    TempDir dir;
+    PICO_OR_SKIP(p, dir, {"--control"});
+    auto frames = pattern(1500, 8);
+    {
+        tape::adapter::Session s(tape::adapter::open_pipe(p.device));
+        tapefw::Config config;
+        config.watchdog_ms = 3000;
+        s.configure(config);
+        s.start_emulation();
+        auto feed = [&](std::size_t upto, std::chrono::seconds deadline) {
+            auto end = std::chrono::steady_clock::now() + deadline;
+            while (s.taken().taken < upto && std::chrono::steady_clock::now() < end) {
+                std::size_t from = s.taken().next;
+                s.offer(static_cast<std::uint32_t>(from), {frames.data() + from, std::min(upto, frames.size()) - from});
+                s.pump_emulation(10ms);
+            }
+        };
+        feed(400, 20s);
+        std::this_thread::sleep_for(1s);  // the host stalls; the control has taken all it was given
+        feed(frames.size(), 30s);
+        EXPECT_EQ(s.taken().taken, frames.size());
+    }
+    ASSERT_TRUE(p.stop()) << p.err();
+    EXPECT_EQ(p.bytes("taken.bin"), frames);
+}
+
 TEST(AdapterPico, PunchesEveryRowInOrderThroughTheCli) {
     TempDir dir;
     auto rows = pattern(450, 6);
