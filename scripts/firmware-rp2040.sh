@@ -2,7 +2,7 @@
 # Builds the tape adapter's firmware for a Raspberry Pi Pico (firmware/rp2040 with the shared core,
 # firmware/core): boot stage 2 with its CRC32 (scripts/rp2040_boot2.py), the image as
 # OUT/tape-adapter-rp2040.elf and OUT/tape-adapter-rp2040.uf2 (scripts/elf2uf2.py), and prints its flash
-# and RAM against the budget (32 KB flash, 16 KB RAM, the stack included). Exit 77 (skipped) when the
+# and RAM against the budget (32 KB flash, 16 KB RAM, its 4 KB stack included). Exit 77 (skipped) when the
 # cross compiler is missing; 1 when the image does not build or is over budget.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -36,7 +36,7 @@ python3 scripts/elf2uf2.py "$elf" "$out/tape-adapter-rp2040.uf2"
 
 read -r text data bss _ < <(arm-none-eabi-size "$elf" | tail -n 1)
 flash=$((text + data)) ram=$((data + bss))
-echo "firmware-rp2040: $elf: flash $flash bytes (budget 32768), RAM $ram bytes with 2048 of stack (budget 16384)"
+echo "firmware-rp2040: $elf: flash $flash bytes (budget 32768), RAM $ram bytes with 4096 of stack (budget 16384)"
 if [ "$flash" -gt 32768 ] || [ "$ram" -gt 16384 ]; then
   echo "firmware-rp2040: over budget" >&2
   exit 1
