@@ -42,7 +42,7 @@ inline constexpr std::uint8_t reader_start = 19;
 inline constexpr std::uint8_t reader_reverse = 20;
 inline constexpr std::uint8_t reader_tape_out = 21;
 inline constexpr std::uint8_t punch_ready = 22;
-inline constexpr std::uint8_t led = 25;  ///< the Pico's own LED: on while a run is going
+inline constexpr std::uint8_t led = 25;  ///< the Pico's own LED: on while the reader is told to run
 inline constexpr std::uint8_t punch_tape_out = 26;
 inline constexpr std::uint8_t control_reverse = 27;
 inline constexpr std::uint8_t control_rewind = 28;
@@ -71,7 +71,7 @@ inline constexpr Pin table[] = {
     {20, "X1", "reader direction", Dir::out, to_ttl},
     {21, "X1", "reader tape out", Dir::in, from_ttl},
     {22, "X2", "punch ready (sync)", Dir::in, from_ttl},
-    {25, "Pico", "LED: a run is going", Dir::out, "none (on the board)"},
+    {25, "Pico", "LED: the reader is told to run", Dir::out, "none (on the board)"},
     {26, "X2", "punch tape out", Dir::in, from_ttl},
     {27, "X3", "the control's direction", Dir::in, from_ttl},
     {28, "X3", "the control's rewind", Dir::in, from_ttl},
