@@ -36,7 +36,7 @@ firmware() {
   [ "$status" -eq 77 ] && return 0 # no cross compiler: the script said so
   [ "$status" -eq 0 ] || return "$status"
   bash scripts/firmware-rp2040.sh build-firmware || return
-  ctest --test-dir build --output-on-failure -L rp2040 || return
+  ctest --test-dir build --output-on-failure -j"$jobs" -L rp2040 || return
   echo "test: firmware stage took $((SECONDS - start)) s"
 }
 
