@@ -5,7 +5,8 @@
 # Usage: install-deps.sh [PURPOSE...]   (no purpose: all)
 #   run       build and run the tape CLI (scripts/demo.sh)
 #   features  the libraries of optional features (see below)
-#   test      run and features, and what the tests need (scripts/test.sh, scripts/build.sh, scripts/fuzz.sh)
+#   test      run and features, and what the tests need (scripts/test.sh, scripts/build.sh, scripts/fuzz.sh);
+#             also the npm package rp2040js, pinned in tests/rp2040/package-lock.json (npm ci there)
 #   firmware  the Cortex-M0+ cross toolchain (scripts/firmware-build.sh)
 #   all       all of these
 #
@@ -51,6 +52,7 @@ test=(
   file
   xxd
   stress-ng
+  nodejs
 )
 firmware=(
   gcc-arm-none-eabi
@@ -63,14 +65,15 @@ usage() {
 }
 
 packages=()
+rp2040js=no
 [ $# -eq 0 ] && set -- all
 for purpose in "$@"; do
   case $purpose in
     run) packages+=("${run[@]}") ;;
     features) packages+=("${features[@]}") ;;
-    test) packages+=("${run[@]}" "${features[@]}" "${test[@]}") ;;
+    test) packages+=("${run[@]}" "${features[@]}" "${test[@]}") rp2040js=yes ;;
     firmware) packages+=("${firmware[@]}") ;;
-    all) packages+=("${run[@]}" "${features[@]}" "${test[@]}" "${firmware[@]}") ;;
+    all) packages+=("${run[@]}" "${features[@]}" "${test[@]}" "${firmware[@]}") rp2040js=yes ;;
     -h | --help)
       usage
       exit 0
@@ -94,7 +97,20 @@ for p in "${packages[@]}"; do
   [[ " ${missing[*]} " == *" $p "* ]] && continue
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+# Debian's nodejs comes without npm (a package of its own); NodeSource's brings it along.
+[ "$rp2040js" = yes ] && ! command -v npm >/dev/null && missing+=(npm)
+
+# The emulated RP2040 the firmware tests run on (tests/rp2040): the versions in its lock file.
+install_rp2040js() {
+  [ "$rp2040js" = yes ] || return 0
+  [ -f tests/rp2040/node_modules/rp2040js/package.json ] && return 0
+  (cd tests/rp2040 && npm ci --no-audit --no-fund)
+}
+cd "$(dirname "$0")/.."
+if [ ${#missing[@]} -eq 0 ]; then
+  install_rp2040js
+  exit 0
+fi
 sudo=()
 if [ "$(id -u)" -ne 0 ]; then
   command -v sudo >/dev/null || {
@@ -111,3 +127,4 @@ echo "install-deps: installing ${missing[*]}" >&2
 # take as much disk again as the packages they hold.
 "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
   -o APT::Keep-Downloaded-Packages=false "${missing[@]}"
+install_rp2040js

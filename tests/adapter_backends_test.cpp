@@ -2,7 +2,10 @@
 // usb: (libusb, vendor bulk endpoints) and hid: (hidapi on hidraw). Each runs the same cases against
 // the firmware core (fake::Adapter); for usb: and hid: the kernel's usbfs and hidraw are umockdev's,
 // the only double. The library is driven in this process, and the tape CLI as a child process with
-// umockdev's preload library, as a user would run it.
+// umockdev's preload library, as a user would run it. A fourth time, link pico, the cases that apply
+// run against the RP2040 firmware on an emulated Pico (tests/rp2040), its CDC port on a pseudo-terminal:
+// those injecting link faults, unplugging, row flags, reading backwards or a control's own lines do not
+// (the emulated board has none of these), and its serial string is its flash id.
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -15,6 +18,7 @@
 #include "device/adapter_session.hpp"
 #include "fake_adapter/fake_adapter.hpp"
 #include "process_util.hpp"
+#include "rp2040/pico_util.hpp"
 #include "tape/adapter.hpp"
 #include "tape/device.hpp"
 #include "tape/encode.hpp"
@@ -66,10 +70,51 @@ void expect_reads(tape::Transport& t, const std::vector<std::uint8_t>& expected)
     EXPECT_EQ(r.frames, expected);
 }
 
+// What a case runs against: fake::Adapter, or for Link::pico the emulated Pico with the reader's tape, the
+// punch, and the control when the options ask for one.
+class Dut {
+public:
+    explicit Dut(const fake::Options& o) {
+        if (o.link != Link::pico) {
+            fake_ = std::make_unique<fake::Adapter>(o);
+            return;
+        }
+        std::vector<std::string> args = {"--punch"};
+        if (!o.tape.empty()) {
+            std::ofstream(dir_.file("tape.bin"), std::ios::binary)
+                .write(reinterpret_cast<const char*>(o.tape.data()), static_cast<std::streamsize>(o.tape.size()));
+            args.insert(args.end(), {"--tape", dir_.file("tape.bin")});
+        }
+        if (o.sim.control) args.push_back("--control");
+        pico_ = std::make_unique<pico::Pico>(dir_, args);
+        if (pico_->device.empty()) throw std::runtime_error("the emulated Pico did not come up: " + pico_->err());
+    }
+    const std::string& device() const { return fake_ ? fake_->device() : pico_->device; }
+    std::vector<std::uint8_t> punched() const { return fake_ ? fake_->punched() : pico_->bytes("punched.bin"); }
+    std::vector<std::uint8_t> control_taken() const {
+        return fake_ ? fake_->control_taken() : pico_->bytes("taken.bin");
+    }
+    std::string control_stats() const { return fake_ ? fake_->control_stats() : ""; }
+    std::vector<std::string> unexpected() const { return fake_ ? fake_->unexpected() : std::vector<std::string>{}; }
+    void send_garbage() { fake_->send_garbage(); }
+
+private:
+    TempDir dir_;
+    std::unique_ptr<fake::Adapter> fake_;
+    std::unique_ptr<pico::Pico> pico_;
+};
+
+// A case that does not apply to the emulated Pico says why.
+#define NOT_ON_PICO(why) \
+    if (GetParam() == Link::pico) GTEST_SKIP() << "not on the emulated Pico: " << why
+
 class AdapterBackend : public ::testing::TestWithParam<Link> {
 protected:
     void SetUp() override {
-        if (GetParam() != Link::cdc) {
+        if (GetParam() == Link::pico) {
+            std::string why = pico::unavailable();
+            if (!why.empty()) GTEST_SKIP() << why;
+        } else if (GetParam() != Link::cdc) {
             std::string why = fake::umockdev_unavailable();
             if (!why.empty()) GTEST_SKIP() << why;
         }
@@ -83,12 +128,12 @@ protected:
         return o;
     }
     // Every request the host made was one a host has business making.
-    static void expect_clean(const fake::Adapter& a) {
+    static void expect_clean(const Dut& a) {
         for (const auto& u : a.unexpected()) ADD_FAILURE() << "unexpected request: " << u;
     }
     // Waits until the simulated control has taken n frames, or until the deadline (the test then sees
     // fewer): tape emulate feeds it at its own pace from another process.
-    static void wait_taken(const fake::Adapter& a, std::size_t n, std::chrono::seconds deadline) {
+    static void wait_taken(const Dut& a, std::size_t n, std::chrono::seconds deadline) {
         auto end = std::chrono::steady_clock::now() + deadline;
         while (a.control_taken().size() < n && std::chrono::steady_clock::now() < end)
             std::this_thread::sleep_for(20ms);
@@ -106,7 +151,8 @@ struct ChildPreload {
 };
 
 TEST_P(AdapterBackend, AnswersInfoWithItsSerialAndCapabilities) {
-    fake::Adapter a(options({}, "INFO-" + std::string(fake::link_name(GetParam()))));
+    NOT_ON_PICO("its serial string is its flash id (AdapterPico.InfoAndSelftestThroughTheCli)");
+    Dut a(options({}, "INFO-" + std::string(fake::link_name(GetParam()))));
     tape::AdapterInfo info = tape::adapter_info(a.device());
     EXPECT_EQ(info.serial, "INFO-" + std::string(fake::link_name(GetParam())));
     EXPECT_TRUE(info.reader);
@@ -118,7 +164,7 @@ TEST_P(AdapterBackend, AnswersInfoWithItsSerialAndCapabilities) {
 
 TEST_P(AdapterBackend, ReadsATapeWholeEveryFrameOnce) {
     auto tape = pattern(9000);
-    fake::Adapter a(options(tape));
+    Dut a(options(tape));
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
     expect_reads(*t, tape);
     expect_clean(a);
@@ -127,12 +173,13 @@ TEST_P(AdapterBackend, ReadsATapeWholeEveryFrameOnce) {
 // From the tape's end, direction=reverse: the rows come last first, and the rows the adapter flags are
 // named in runs of alike ones, counted in the order they came.
 TEST_P(AdapterBackend, ReadsBackwardsAndNamesTheRowsTheReaderDoubts) {
+    NOT_ON_PICO("the board neither reads backwards nor flags rows");
     auto tape = pattern(3000, 9);
     auto o = options(tape);
     o.sim.head_at_end = true;
     o.sim.row_flags = {
         {10, tapefw::row_flag::no_sprocket}, {11, tapefw::row_flag::no_sprocket}, {2000, tapefw::row_flag::marginal}};
-    fake::Adapter a(o);
+    Dut a(o);
     auto t = tape::open_device(a.device() + "&direction=reverse", tape::DeviceUse::read);
     EXPECT_TRUE(t->backwards());
     expect_reads(*t, std::vector<std::uint8_t>(tape.rbegin(), tape.rend()));
@@ -158,7 +205,7 @@ TEST(AdapterDoubts, BeyondTheRunsKeptDoubtfulRowsAreCounted) {
     o.tape = tape;
     for (std::uint64_t f = 0; f < rows; ++f)
         o.sim.row_flags.emplace_back(f, f % 2 ? tapefw::row_flag::timing : tapefw::row_flag::marginal);
-    fake::Adapter a(o);
+    Dut a(o);
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
     expect_reads(*t, tape);
     auto doubts = t->take_doubts();
@@ -169,12 +216,13 @@ TEST(AdapterDoubts, BeyondTheRunsKeptDoubtfulRowsAreCounted) {
 }
 
 TEST_P(AdapterBackend, RecoversADroppedADuplicatedAndADamagedPacket) {
+    NOT_ON_PICO("no fault to inject on its link");
     auto tape = pattern(6000, 1);
     auto o = options(tape);
     o.faults.drop_rows_packet = 3;
     o.faults.duplicate_rows_packet = 6;
     o.faults.corrupt_rows_packet = 9;
-    fake::Adapter a(o);
+    Dut a(o);
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
     expect_reads(*t, tape);
     auto notes = t->take_notes();
@@ -184,8 +232,9 @@ TEST_P(AdapterBackend, RecoversADroppedADuplicatedAndADamagedPacket) {
 }
 
 TEST_P(AdapterBackend, GarbageOnTheLineIsSkippedWithoutReplugging) {
+    NOT_ON_PICO("no noise to inject on its link");
     auto tape = pattern(12000, 2);
-    fake::Adapter a(options(tape));
+    Dut a(options(tape));
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
     std::thread noise([&a] {
         for (int i = 0; i < 10; ++i) {
@@ -201,11 +250,12 @@ TEST_P(AdapterBackend, GarbageOnTheLineIsSkippedWithoutReplugging) {
 }
 
 TEST_P(AdapterBackend, FramesLostForGoodAreReportedWithTheirRange) {
+    NOT_ON_PICO("no fault to inject on its link");
     auto tape = pattern(6000, 3);
     auto o = options(tape);
     o.faults.drop_rows_packet = 4;
     o.faults.drop_times = 1000000;
-    fake::Adapter a(o);
+    Dut a(o);
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
     auto start = std::chrono::steady_clock::now();
     ReadRun r = read_all(*t);
@@ -218,10 +268,11 @@ TEST_P(AdapterBackend, FramesLostForGoodAreReportedWithTheirRange) {
 }
 
 TEST_P(AdapterBackend, UnpluggedWhileReadingKeepsEveryFrameBeforeAndSaysSo) {
+    NOT_ON_PICO("it cannot be unplugged");
     auto tape = pattern(20000, 4);
     auto o = options(tape);
     o.unplug_after = 3000;
-    fake::Adapter a(o);
+    Dut a(o);
     auto t = tape::open_device(a.device(), tape::DeviceUse::read);
     ReadRun r = read_all(*t);
     EXPECT_NE(r.error.find("gone"), std::string::npos) << r.error;
@@ -232,7 +283,7 @@ TEST_P(AdapterBackend, UnpluggedWhileReadingKeepsEveryFrameBeforeAndSaysSo) {
 }
 
 TEST_P(AdapterBackend, PunchesEveryRowInOrder) {
-    fake::Adapter a(options());
+    Dut a(options());
     auto rows = pattern(1200, 5);
     {
         auto t = tape::open_device(a.device(), tape::DeviceUse::write);
@@ -244,8 +295,9 @@ TEST_P(AdapterBackend, PunchesEveryRowInOrder) {
 }
 
 TEST_P(AdapterBackend, ChoosesTheAdapterBySerialAndNamesTheOthersWhenNoneMatches) {
-    fake::Adapter first(options(pattern(10), "SERIAL-A"));
-    fake::Adapter second(options(pattern(10), "SERIAL-B"));
+    NOT_ON_PICO("its serial string is its flash id");
+    Dut first(options(pattern(10), "SERIAL-A"));
+    Dut second(options(pattern(10), "SERIAL-B"));
     {
         auto t = tape::open_device(second.device(), tape::DeviceUse::read);
         EXPECT_EQ(read_all(*t).frames, pattern(10));
@@ -268,9 +320,10 @@ TEST_P(AdapterBackend, ChoosesTheAdapterBySerialAndNamesTheOthersWhenNoneMatches
 }
 
 TEST_P(AdapterBackend, RefusesAnAdapterSpeakingAnotherProtocolVersion) {
+    NOT_ON_PICO("its firmware speaks the one protocol version");
     auto o = options();
     o.faults.protocol = 99;
-    fake::Adapter a(o);
+    Dut a(o);
     try {
         tape::adapter_info(a.device());
         ADD_FAILURE() << "no refusal";
@@ -282,8 +335,9 @@ TEST_P(AdapterBackend, RefusesAnAdapterSpeakingAnotherProtocolVersion) {
 }
 
 TEST_P(AdapterBackend, SelfTestEchoesEveryPacketUnchanged) {
-    fake::Adapter a(options());
-    tape::AdapterSelftest s = tape::adapter_selftest(a.device(), 300ms, 7);
+    Dut a(options());
+    // The emulated Pico runs at real time at most (the fake adapter at 20 times), behind two processes.
+    tape::AdapterSelftest s = tape::adapter_selftest(a.device(), GetParam() == Link::pico ? 3000ms : 300ms, 7);
     EXPECT_GT(s.packets, 10u);
     EXPECT_EQ(s.mismatches, 0u);
     EXPECT_EQ(s.bad_in, 0u);
@@ -299,17 +353,18 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
     // The child sees the umockdev devices through the same preload library.
     ChildPreload preload;
     {
-        fake::Adapter a(options(tape));
+        Dut a(options(tape));
         Process read({"read", a.device(), "-o", dir.file("whole.ptp")}, dir);
         EXPECT_EQ(read.wait(60s), 0) << read.err();
         auto got = read_text(dir.file("whole.ptp"));
         EXPECT_EQ(std::vector<std::uint8_t>(got.begin(), got.end()), tape);
         expect_clean(a);
     }
+    if (GetParam() == Link::pico) return;  // it cannot be unplugged
     {
         auto o = options(tape);
         o.unplug_after = 2000;
-        fake::Adapter a(o);
+        Dut a(o);
         Process read({"read", a.device(), "-o", dir.file("part.ptp")}, dir);
         EXPECT_EQ(read.wait(60s), 3) << read.err();
         EXPECT_NE(read.err().find("gone"), std::string::npos) << read.err();
@@ -324,6 +379,9 @@ TEST_P(AdapterBackend, TapeReadThroughTheCliEndsWellOrWithExitThreeAndTheFramesO
 // tape emulate through the backend, a real process: the control reads the program, stops at its end
 // (M30), and reads it again from its '%' stop; its random stops see at most one frame more.
 TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsPercentStop) {
+    NOT_ON_PICO(
+        "the emulated control does not stop at a program's end "
+        "(AdapterPico.TapeEmulateStopsWithinAFrameOfTheControlsStop)");
     TempDir dir;
     auto frames = tape::encode("%\nN1 G01 X10 F100\nN2 X20 Y-5\nN3 G00 Z50\nN4 M30\n", {});
     write_frames(dir.file("p.ptp"), frames);
@@ -334,7 +392,7 @@ TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsP
     std::vector<std::uint8_t> program(first, past_m30 + 1);
     auto o = options();
     o.sim.control = tapesim::ControlOptions{.stops = 4, .pause_min_us = 2000, .pause_max_us = 4000};
-    fake::Adapter a(o);
+    Dut a(o);
     ChildPreload preload;
     Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
     wait_taken(a, 2 * program.size(), 30s);
@@ -356,6 +414,7 @@ TEST_P(AdapterBackend, TapeEmulateFeedsTheControlAndGivesTheProgramAgainFromItsP
 // The control's own lines: its direction line reads backwards from where the tape stands, its rewind
 // line rewinds to the '%' stop.
 TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
+    NOT_ON_PICO("the emulated control has no direction or rewind line");
     TempDir dir;
     auto frames = tape::encode("%\nN1 G01 X10 F100\nN2 X20 Y-5\nN3 G00 Z50\nN4 X0\nN5 Y0\n", {});
     write_frames(dir.file("p.ptp"), frames);
@@ -363,7 +422,7 @@ TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
         std::find_if(frames.begin(), frames.end(), [](tape::Frame f) { return f != tape::blank_frame; }), frames.end());
     auto o = options();
     o.sim.control = tapesim::ControlOptions{.rewind_after = 70, .reverse_after = 40, .reverse_frames = 10};
-    fake::Adapter a(o);
+    Dut a(o);
     ChildPreload preload;
     Process emulate({"emulate", dir.file("p.ptp"), a.device()}, dir);
     wait_taken(a, 100, 30s);
@@ -388,7 +447,7 @@ TEST_P(AdapterBackend, TapeEmulateFollowsTheControlsDirectionAndRewindLines) {
 TEST_P(AdapterBackend, AnEmulationTheWatchdogEndedIsToldToTheNextHost) {
     auto o = options();
     o.sim.control = tapesim::ControlOptions{};
-    fake::Adapter a(o);
+    Dut a(o);
     std::vector<std::uint8_t> frames(5000, 0x55);
     {
         tape::adapter::Session s(tape::adapter::open_pipe(a.device()));
@@ -435,7 +494,7 @@ TEST(AdapterDevices, TapeDevicesListsUsbAndHidAdaptersBySerialAndProbesThem) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Links, AdapterBackend, ::testing::Values(Link::cdc, Link::usb, Link::hid),
+INSTANTIATE_TEST_SUITE_P(Links, AdapterBackend, ::testing::Values(Link::cdc, Link::usb, Link::hid, Link::pico),
                          [](const auto& info) { return std::string(fake::link_name(info.param)); });
 
 }  // namespace

@@ -521,3 +521,57 @@ TEST(AdapterEngine, ReverseIsRefusedByAReaderThatCannot) {
     EXPECT_EQ(e.code, ErrorCode::bad_payload);
     EXPECT_EQ(b.hw.drive_state(), Drive::stop);
 }
+
+// On a board the sprocket interrupt can store a row between poll() reading the time and checking the
+// sprocket time-out (the emulated RP2040 did so within a second of reading): that row is newer than poll's
+// `now`, and must not read as 2^32 µs old, a torn tape.
+namespace {
+struct RowDuringPoll final : Hardware {
+    Engine* engine = nullptr;
+    std::uint32_t t = 1000;
+    bool row_in_poll = false, sent_torn = false;
+    std::uint32_t now_us() override {
+        std::uint32_t now = t;
+        if (row_in_poll && engine) {
+            row_in_poll = false;
+            ++t;  // the interrupt comes a microsecond after poll read the time
+            engine->on_row(0x55);
+        }
+        return now;
+    }
+    bool send(const std::uint8_t* b, std::size_t n) override {
+        StreamDecoder d;
+        for (std::size_t i = 0; i < n; ++i)
+            if (d.feed(b[i]) == StreamDecoder::Event::packet &&
+                d.packet().type == static_cast<std::uint8_t>(Msg::status)) {
+                Status s;
+                if (s.decode(d.packet()) && (s.bits & status::torn)) sent_torn = true;
+            }
+        return true;
+    }
+    void drive(Drive) override {}
+    bool punch_ready() override { return true; }
+    void punch(std::uint8_t) override {}
+    std::uint16_t status_lines() override { return 0; }
+    void configure(const Config&) override {}
+};
+}  // namespace
+
+TEST(AdapterEngine, ARowStoredWhilePollRunsIsNoTornTape) {
+    RowDuringPoll hw;
+    Engine engine(hw, Identity{});
+    hw.engine = &engine;
+    Packet p;
+    ReadStart{}.encode(p);
+    p.seq = 1;
+    std::uint8_t out[max_framed];
+    engine.receive(out, frame_packet(p, out));
+    for (int i = 0; i < 100; ++i) {
+        hw.t += 600;
+        engine.on_row(0x2A);
+        hw.row_in_poll = true;
+        engine.poll();
+    }
+    EXPECT_TRUE(engine.reading());
+    EXPECT_FALSE(hw.sent_torn);
+}

@@ -94,6 +94,13 @@ void Engine::poll() {
     }
 }
 
+// The sprocket interrupt may store a row's time after poll() read `now`: a row newer than now is 0 µs old
+// (now - last would wrap to a time-out, and end a good read as torn tape).
+std::uint32_t Engine::since_row(std::uint32_t now) const {
+    std::uint32_t age = now - last_row_us_;
+    return age > 0x80000000u ? 0 : age;
+}
+
 void Engine::watch_reading(std::uint32_t now, std::uint16_t lines) {
     std::uint32_t read = head_ - start_frame_;
     if (lines & (status::tape_out | status::motor_fault | status::offline)) {
@@ -101,7 +108,7 @@ void Engine::watch_reading(std::uint32_t now, std::uint16_t lines) {
         last_status_ = lines;
     } else if (max_rows_ && read >= max_rows_) {
         end_read(status::read_done);
-    } else if (driving_ && elapsed(now, last_row_us_, static_cast<std::uint32_t>(config_.sprocket_timeout_ms) * 1000)) {
+    } else if (driving_ && since_row(now) >= static_cast<std::uint32_t>(config_.sprocket_timeout_ms) * 1000) {
         end_read(status::torn);
     } else {
         if (elapsed(now, window_start_us_, 1000000)) {
@@ -212,7 +219,8 @@ void Engine::start_reading(const Packet& p) {
     reverse_ = r.reverse;
     max_rows_ = r.max_rows;
     rate_ = r.rate;
-    window_start_us_ = last_row_us_ = last_rows_sent_us_ = hw_.now_us();
+    window_start_us_ = last_rows_sent_us_ = hw_.now_us();
+    last_row_us_ = window_start_us_;
     window_rows_ = 0;
     reading_ = true;
     reply_ok(p);

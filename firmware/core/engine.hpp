@@ -94,7 +94,8 @@ private:
     bool paused_ = false;   ///< stopped for lack of room, to go on when the host catches up
     std::uint8_t reverse_ = 0;
     std::uint32_t max_rows_ = 0, start_frame_ = 0;
-    std::uint32_t last_row_us_ = 0, last_rows_sent_us_ = 0;
+    volatile std::uint32_t last_row_us_ = 0;  ///< set by the sprocket interrupt (on_row)
+    std::uint32_t last_rows_sent_us_ = 0;
     std::uint16_t rate_ = 0;
     std::uint32_t window_start_us_ = 0, window_rows_ = 0;  ///< rows in the current second, for rate
     bool overrun_ = false;
@@ -131,6 +132,7 @@ private:
     Status last_event_{};  ///< the last STATUS sent, sent again on a RESEND after the run ended
 
     void watch_reading(std::uint32_t now, std::uint16_t lines);
+    std::uint32_t since_row(std::uint32_t now) const;
     void drive_punch(std::uint16_t lines);
     void handle(const Packet& p);
     // The host's requests, one function each.

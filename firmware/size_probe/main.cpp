@@ -1,6 +1,6 @@
 // Links the adapter core with a board whose lines are made-up memory-mapped registers, only so that
 // scripts/firmware-build.sh can measure the flash and RAM the core takes on a Cortex-M0+. It is no
-// firmware to flash: the board glue for a real microcontroller is still to be written (docs/adapter-protocol.md).
+// firmware to flash: firmware/rp2040 is the Raspberry Pi Pico's (docs/rp2040-wiring.md).
 #include "core/engine.hpp"
 namespace {
 struct Probe final : tapefw::Hardware {

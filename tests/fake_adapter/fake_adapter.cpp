@@ -99,6 +99,8 @@ const char* link_name(Link link) {
             return "usb";
         case Link::hid:
             return "hid";
+        case Link::pico:
+            return "pico";
     }
     return "?";
 }
@@ -170,6 +172,7 @@ struct Adapter::Impl {
     int master = -1, slave = -1;
 
     explicit Impl(Options options) : o(std::move(options)), hw(o.tape, o.sim), filter(o.faults) {
+        if (o.link == Link::pico) throw std::invalid_argument("fake::Adapter does not play the emulated Pico");
         id.serial = o.serial.c_str();
         id.capabilities |= tapefw::caps::reverse | tapefw::caps::row_flags;  // SimHardware does both
         if (o.sim.control) id.capabilities |= tapefw::caps::emulate;

@@ -19,7 +19,8 @@
 
 namespace fake {
 
-enum class Link { cdc, usb, hid };
+/// pico: the RP2040 firmware on an emulated Pico (tests/rp2040/pico_util.hpp), not made by Adapter.
+enum class Link { cdc, usb, hid, pico };
 const char* link_name(Link link);
 
 struct Options {
