@@ -26,5 +26,6 @@ void add_label(CLI::App& app);
 void add_render(CLI::App& app);
 void add_dnc(CLI::App& app);
 void add_scan(CLI::App& app);
+void add_archive(CLI::App& app);
 
 }  // namespace cli
