@@ -198,8 +198,48 @@ TEST(ArchiveCli, IndexListsEveryBag) {
     std::string page = read_text(t.dir.file("bags/index.html"));
     for (const char* s : {"FIRST", "SECOND", "href=\"A-1/data/restored.html\"", "<svg"})
         EXPECT_NE(page.find(s), std::string::npos) << s;
-    EXPECT_EQ(page.find("http"), std::string::npos) << "the page fetches nothing";
+    EXPECT_EQ(page.find("src=\"http"), std::string::npos) << "the page fetches nothing";
+    EXPECT_EQ(page.find("href=\"http"), std::string::npos) << "the page links nowhere outside";
     EXPECT_EQ(tape_run({"archive", "index", t.dir.file("bags")}, t.dir).status, 2);
+}
+
+// The report a person reads first: the places in doubt first, each whole and linked to the tape drawn, the
+// restored ones after, folded; one legend.
+TEST(ArchiveCli, ReportPutsThePlacesToCheckFirst) {
+    TempDir dir;
+    std::vector<std::string> args = {"archive", "create", dir.file("bag")};
+    for (const char* seed : {"11", "12"}) {
+        std::string read = dir.file(std::string("r") + seed + ".ptp");
+        ASSERT_EQ(
+            run(TAPE_DAMAGE_BINARY,
+                {sample_path("gost-20999-format-example.iso.ptp"), "-o", read, "--seed", seed, "--damage", "0.02"}, dir)
+                .status,
+            0);
+        args.insert(args.end(), {"--read", read});
+    }
+    Outcome r = tape_run(args, dir);
+    ASSERT_EQ(r.status, 1) << "two damaged reads leave frames in doubt: " << r.err;
+    std::string page = read_text(dir.file("bag/data/restored.html"));
+    std::string json = read_text(dir.file("bag/data/restored.ptp.restore.json"));
+    std::size_t in_doubt = 0;
+    for (auto at = json.find("\"in_doubt\":true"); at != std::string::npos; at = json.find("\"in_doubt\":true", at + 1))
+        ++in_doubt;
+    ASSERT_GT(in_doubt, 0u);
+    EXPECT_NE(page.find("Places to check: " + std::to_string(in_doubt) + "<"), std::string::npos);
+    std::size_t first_place = page.find("<section class=\"place doubtful\""), folded = page.find("<details>");
+    ASSERT_NE(first_place, std::string::npos);
+    ASSERT_NE(folded, std::string::npos);
+    EXPECT_LT(first_place, folded);
+    std::string place = page.substr(first_place, page.find("</section>", first_place) - first_place);
+    for (const char* s : {"Left open because", "In the program line", "<td>1</td>", "<td>2</td>", "written",
+                          "href=\"tape.svg#f", "<svg"})
+        EXPECT_NE(place.find(s), std::string::npos) << s << " in\n" << place;
+    std::size_t legends = 0;
+    for (auto at = page.find("class=\"legend\""); at != std::string::npos; at = page.find("class=\"legend\"", at + 1))
+        ++legends;
+    EXPECT_EQ(legends, 1u);
+    // And back: the whole tape's doubtful frames link to their place in the page.
+    EXPECT_NE(read_text(dir.file("bag/data/tape.svg")).find("href=\"restored.html#p"), std::string::npos);
 }
 
 // Only tape archive pays for nettle: no other command loads it.

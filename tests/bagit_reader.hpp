@@ -56,6 +56,7 @@ inline std::string coreutils_sum(const std::string& algorithm, const std::string
     char buf[256] = {};
     std::string out = std::fgets(buf, sizeof buf, p) ? buf : "";
     ::pclose(p);
+    if (!out.empty() && out[0] == '\\') out.erase(0, 1);  // coreutils marks a name it had to escape (a line end)
     return out.substr(0, out.find(' '));
 }
 

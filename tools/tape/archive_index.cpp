@@ -67,7 +67,9 @@ void archive_index(const std::string& dir, const std::string& output, bool force
     if (ec) fail(dir, tape::Errc::io, ec.message());
     std::sort(bags.begin(), bags.end());
     std::string s =
-        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Tapes in " +
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+        "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'\">\n"
+        "<title>Tapes in " +
         tape::xml_escaped(dir) +
         "</title>\n<style>body{font-family:sans-serif;margin:1.5em}table{border-collapse:collapse}td,th{border:1px "
         "solid #bbb;padding:.3em .5em;text-align:left;vertical-align:top}th{background:#eee}.thumb svg{width:24em;"

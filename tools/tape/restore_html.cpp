@@ -72,6 +72,14 @@ std::string summary_html(const RestoreReportInput& in) {
     return s + "<td>" + std::to_string(r.run_length_votes) + "</td></tr>\n</table>\n</section>\n";
 }
 
+// Stretches of the tape drawn on the page so far (first, last frame): a frame has one id on the page.
+using Drawn = std::vector<std::pair<std::uint64_t, std::uint64_t>>;
+
+bool is_drawn(const Drawn& drawn, std::uint64_t frame) {
+    return std::any_of(drawn.begin(), drawn.end(),
+                       [&](const auto& d) { return frame >= d.first && frame <= d.second; });
+}
+
 constexpr std::uint64_t line_reach = 80;  // frames looked at each way for a program line's ends
 
 // Frames from..to (1-based) of the restored tape as the code reads them, the problem's own marked.
@@ -142,14 +150,6 @@ std::string problem_row(const RestoreReportInput& in, const tape::RestoreProblem
     s += "<td><code>" + (written ? tape::xml_escaped(frame_text(in.code, p.written)) : std::string("-")) +
          "</code></td><td>" + context_html(in, p) + "</td><td>" + tape::xml_escaped(p.reason) + "</td></tr>\n";
     return s;
-}
-
-// Stretches of the tape drawn on the page so far (first, last frame): a frame has one id on the page.
-using Drawn = std::vector<std::pair<std::uint64_t, std::uint64_t>>;
-
-bool is_drawn(const Drawn& drawn, std::uint64_t frame) {
-    return std::any_of(drawn.begin(), drawn.end(),
-                       [&](const auto& d) { return frame >= d.first && frame <= d.second; });
 }
 
 // The restored tape drawn around one place, every problem frame in it marked and linked to its place (#pN);
