@@ -242,17 +242,18 @@ std::string restore_report_html(const RestoreReportInput& in) {
     s += "<h2 id=\"restored\">Places restored: " + std::to_string(decided.size()) + "</h2>\n";
     if (decided.empty()) s += "<p>None.</p>\n";
     if (!decided.empty()) {
-        s += "<details><summary>" + std::to_string(decided.size()) +
+        // Folded to keep the places to check in sight; open when there are none to check.
+        s += std::string(doubtful.empty() ? "<details open>" : "<details>") + "<summary>" +
+             std::to_string(decided.size()) +
              " frames a vote or a repair decided, or read by a minority and not written: folded, as they need no "
-             "check</summary>\n<table id=\"problems\">\n<tr><th>frame</th><th>line</th><th>from the start</th>"
-             "<th>status</th>";
+             "check</summary>\n";
+        for (std::size_t k = 0; k < std::min(decided.size(), most_rows); ++k)
+            if (drawn.size() < most_drawn) s += drawing_html(in, *decided[k], drawn);  // doubts drawn first
+        s += "<table id=\"problems\">\n<tr><th>frame</th><th>line</th><th>from the start</th><th>status</th>";
         for (std::size_t i = 0; i < in.names.size(); ++i) s += "<th>read " + std::to_string(i + 1) + "</th>";
         s += "<th>written</th><th>around it</th><th>reason</th></tr>\n";
-        std::string drawings;
-        for (std::size_t k = 0; k < std::min(decided.size(), most_rows); ++k)
-            if (drawn.size() < 2 * most_drawn) drawings += drawing_html(in, *decided[k], drawn);
         for (std::size_t k = 0; k < std::min(decided.size(), most_rows); ++k) s += problem_row(in, *decided[k], drawn);
-        s += "</table>\n" + drawings;
+        s += "</table>\n";
         if (decided.size() > most_rows)
             s += "<p>" + std::to_string(decided.size() - most_rows) + " more: see the text or JSON report.</p>\n";
         s += "</details>\n";

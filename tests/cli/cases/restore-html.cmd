@@ -9,6 +9,6 @@ grep -oE '(src|href)="[^#"][^"]*"' report.html | head -3
 grep -o 'class="mark [a-z]*"' report.html | sort | uniq -c
 grep -o '<tr class="[a-z]*" id="p[0-9]*"><td><a href="#f[0-9]*">' report.html | head -3
 grep -o '<h2 id="[a-z]*">[^<]*</h2>' report.html
-grep -c '<details>' report.html
+grep -o '<details[a-z ]*>' report.html
 grep -c 'voted' report.txt
 $TAPE restore r11.ptp r12.ptp r13.ptp -o out2.ptp --report report2.txt --html report.html; echo "exit $?"
