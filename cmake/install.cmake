@@ -12,7 +12,7 @@ add_custom_command(TARGET tape POST_BUILD
                    VERBATIM)
 
 # Man pages are installed compressed, as Debian's policy asks; man reads them so.
-set(TAPE_MAN_PAGES man/tape.1 man/tape-damage.1 man/tape-image.5 man/tape-devices.7 man/tape-usb.7)
+set(TAPE_MAN_PAGES man/tape.1 man/tape-archive.1 man/tape-damage.1 man/tape-image.5 man/tape-devices.7 man/tape-usb.7)
 foreach(page ${TAPE_MAN_PAGES})
   get_filename_component(name ${page} NAME)
   string(REGEX REPLACE ".*\\." "" section ${name})

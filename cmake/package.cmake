@@ -21,10 +21,12 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME tape)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION utils)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS "udev")
+# tape archive opens nettle with dlopen (src/archive/digest.cpp), which dpkg-shlibdeps cannot see.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "libnettle8")
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME libtape-core-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 # A static library: what links it needs the USB libraries' development files (tape_coreConfig.cmake, tape_core.pc).
-set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "libusb-1.0-0-dev, libhidapi-dev, pkg-config")
+set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS "libusb-1.0-0-dev, libhidapi-dev, pkg-config, libnettle8")
 # Its scan and pictures load the picture module, which the tape package installs with OpenCV's libraries.
 set(CPACK_DEBIAN_DEV_PACKAGE_SUGGESTS "tape")
 include(CPack)

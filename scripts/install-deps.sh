@@ -27,6 +27,7 @@ run=(
   nlohmann-json3-dev
   libusb-1.0-0-dev
   libhidapi-dev
+  nettle-dev
   man-db
   bash-completion
 )

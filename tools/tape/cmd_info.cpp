@@ -220,6 +220,14 @@ void run(const InfoArgs& a) {
 
 }  // namespace
 
+std::string tape_info_text(const std::string& path, const std::string& shown) {
+    InfoArgs a;
+    a.input = path;
+    InfoFacts f = scan(a);
+    f.name = shown;
+    return text_report(f);
+}
+
 void add_info(CLI::App& app) {
     auto a = std::make_shared<InfoArgs>();
     auto* sub = app.add_subcommand(

@@ -7,12 +7,12 @@
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
-#include "cli/restore_inputs.hpp"
 #include "cli/run.hpp"
 #include "commands.hpp"
 #include "picture_reads.hpp"
 #include "restore_html.hpp"
 #include "restore_report.hpp"
+#include "restore_run.hpp"
 #include "tape/format_spec.hpp"
 #include "tape/restore_doubts.hpp"
 
@@ -24,35 +24,6 @@ struct RestoreArgs {
     std::string output, report, html, format, code = "auto", parity, dialect = "auto", spec;
     bool json = false, force = false, guess = false, drop_unrelated = false, no_doubts_file = false;
 };
-
-tape::RestoreResult run_restore(const RestoreArgs& a, const ReadsAndDoubts& in, const RestoreReportInput& report,
-                                const tape::FormatSpec* spec) {
-    const std::vector<TapeInput>& reads = in.reads;
-    std::vector<std::span<const tape::Frame>> spans;
-    for (const auto& r : reads) spans.emplace_back(r.frames);
-    tape::RestoreOptions o{.code = report.code, .dialect = *tape::parse_dialect(a.dialect), .spec = spec};
-    o.guess = a.guess;
-    o.align.drop_unrelated = a.drop_unrelated;
-    o.doubts = in.doubts;  // a picture's faint holes weigh less than a sure reading
-    try {
-        return tape::restore(spans, o);
-    } catch (const tape::UnrelatedRead& e) {
-        fail(display_name(reads[e.read()].name), tape::Errc::bad_image,
-             unrelated_text(e, reads) + " (--drop-unrelated goes on without it)");
-    } catch (const tape::Error& e) {
-        fail("", e);
-    }
-}
-
-// What the reads and the code say before the report: reads left out, a code that does not fit.
-void say_about_reads(const RestoreReportInput& in, const tape::RestoreResult& r) {
-    for (std::size_t i = 0; i < in.names.size(); ++i)
-        if (!r.related[i]) say(display_name(in.names[i]), "left out: a read of another tape, or too damaged to align");
-    if (in.code && r.code_misfit)
-        say("", "most frames of the reads fail the code " + in.code_text +
-                    ": it is not the tape's, so the reads were only voted, nothing repaired (try --code auto, or "
-                    "another --parity)");
-}
 
 // Restoring aligns and votes in vectors of many megabytes, made and freed stage after stage: glibc gives
 // each back to the system and takes it again, zeroed, a fifth of the run. Freed memory is kept instead.
@@ -83,7 +54,9 @@ void run(const RestoreArgs& a) {
         report.names.push_back(r.name);
         report.sizes.push_back(r.frames.size());
     }
-    tape::RestoreResult result = run_restore(a, in, report, spec ? &*spec : nullptr);
+    RestoreChoices choices{.dialect = a.dialect, .guess = a.guess, .drop_unrelated = a.drop_unrelated};
+    choices.spec = spec ? &*spec : nullptr;
+    tape::RestoreResult result = run_restore(choices, in, report);
     report.result = &result;
     say_about_reads(report, result);
     // The image first: it is what the run is for, and it is written even when not every frame was restored.

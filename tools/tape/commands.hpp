@@ -27,5 +27,6 @@ void add_render(CLI::App& app);
 void add_dnc(CLI::App& app);
 void add_scan(CLI::App& app);
 void add_machines(CLI::App& app);
+void add_archive(CLI::App& app);
 
 }  // namespace cli

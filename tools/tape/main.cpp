@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
     cli::add_dnc(app);
     cli::add_scan(app);
     cli::add_machines(app);
+    cli::add_archive(app);
     cli::add_bash_completion_flag(app, "tape");
     cli::install_output_cleanup();
     return cli::parse_and_run(app, argc, argv, "'tape --help' or 'tape SUBCOMMAND --help'");

@@ -7,12 +7,13 @@
 
 namespace cli {
 
-/// The page: the summary, a table of the problem frames (what each read saw, what was written, why, and
-/// the text around it), each row linked to its frame on the tape (#fN), and the tape drawn to scale
-/// (tape/render.hpp) around the problems only, every problem frame marked and linked back to its row
-/// (#pN). Bounded for any tape: the drawing covers at most most_drawn stretches, and the table at most
-/// most_rows problems (the rest counted), so a 10^6-frame tape with a thousand problems makes a page of
-/// a few megabytes.
+/// The page: the summary and one legend; then the places in doubt (contested, unstable, unresolved, guessed,
+/// missing) first, each with the frame every read has there, the program line it falls in, what was written,
+/// the alternatives and the reason it was left open, the tape drawn around it (every problem frame marked
+/// and linked back to its place, #pN) and, with in.tape_picture, a link to it on the whole tape; then the
+/// places a vote or a repair decided, folded in a table with the tape drawn around them. Bounded for any tape:
+/// at most most_drawn drawings (the places in doubt first) and most_rows places of each kind (the rest counted), so a
+/// 10^6-frame tape with a thousand problems makes a page of a few megabytes.
 std::string restore_report_html(const RestoreReportInput& in);
 
 inline constexpr std::size_t most_drawn = 300;

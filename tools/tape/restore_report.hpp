@@ -16,9 +16,10 @@ struct RestoreReportInput {
     std::vector<std::size_t> sizes;  ///< their frames
     const tape::RestoreResult* result = nullptr;
     std::optional<tape::FrameCode> code;
-    std::string code_text;    ///< "ISO with even parity", or "none"
-    std::string image_name;   ///< the image written ("-": standard output)
-    std::string image_bytes;  ///< the image file as written, for its fingerprint
+    std::string code_text;     ///< "ISO with even parity", or "none"
+    std::string image_name;    ///< the image written ("-": standard output)
+    std::string image_bytes;   ///< the image file as written, for its fingerprint
+    std::string tape_picture;  ///< the HTML page's link to the whole tape drawn ("tape.svg"), with #fN; "": none
 };
 
 /// A stretch to read again: frames (1-based, inclusive) and their distance from the first feed hole.

@@ -24,4 +24,8 @@ std::string binary_block_lines(const tape::BinaryTape& t, bool every, const std:
 /// {"format", "name", "summary", "blocks": [...], "checksums": {...}, "start", "stray_frames"}.
 Json binary_info(const tape::BinaryTape& t);
 
+/// What tape info says of the image at path, its file named shown: code, parity, kind of tape, leader
+/// label, loader format and blocks, frame counts. A file that cannot be read ends the program.
+std::string tape_info_text(const std::string& path, const std::string& shown);
+
 }  // namespace cli

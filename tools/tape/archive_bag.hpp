@@ -1,0 +1,61 @@
+// tape archive's steps (cmd_archive.cpp wires them): a bag made from reads (archive_create.cpp), a later
+// read added, a bag verified (archive_verify.cpp), a folder of bags indexed (archive_index.cpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tape/archive.hpp"
+
+namespace cli {
+
+struct ArchiveCreateArgs {
+    std::string bag, label;
+    std::vector<std::string> reads, scans, photos, meta;
+    bool force = false;
+};
+/// Writes the bag; ends the program (exit 1) when the restoration is not complete, after writing it.
+void archive_create(const ArchiveCreateArgs& a);
+
+/// Adds later reads (tape images) and scans to a bag and restores all its reads again as restored-N.ptp
+/// beside the restorations it has; the bag is replaced whole.
+void archive_add(const std::string& bag, const std::vector<std::string>& reads, const std::vector<std::string>& scans);
+
+/// Checks the bag; with fast, the checksums only, else also that restoring its reads again gives each
+/// restored image it holds. Every difference is said; exit 1 when there is one.
+void archive_verify(const std::string& bag, bool fast);
+
+/// One offline HTML page (output; "": DIR/index.html) of the bags in dir.
+void archive_index(const std::string& dir, const std::string& output, bool force);
+
+/// What one restoration put in a bag, for bag-info.txt.
+struct RestorationSummary {
+    std::string image;     ///< "restored.ptp", "restored-2.ptp"
+    std::string code;      ///< "ISO with even parity", "none"
+    std::string contents;  ///< the contents in words (archive_contents.hpp)
+    std::size_t reads = 0;
+    std::uint64_t frames = 0, in_doubt = 0;
+    bool complete = false;
+    bool unchecked = false;    ///< one read of a tape in no code: nothing could be checked
+    bool code_misfit = false;  ///< most frames fail the code the reads were restored in
+    /// "restored.ptp from 2 reads: 1454 frames, complete" or "..., 79 in doubt".
+    std::string words() const;
+};
+
+/// Restores the reads at paths (named in the bag by names, relative to data/) and adds the restoration's
+/// files to the bag, each name with suffix ("" or "-2"): restoredS.ptp, its report restoredS.ptp.restore.json
+/// and restoredS.html, contentsS/, formatS.txt, tapeS.svg.
+RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suffix,
+                                   const std::vector<std::string>& paths, const std::vector<std::string>& names);
+
+/// The restorations a bag holds, from its payload: ("restored.ptp", reads named relative to data/), in order.
+struct BagRestoration {
+    std::string image;
+    std::vector<std::string> reads;
+};
+std::vector<BagRestoration> bag_restorations(const std::string& bag);
+
+/// This run's command line, quoted for a shell where needed: "tape archive create ...".
+std::string command_line();
+
+}  // namespace cli

@@ -1,0 +1,146 @@
+// One restoration of a bag's reads, with everything tape archive keeps of it (archive_bag.hpp), and the
+// restorations a bag holds.
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "archive_bag.hpp"
+#include "archive_contents.hpp"
+#include "cli/messages.hpp"
+#include "cli/outputs.hpp"
+#include "restore_html.hpp"
+#include "restore_run.hpp"
+#include "tape/file_io.hpp"
+#include "tape/label.hpp"
+#include "tape/render.hpp"
+#include "tape/restore_doubts.hpp"
+#include "tape_report.hpp"
+
+namespace cli {
+namespace {
+
+// The whole tape is drawn up to this many frames (about 50 m of tape, some megabytes of SVG); a longer one,
+// its start, and the file says so.
+constexpr std::uint64_t most_drawn_frames = 20000;
+
+std::string tape_svg(const RestoreReportInput& in, const std::string& html) {
+    const tape::RestoreResult& r = *in.result;
+    tape::RenderOptions o;
+    o.code = in.code ? &*in.code : nullptr;
+    o.to = std::min<std::uint64_t>(r.frames.size(), most_drawn_frames);
+    for (const auto& p : r.problems)
+        if (p.frame && *p.frame <= o.to)
+            o.marks.push_back({*p.frame, tape::in_doubt(p.status) ? tape::MarkKind::doubtful : tape::MarkKind::restored,
+                               std::string(tape::status_name(p.status)) + ": " + p.reason,
+                               html + "#p" + std::to_string(*p.frame)});
+    if (auto label = tape::find_label(r.frames)) o.label_first = label->first + 1, o.label_frames = label->frames;
+    return tape::render_svg(r.frames, o);
+}
+
+std::uint64_t in_doubt_count(const tape::RestoreResult& r) {
+    std::uint64_t n = 0;
+    for (std::size_t k = 0; k < tape::frame_status_count; ++k)
+        if (tape::in_doubt(static_cast<tape::FrameStatus>(k))) n += r.count(static_cast<tape::FrameStatus>(k));
+    return n;
+}
+
+std::string shell_quoted(const std::string& s) {
+    if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=.,/:@%") ==
+                          std::string::npos)
+        return s;
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+}  // namespace
+
+std::string RestorationSummary::words() const {
+    return image + " from " + std::to_string(reads) + " read(s), code " + code + ": " + std::to_string(frames) +
+           " frames, " +
+           (complete      ? "complete"
+            : unchecked   ? "nothing checked (one read of a tape in no character code: no vote, no parity)"
+            : code_misfit ? "not complete (most frames fail the code: only voted)"
+                          : std::to_string(in_doubt) + " in doubt, not complete");
+}
+
+RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suffix,
+                                   const std::vector<std::string>& paths, const std::vector<std::string>& names) {
+    ReadsAndDoubts in = read_tapes_or_pictures(paths);
+    RestoreReportInput report;
+    report.code = code_for_reads("auto", "", in.reads, report.code_text);
+    report.names = names;
+    for (const auto& r : in.reads) report.sizes.push_back(r.frames.size());
+    tape::RestoreResult result = run_restore(RestoreChoices{}, in, report);
+    report.result = &result;
+    say_about_reads(report, result);
+    RestorationSummary s;
+    s.image = "restored" + suffix + ".ptp";
+    s.code = report.code_text;
+    const std::string html = "restored" + suffix + ".html";
+    tape::ImageWriteOptions wo;
+    if (report.code) wo.annotate = &*report.code;
+    report.image_bytes = image_text(output_format("", s.image), result.frames, wo, s.image);
+    report.image_name = s.image;
+    // The page links each place to the whole tape drawn, where the drawing holds the whole tape.
+    if (!result.frames.empty() && result.frames.size() <= most_drawn_frames)
+        report.tape_picture = "tape" + suffix + ".svg";
+    bag.add(s.image, report.image_bytes);
+    bag.add(tape::doubts_file_for(s.image), restore_report_json(report));
+    bag.add(html, restore_report_html(report));
+    if (!result.frames.empty()) bag.add("tape" + suffix + ".svg", tape_svg(report, html));
+    for (const auto& f : tape_contents(result.frames, report.code, "contents" + suffix, s.contents))
+        bag.add(f.path, f.bytes);
+    std::string shown = "data/" + s.image;
+    std::string format = "The restored tape " + shown + ", from " + std::to_string(names.size()) +
+                         " read(s), in the words of tape info.\n" +
+                         (s.contents.empty() ? "" : "Contents: " + s.contents + ".\n") +
+                         (result.frames.size() > most_drawn_frames
+                              ? "tape" + suffix + ".svg draws its first " + std::to_string(most_drawn_frames) +
+                                    " frames of " + std::to_string(result.frames.size()) + ".\n"
+                              : "") +
+                         "\n" + tape_info_text(bag.staging() + "/data/" + s.image, shown);
+    bag.add("format" + suffix + ".txt", format);
+    s.reads = names.size();
+    s.frames = result.frames.size();
+    s.in_doubt = in_doubt_count(result);
+    s.complete = result.complete();
+    s.unchecked = result.unchecked;
+    s.code_misfit = result.code_misfit;
+    return s;
+}
+
+std::vector<BagRestoration> bag_restorations(const std::string& bag) {
+    std::vector<BagRestoration> out;
+    for (int n = 1;; ++n) {
+        std::string image = n == 1 ? "restored.ptp" : "restored-" + std::to_string(n) + ".ptp";
+        std::string report = bag + "/data/" + tape::doubts_file_for(image);
+        if (!tape::path_exists(report)) break;
+        BagRestoration r{image, {}};
+        try {
+            auto bytes = tape::read_file(report);
+            auto j = nlohmann::json::parse(bytes.begin(), bytes.end());
+            for (const auto& read : j.at("reads")) r.reads.push_back(read.at("file").get<std::string>());
+        } catch (const std::exception& e) {
+            fail(report, tape::Errc::bad_image, std::string("not a restore report: ") + e.what());
+        }
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
+std::string command_line() {
+    std::ifstream in("/proc/self/cmdline", std::ios::binary);
+    std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string s = "tape";
+    std::size_t start = all.find('\0');  // the program's own path is said as "tape"
+    while (start != std::string::npos && start + 1 < all.size()) {
+        std::size_t end = all.find('\0', start + 1);
+        s += " " + shell_quoted(all.substr(start + 1, end - start - 1));
+        start = end;
+    }
+    return s;
+}
+
+}  // namespace cli

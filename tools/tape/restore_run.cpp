@@ -1,0 +1,36 @@
+// Restoring reads as tape restore does (restore_run.hpp).
+#include "restore_run.hpp"
+
+#include "cli/messages.hpp"
+#include "cli/restore_inputs.hpp"
+
+namespace cli {
+
+tape::RestoreResult run_restore(const RestoreChoices& c, const ReadsAndDoubts& in, const RestoreReportInput& report) {
+    const std::vector<TapeInput>& reads = in.reads;
+    std::vector<std::span<const tape::Frame>> spans;
+    for (const auto& r : reads) spans.emplace_back(r.frames);
+    tape::RestoreOptions o{.code = report.code, .dialect = *tape::parse_dialect(c.dialect), .spec = c.spec};
+    o.guess = c.guess;
+    o.align.drop_unrelated = c.drop_unrelated;
+    o.doubts = in.doubts;  // a picture's faint holes weigh less than a sure reading
+    try {
+        return tape::restore(spans, o);
+    } catch (const tape::UnrelatedRead& e) {
+        fail(display_name(reads[e.read()].name), tape::Errc::bad_image,
+             unrelated_text(e, reads) + " (--drop-unrelated goes on without it)");
+    } catch (const tape::Error& e) {
+        fail("", e);
+    }
+}
+
+void say_about_reads(const RestoreReportInput& in, const tape::RestoreResult& r) {
+    for (std::size_t i = 0; i < in.names.size(); ++i)
+        if (!r.related[i]) say(display_name(in.names[i]), "left out: a read of another tape, or too damaged to align");
+    if (in.code && r.code_misfit)
+        say("", "most frames of the reads fail the code " + in.code_text +
+                    ": it is not the tape's, so the reads were only voted, nothing repaired (try --code auto, or "
+                    "another --parity)");
+}
+
+}  // namespace cli
