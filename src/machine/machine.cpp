@@ -112,7 +112,9 @@ std::vector<MachineListing> list_machines() {
         try {
             m.title = read_profile_file(f.string()).title;
         } catch (const Error& e) {
-            m.title = e.what();
+            std::string why = e.what();  // "FILE: line N: ...": the file is said apart
+            if (why.rfind(m.file + ": ", 0) == 0) why.erase(0, m.file.size() + 2);
+            m.title = why;
             m.broken = true;
         }
         out.push_back(m);

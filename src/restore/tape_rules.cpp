@@ -95,17 +95,29 @@ void advance(MotionState& state, const Block& block) {
 }
 
 TapeRules::TapeRules(const std::set<std::uint64_t>& damaged_lines, const std::set<std::uint64_t>& numbers_damaged,
-                     const FormatSpec* spec)
+                     const FormatSpec* spec, const MachineProfile* machine)
     : damaged_lines_(damaged_lines),
       numbers_damaged_(numbers_damaged),
-      lint_(std::make_unique<LintVisitor>(LintOptions{spec})),
-      spec_(spec) {}
+      lint_(std::make_unique<LintVisitor>(LintOptions{spec, 0, false, machine})),
+      spec_(spec),
+      machine_(machine) {
+    if (machine) format_.emplace(*machine);
+}
+
+const FormatSpec* TapeRules::block_spec(std::uint64_t line, const Block& b) const {
+    if (!machine_) return spec_;
+    if (machine_->format.words.empty()) return nullptr;
+    auto at = format_before_.find(line);
+    MachineFormat f = at != format_before_.end() ? at->second : MachineFormat(*machine_);
+    return &f.block(b);  // the profile's format or one of its modes: it outlives f
+}
 
 TapeRules::~TapeRules() = default;
 
 void TapeRules::program_start(const Program& header) {
     lint_->program_start(header);
     state_ = MotionState{};
+    if (format_) format_->program_start();
 }
 
 void TapeRules::block(const Block& b) {
@@ -113,6 +125,10 @@ void TapeRules::block(const Block& b) {
     ++blocks_;
     bool damaged = b.damaged || damaged_lines_.count(b.where.line) > 0;
     if (damaged) before_.emplace(b.where.line, state_);
+    if (format_) {
+        if (damaged) format_before_.emplace(b.where.line, *format_);
+        format_->block(b);  // a damaged block's codes as read: as advance() takes its motion code
+    }
     if (!damaged)
         if (auto closes = arc_agrees(state_, b)) ++arcs_checked_, arcs_open_ += !*closes;
     advance(state_, b);

@@ -4,6 +4,7 @@
 
 #include "cli/files.hpp"
 #include "cli/inputs.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
@@ -21,16 +22,18 @@ namespace {
 
 struct RestoreArgs {
     std::vector<std::string> reads;
-    std::string output, report, html, format, code = "auto", parity, dialect = "auto", spec;
+    std::string output, report, html, format, code = "auto", parity, dialect = "auto", spec, machine;
     bool json = false, force = false, guess = false, drop_unrelated = false, no_doubts_file = false;
 };
 
 tape::RestoreResult run_restore(const RestoreArgs& a, const ReadsAndDoubts& in, const RestoreReportInput& report,
-                                const tape::FormatSpec* spec) {
+                                const tape::FormatSpec* spec, const tape::MachineProfile* machine) {
     const std::vector<TapeInput>& reads = in.reads;
     std::vector<std::span<const tape::Frame>> spans;
     for (const auto& r : reads) spans.emplace_back(r.frames);
-    tape::RestoreOptions o{.code = report.code, .dialect = *tape::parse_dialect(a.dialect), .spec = spec};
+    tape::Dialect dialect = *tape::parse_dialect(a.dialect);
+    if (machine && a.dialect == "auto") dialect = machine->dialect;
+    tape::RestoreOptions o{.code = report.code, .dialect = dialect, .spec = spec, .machine = machine};
     o.guess = a.guess;
     o.align.drop_unrelated = a.drop_unrelated;
     o.doubts = in.doubts;  // a picture's faint holes weigh less than a sure reading
@@ -73,6 +76,9 @@ void run(const RestoreArgs& a) {
         refuse_existing(out, a.force);
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
+    auto machine = machine_or_fail(a.machine);
+    if (machine && spec)
+        fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");
     const tape::ImageFormat& out_format = output_format(a.format, a.output);
     refuse_binary_terminal(a.output, out_format.binary, a.force);
     ReadsAndDoubts in = read_tapes_or_pictures(a.reads);
@@ -83,7 +89,7 @@ void run(const RestoreArgs& a) {
         report.names.push_back(r.name);
         report.sizes.push_back(r.frames.size());
     }
-    tape::RestoreResult result = run_restore(a, in, report, spec ? &*spec : nullptr);
+    tape::RestoreResult result = run_restore(a, in, report, spec ? &*spec : nullptr, machine ? &*machine : nullptr);
     report.result = &result;
     say_about_reads(report, result);
     // The image first: it is what the run is for, and it is written even when not every frame was restored.
@@ -133,6 +139,9 @@ void add_restore(CLI::App& app) {
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}));
     add_dialect_option(sub, a->dialect);
     sub->add_option("--spec,-s", a->spec, "Controller format repairs must also fit (ГОСТ 20999-83 §9 notation)");
+    add_machine_option(
+        sub, a->machine,
+        "repairs must fit its word format mode by mode, feed code table and S, T, M words (instead of --spec)");
     sub->add_flag("--guess", a->guess,
                   "Where several repairs fit, write the likeliest, marked guessed with the others listed (exit 1)");
     sub->add_flag("--drop-unrelated", a->drop_unrelated,
