@@ -22,7 +22,7 @@ struct Prefixed {
 std::optional<Prefixed> prefixed(const MachineProfile& p, const Word& w) {
     if (!in(p.prefixed, w.address) || w.has_point() || w.sign || w.macro) return std::nullopt;
     std::string d = w.digits();
-    if (d.empty() || static_cast<int>(d.size()) != format_digits(p, w.address)) return std::nullopt;
+    if (d.size() < 2 || static_cast<int>(d.size()) != format_digits(p, w.address)) return std::nullopt;
     return Prefixed{d[0] - '0', std::stoi(d.substr(1))};
 }
 

@@ -32,6 +32,7 @@ std::string digits_off(const MachineProfile& p, const Word& w, Say say) {
 std::string feed(const MachineProfile& p, const Word& w, Say say) {
     if (std::string off = digits_off(p, w, say); !off.empty()) return off;
     std::string d = w.digits();
+    if (d.size() < 2) return "";
     const FeedCode* c = p.find_feed_code(d[0] - '0');
     if (!c) return w.text + say(": mode ", ": режим ") + d.substr(0, 1) + say(" is not in the table", " не из таблицы");
     std::string out = w.text + " " + c->meaning;
@@ -63,7 +64,7 @@ std::string code_meaning(const MachineProfile& p, const Word& w, Say say) {
     int first = 0, code = std::stoi(d);
     const WordFormat* f = p.format.find(w.address);
     bool pre = p.prefixed.find(w.address) != std::string::npos && f && static_cast<int>(d.size()) == f->before;
-    if (pre && d[0] <= '1') first = d[0] - '0', code = std::stoi(d.substr(1));
+    if (pre && d.size() >= 2 && d[0] <= '1') first = d[0] - '0', code = std::stoi(d.substr(1));
     if (w.address == 'T' && pre)
         return w.text + say(" tool ", " инструмент ") + std::to_string(code) + acknowledged(first, say);
     if (w.address == 'T') return "";

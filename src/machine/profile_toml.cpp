@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <tuple>
 
 #include "common/toml_guard.hpp"
 #include "machine/toml_fields.hpp"
@@ -40,8 +41,9 @@ void Reader::format(const Fields& top) {
     if (!t) return;
     Fields f = fields(*t, "format", top.source());
     f.only({"spec", "initial_mode", "prefixed", "mode"});
+    std::string spec = f.required_text("spec");
     try {
-        p.format = parse_format_spec(f.required_text("spec"));
+        p.format = parse_format_spec(spec);
     } catch (const Error& e) {
         f.fail("spec", e.what());
     }

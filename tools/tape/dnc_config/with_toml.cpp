@@ -176,8 +176,9 @@ void machine_key(const std::string& key, const Value& v, MachineSettings& m) {
 // the [[machine]]'s own keys then override.
 void profile_settings(const Value& v, MachineSettings& m) {
     tape::MachineProfile p;
+    std::string name = v.text();
     try {
-        p = tape::load_machine(v.text());
+        p = tape::load_machine(name);
     } catch (const tape::Error& e) {
         bad(line_of(v.node), v.what + ": " + e.what());
     }
