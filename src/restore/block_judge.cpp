@@ -235,7 +235,8 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
         auto shape = shape_of(*w);
         if ((shape && rules.format_broken(w->address == ':' ? 'N' : w->address, *shape)) || rules.form_broken(*w))
             out.push_back("word-format");
-        if (const FormatSpec* spec = first ? rules.block_spec(line_, *first) : s_.spec)
+        const FormatSpec* spec = first ? rules.block_spec(line_, *first) : s_.spec;
+        if (spec && (!s_.machine || rules.machine_format_trusted(w->address)))
             for (const auto& [rule, message] : check_word(*w, *spec, rules.points())) out.push_back(std::string(rule));
         if ((w->address == 'N' || w->address == ':') && w->where.line == before_lines_ + 1)
             if (auto expected = rules.expected_number(line_); expected && w->integer() != expected)

@@ -98,7 +98,9 @@ TapeRules::TapeRules(const std::set<std::uint64_t>& damaged_lines, const std::se
                      const FormatSpec* spec, const MachineProfile* machine)
     : damaged_lines_(damaged_lines),
       numbers_damaged_(numbers_damaged),
-      lint_(std::make_unique<LintVisitor>(LintOptions{spec, 0, false, machine})),
+      // The machine's format is not lint's here: a tape that breaks it in places (the course text's
+      // OCR) would count as one whose grammar does not fit, and no repair would be judged by grammar.
+      lint_(std::make_unique<LintVisitor>(LintOptions{spec})),
       spec_(spec),
       machine_(machine) {
     if (machine) format_.emplace(*machine);
@@ -127,7 +129,10 @@ void TapeRules::block(const Block& b) {
     if (damaged) before_.emplace(b.where.line, state_);
     if (format_) {
         if (damaged) format_before_.emplace(b.where.line, *format_);
-        format_->block(b);  // a damaged block's codes as read: as advance() takes its motion code
+        const FormatSpec& spec = format_->block(b);  // a damaged block's codes as read, as advance() takes them
+        if (!damaged && !machine_->format.words.empty())
+            for (const auto& w : b.words)
+                if (w.known && !w.macro && !check_word(w, spec, points_).empty()) untrusted_.insert(w.address);
     }
     if (!damaged)
         if (auto closes = arc_agrees(state_, b)) ++arcs_checked_, arcs_open_ += !*closes;
