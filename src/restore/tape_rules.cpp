@@ -132,7 +132,12 @@ void TapeRules::block(const Block& b) {
         const FormatSpec& spec = format_->block(b);  // a damaged block's codes as read, as advance() takes them
         if (!damaged && !machine_->format.words.empty())
             for (const auto& w : b.words)
-                if (w.known && !w.macro && !check_word(w, spec, points_).empty()) untrusted_.insert(w.address);
+                if (w.known && !w.macro) {
+                    if (check_word(w, spec, points_).empty())
+                        ++fitting_[w.address];
+                    else
+                        untrusted_.insert(w.address);
+                }
     }
     if (!damaged)
         if (auto closes = arc_agrees(state_, b)) ++arcs_checked_, arcs_open_ += !*closes;

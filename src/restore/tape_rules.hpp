@@ -113,10 +113,13 @@ public:
     /// codes set (b is a damaged line's block), else spec(); nullptr for none.
     const FormatSpec* block_spec(std::uint64_t line, const Block& b) const;
     const MachineProfile* machine() const { return machine_; }
-    /// The tape's undamaged words of the address all fit the machine's format (a tape that does not keep
-    /// its machine's format for an address is not held to it there: a repair would be judged by a rule
-    /// the tape itself breaks).
-    bool machine_format_trusted(char address) const { return !untrusted_.count(address); }
+    /// The tape's undamaged words of the address, enough_words of them or more, all fit the machine's
+    /// format (a tape that does not keep its machine's format for an address, or shows too little of it,
+    /// is not held to it there: a repair would be judged by a rule the tape itself may break).
+    bool machine_format_trusted(char address) const {
+        auto n = fitting_.find(address);
+        return !untrusted_.count(address) && n != fitting_.end() && n->second >= enough_words;
+    }
     /// The dialect's grammar fits the undamaged program: lint finds errors in at most one block in five.
     /// Where it does not (no known dialect fits: an Okuma or Siemens program read as another), repairs
     /// are not judged by it.
@@ -154,7 +157,8 @@ private:
     const MachineProfile* machine_;
     std::optional<MachineFormat> format_;                   // with a machine: the mode where the next block begins
     std::map<std::uint64_t, MachineFormat> format_before_;  // and where each damaged line begins
-    std::set<char> untrusted_;  // addresses whose undamaged words break the machine's format
+    std::set<char> untrusted_;             // addresses whose undamaged words break the machine's format
+    std::map<char, std::size_t> fitting_;  // undamaged words that fit it, by address
     bool points_ = false;
     long long step_ = 0;  // the block numbers' steady step, 0 for none
     std::size_t arcs_checked_ = 0, arcs_open_ = 0;

@@ -19,11 +19,12 @@ struct FormatArgs {
     std::string out_code = "iso";
     bool strip_zeros = false, spaces = false, force = false;
     const CLI::Option* from_option = nullptr;  // given or not: "--from ''" is an error, not "no --from"
+    const CLI::Option* spec_option = nullptr;  // the same for --spec
 };
 
 void run(const FormatArgs& a) {
     auto machine = machine_or_fail(a.machine);
-    if (machine.has_value() == !a.spec.empty())
+    if (machine.has_value() == (a.spec_option->count() > 0))
         fail("", tape::Errc::usage, "give the format to write: --spec SPEC or --machine NAME (one of them)");
     if (machine && machine->format.words.empty())
         fail("", tape::Errc::usage, "--machine " + a.machine + ": the profile holds no word format");
@@ -76,7 +77,8 @@ void add_format(CLI::App& app) {
     auto a = std::make_shared<FormatArgs>();
     auto* sub = app.add_subcommand("format", "Rewrite a program for a controller's format (ГОСТ 20999-83 §9)");
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
-    sub->add_option("--spec,-s", a->spec, "The controller's format, e.g. \"N03 G02 X+053 Y+053 F031 M02\"");
+    a->spec_option =
+        sub->add_option("--spec,-s", a->spec, "The controller's format, e.g. \"N03 G02 X+053 Y+053 F031 M02\"");
     add_machine_option(sub, a->machine, "write for its format, each block as its G codes set it (instead of --spec)");
     a->from_option =
         sub->add_option("--from", a->from, "The format the program is written in, for words with an implied point");
