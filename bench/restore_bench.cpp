@@ -7,6 +7,7 @@
 //   BM_ManyReads<corpus>/N:    N reads (3 or 5), each with 1% of its frames damaged (flips, drops, doubles,
 //                              bursts), every set of reads damaged by seeds of its own
 //   BM_FiveReadsSpeed:         5 reads of 10^6 frames aligned, voted and repaired
+// RESTORE_BENCH_MACHINE and RESTORE_BENCH_ONLY (below): with a machine's profile, and on some tapes only.
 // Corpora: generated programs (some with mistakes of their own), the sample tapes, and real programs
 // and DEC source tapes from ../shared/data/outside* (a note says what is left out where it is absent).
 // RESTORE_BENCH_SCALE (default 1) multiplies the number of tapes and seeds; RESTORE_BENCH_SHOW=1 prints each
@@ -20,9 +21,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <map>
+#include <optional>
 
 #include "restore_corpus.hpp"
 #include "tape/damage.hpp"
+#include "tape/machine.hpp"
 #include "tape/restore.hpp"
 
 namespace {
@@ -38,10 +41,30 @@ benchmark::Counter per_run(std::uint64_t n) {
     return benchmark::Counter(static_cast<double>(n), benchmark::Counter::kAvgIterations);
 }
 
+// RESTORE_BENCH_MACHINE=NAME: the machine profile NAME (tape machines) for the tapes whose file name starts
+// with the profile's name (16k20f3s5: the 16К20Ф3С5 sample tape); RESTORE_BENCH_ONLY=PREFIX: only the
+// tapes whose name starts so.
+const tape::MachineProfile* bench_machine(const CorpusTape* t) {
+    static const std::optional<tape::MachineProfile> machine = []() -> std::optional<tape::MachineProfile> {
+        const char* name = std::getenv("RESTORE_BENCH_MACHINE");
+        if (!name || !*name) return std::nullopt;
+        return tape::load_machine(name);
+    }();
+    return machine && t && t->name.rfind(machine->name, 0) == 0 ? &*machine : nullptr;
+}
+
+std::vector<CorpusTape> only(std::vector<CorpusTape> tapes) {
+    const char* prefix = std::getenv("RESTORE_BENCH_ONLY");
+    if (prefix && *prefix) std::erase_if(tapes, [&](const CorpusTape& t) { return t.name.rfind(prefix, 0) != 0; });
+    return tapes;
+}
+
 // RESTORE_BENCH_ODDS: RestoreOptions::run_odds, to weigh run lengths otherwise than by default.
-tape::RestoreResult restore_reads(const std::vector<std::vector<tape::Frame>>& reads, bool guess = false) {
+tape::RestoreResult restore_reads(const std::vector<std::vector<tape::Frame>>& reads, bool guess = false,
+                                  const CorpusTape* t = nullptr) {
     std::vector<std::span<const tape::Frame>> spans(reads.begin(), reads.end());
     tape::RestoreOptions o{.code = tape::FrameCode::iso(), .dialect = tape::Dialect::automatic};
+    if ((o.machine = bench_machine(t))) o.dialect = o.machine->dialect;
     o.guess = guess;
     if (const char* odds = std::getenv("RESTORE_BENCH_ODDS")) o.run_odds = std::strtod(odds, nullptr);
     return tape::restore(spans, o);
@@ -66,7 +89,7 @@ struct OneReadTally {
 
     void add(const CorpusTape& t, std::uint64_t seed, bool guess) {
         auto read = flipped_read(t, seed);
-        auto r = restore_reads({read}, guess);
+        auto r = restore_reads({read}, guess, &t);
         std::map<std::uint64_t, tape::FrameStatus> status;
         // The tape's end no read reached is a problem placed at the last frame: it says nothing of how
         // that frame was repaired.
@@ -146,7 +169,7 @@ void BM_OneReadGenerated(benchmark::State& state) {
 }
 BENCHMARK(BM_OneReadGenerated)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
 
-void BM_OneReadSampleTapes(benchmark::State& state) { run_one_read(state, bench::sample_tapes(), 200 * scale()); }
+void BM_OneReadSampleTapes(benchmark::State& state) { run_one_read(state, only(bench::sample_tapes()), 200 * scale()); }
 BENCHMARK(BM_OneReadSampleTapes)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
 
 // Real programs and DEC source tapes, seeds enough for 10^5 flips (about 30 passes over 0.7 MB).
@@ -170,7 +193,7 @@ struct ManyReadsTally {
         for (int k = 0; k < reads; ++k)
             rs.push_back(tape::damage(t.frames, tape::mixed_damage(0.01, seed * 7 + static_cast<std::uint64_t>(k) + 1),
                                       &logs[static_cast<std::size_t>(k)]));
-        auto r = restore_reads(rs);
+        auto r = restore_reads(rs, false, &t);
         auto check = tape::check_restore(t.frames, r);
         ++sets, exact += check.exact, frames += tape::punched_part(t.frames).size();
         silent += check.silently_wrong, flagged += check.flagged_wrong, run_votes += r.run_length_votes;
@@ -318,7 +341,7 @@ void BM_ManyReadsReal(benchmark::State& state) {
 }
 BENCHMARK(BM_ManyReadsReal)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
 
-void BM_ManyReadsSampleTapes(benchmark::State& state) { run_many(state, bench::sample_tapes(), 1000 * scale()); }
+void BM_ManyReadsSampleTapes(benchmark::State& state) { run_many(state, only(bench::sample_tapes()), 1000 * scale()); }
 BENCHMARK(BM_ManyReadsSampleTapes)->Arg(3)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
 
 void BM_FiveReadsSpeed(benchmark::State& state) {

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <fstream>
 
-#include "common/toml_guard.hpp"
 #include "tape/decode.hpp"
 #include "tape/file_io.hpp"
 #include "tape/lint.hpp"
@@ -33,7 +32,8 @@ std::string error_of(const std::string& text) {
 
 std::vector<Finding> lint_sample(const std::string& name, const MachineProfile& m) {
     auto bytes = read_file(sample_path(name));
-    auto r = decode(bytes, DecodeOptions{.positions = true});
+    Code code = name.find(".eia.") != std::string::npos ? Code::eia : Code::iso;
+    auto r = decode(bytes, DecodeOptions{.code = code, .positions = true});
     LoadedTape t = load(r.text, r.frame_of, LoadOptions{m.dialect});
     return lint(t, LintOptions{.machine = &m});
 }
@@ -62,24 +62,26 @@ TEST(MachineProfile, ErrorsNameFileLineAndKey) {
               "m.toml: line 5: format.spec: format specification 'N3 X+6': X+6: a dimension word takes two digits "
               "(before and after the point), or three with a leading 0 (leading zeros omitted) or a trailing 0 "
               "(trailing zeros omitted)");
-    EXPECT_EQ(error_of(minimal + "[[code]]\ncode = \"G10\"\nmeaning = \"a\"\n[[code]]\ncode = \"G10\"\nmeaning = \"b\"\n"),
-              "m.toml: line 8: code[2].code: G10 is given twice (first on line 4)");
+    EXPECT_EQ(
+        error_of(minimal + "[[code]]\ncode = \"G10\"\nmeaning = \"a\"\n[[code]]\ncode = \"G10\"\nmeaning = \"b\"\n"),
+        "m.toml: line 8: code[2].code: G10 is given twice (first on line 4)");
     EXPECT_EQ(error_of(minimal + "[arc]\ntolerance_mm = \"small\"\n"),
               "m.toml: line 5: arc.tolerance_mm: must be a number from 0 to 10, not \"small\"");
     EXPECT_EQ(error_of(minimal + "[line]\nbaud = 9600\nflow = \"xon\"\n"),
               "m.toml: line 6: line.flow: must be one of xonxoff, rtscts, none, not \"xon\"");
-    EXPECT_EQ(error_of("name = \"m\"\nkind = \"mill\"\n"), "m.toml: line 1: source: is required: where the profile's values come from");
+    EXPECT_EQ(error_of("name = \"m\"\nkind = \"mill\"\n"),
+              "m.toml: line 1: source: is required: where the profile's values come from");
     EXPECT_EQ(error_of(minimal + "[[code]]\ncode = \"G10\"\nmeaning = \"a\"\nmode = \"long\"\n"),
               "m.toml: line 7: code[1].mode: no [[format.mode]] is named \"long\"");
-    EXPECT_EQ(error_of(minimal + "[feed]\n[[feed.code]]\nfirst_digit = 1\nmeaning = \"a\"\n[[feed.code]]\nfirst_digit = 1\n"
-                                 "meaning = \"b\"\n"),
-              "m.toml: line 10: feed.code[2].first_digit: 1 is given twice");
+    EXPECT_EQ(
+        error_of(minimal + "[feed]\n[[feed.code]]\nfirst_digit = 1\nmeaning = \"a\"\n[[feed.code]]\nfirst_digit = 1\n"
+                           "meaning = \"b\"\n"),
+        "m.toml: line 9: feed.code[2].first_digit: 1 is given twice");
     EXPECT_EQ(error_of(minimal + "kind2 = { value = 1, source = \"x\", extra = 2 }\n"),
               "m.toml: line 4: kind2: unknown key (known here: source, name, title, aliases, kind, "
               "diameter_programming, dialect, format, code, feed, speed, axis, arc, line)");
     EXPECT_EQ(error_of(minimal + "title = { value = \"t\", src = \"x\" }\n"),
               "m.toml: line 4: title.src: unknown key (known here: source, value)");
-    EXPECT_EQ(error_of("name = \"m\"\nkind = [\n"), "m.toml: line 3: " + error_of("name = \"m\"\nkind = [\n").substr(17));
 }
 
 TEST(MachineProfile, TomlSyntaxErrorNamesTheLine) {
@@ -88,12 +90,8 @@ TEST(MachineProfile, TomlSyntaxErrorNamesTheLine) {
 }
 
 TEST(MachineProfile, BareNonAsciiIsRefusedBeforeParsing) {
-    EXPECT_EQ(error_of(minimal + "t\xC3\xA9 = 1\n"),
-              "m.toml: line 4: byte 0xC3 outside a string or comment (TOML allows letters other than ASCII only in "
-              "quotes)");
+    EXPECT_EQ(error_of(minimal + "t\xC3\xA9 = 1\n").rfind("m.toml: line 4: 'é' outside quotes", 0), 0U);
     EXPECT_EQ(error_of(minimal + "title = \"Н22\" # Н22-1М\n"), "");
-    EXPECT_NO_THROW(reject_bare_non_ascii("a = '''\nН\n'''\nb = \"\\\"Н\"\n", "x"));
-    EXPECT_THROW(reject_bare_non_ascii("a = \"x\"\nН = 1\n", "x"), Error);
 }
 
 TEST(MachineProfile, EveryBundledProfileReads) {
@@ -162,14 +160,15 @@ TEST(MachineLint, SampleTapeFindingsWithTheProfile) {
         EXPECT_TRUE(messages_of(findings, "machine-feed-code").empty());
         // Without the profile the sample lints clean.
         auto bytes = read_file(sample_path(tape));
-        auto r = decode(bytes, DecodeOptions{.positions = true});
+        Code code = tape.find(".eia.") != std::string::npos ? Code::eia : Code::iso;
+        auto r = decode(bytes, DecodeOptions{.code = code, .positions = true});
         EXPECT_TRUE(lint(load(r.text, r.frame_of)).empty());
     }
 }
 
 TEST(MachineLint, LongModeDigitsAndFeedTable) {
     MachineProfile p = load_machine("16k20f3s5");
-    auto findings = lint(load("%\nN1 G10 X+12345 F10600\nN2 Z+000500 F30600\nN3 G01 X+12345 F70000\nN4 M102\n"),
+    auto findings = lint(load("%\nN001 G10 X+12345 F10600\nN002 Z+000500 F30600\nN003 G01 X+12345 F70000\nN004 M102\n"),
                          LintOptions{.machine = &p});
     auto digits = messages_of(findings, "spec-digits");
     ASSERT_EQ(digits.size(), 1U);
@@ -178,9 +177,10 @@ TEST(MachineLint, LongModeDigitsAndFeedTable) {
               "dimensions, 6 digits)");
     auto feeds = messages_of(findings, "machine-feed-code");
     ASSERT_EQ(feeds.size(), 1U);
-    EXPECT_EQ(feeds[0], "F30600: the first digit 3 is no mode of 16К20Ф3С5 lathe, Н22-1М control's feed code table "
-                        "(1, 2, 7; Smolin 1991, table 3 (ПОЯСНЕНИЕ К СЛОВУ «ПОДАЧА»))");
-    auto prefix = lint(load("%\nN1 G01 X+00100 F10600 M204\nN2 M102\n"), LintOptions{.machine = &p});
+    EXPECT_EQ(feeds[0],
+              "F30600: the first digit 3 is no mode of 16К20Ф3С5 lathe, Н22-1М control's feed code table "
+              "(1, 2, 7; Smolin 1991, table 3 (ПОЯСНЕНИЕ К СЛОВУ «ПОДАЧА»))");
+    auto prefix = lint(load("%\nN001 G01 X+00100 F10600 M204\nN002 M102\n"), LintOptions{.machine = &p});
     EXPECT_EQ(messages_of(prefix, "machine-prefix").size(), 1U);
 }
 
@@ -192,9 +192,10 @@ TEST(MachineExplain, EveryCodeOfTheSampleIsNamed) {
     ASSERT_EQ(t.programs.size(), 1U);
     for (const auto& b : t.programs[0].blocks) {
         std::string e = explain_machine_codes(b, p, false);
-        for (const auto& w : b.words)
-            if (std::string_view("GMFST").find(w.address) != std::string_view::npos)
-                EXPECT_NE(e.find(w.text), std::string::npos) << w.text << " in " << e;
+        for (const auto& w : b.words) {
+            if (std::string_view("GMFST").find(w.address) == std::string_view::npos) continue;
+            EXPECT_NE(e.find(w.text), std::string::npos) << w.text << " in " << e;
+        }
     }
     const auto& n1 = t.programs[0].blocks[0];
     EXPECT_EQ(explain_machine_codes(n1, p, false),

@@ -103,7 +103,8 @@ private:
     };
     std::vector<Open> open_;
     std::unique_ptr<lint_detail::BlockTargets> targets_;
-    std::unique_ptr<MachineFormat> machine_format_;  // with a machine: the word format block by block  // Fanuc: the blocks its GOTOs, cycles and calls name
+    std::unique_ptr<MachineFormat> machine_format_;  // with a machine: the word format block by block  // Fanuc: the
+                                                     // blocks its GOTOs, cycles and calls name
 };
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).

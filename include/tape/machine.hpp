@@ -76,7 +76,7 @@ struct MachineLine {
     unsigned baud = 0;  ///< 0: not known
     int data_bits = 0, stop_bits = 0;
     std::optional<Flow> flow{};
-    bool dc_codes = false;        ///< the control sends DC1 to start and DC3 to stop (wait for DC1)
+    bool dc_codes = false;                ///< the control sends DC1 to start and DC3 to stop (wait for DC1)
     double reader_frames_per_second = 0;  ///< the control's tape reader; 0: not known
     std::string source;
 };
@@ -88,8 +88,8 @@ struct MachineProfile {
     MachineKind kind = MachineKind::mill;
     bool diameter_programming = false;  ///< lathes: X words are diameters
     Dialect dialect = Dialect::gost;
-    FormatSpec format;            ///< ГОСТ 20999-83 §9: the widest form of each address
-    std::string initial_mode;     ///< the format mode at the start of a program, or "" (none)
+    FormatSpec format;         ///< ГОСТ 20999-83 §9: the widest form of each address
+    std::string initial_mode;  ///< the format mode at the start of a program, or "" (none)
     std::vector<FormatMode> modes;
     std::string prefixed;  ///< addresses whose first digit is 0 or 1 (1: after the machine's acknowledgement)
     std::vector<MachineCode> codes;
@@ -136,7 +136,8 @@ std::string user_machine_folder();
 MachineProfile load_machine(std::string_view name_or_path);
 
 /// Every profile there is: the user's first (they hide a bundled one of the same name), then the
-/// bundled. A user's file that does not parse is listed with the error as its title.
+/// bundled. A user's file that does not parse is listed, broken, with the error (its line and key) as
+/// its title.
 struct MachineListing {
     std::string name, title, file;
     bool bundled = false;

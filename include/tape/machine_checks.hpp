@@ -11,7 +11,8 @@
 
 namespace tape {
 
-/// The word format of a profile block by block. Fed a program's blocks in order.
+/// The word format of a profile block by block. Fed a program's blocks in order; a copy keeps the mode
+/// where it was made (restore keeps one where each damaged block begins).
 class MachineFormat {
 public:
     explicit MachineFormat(const MachineProfile& p);
@@ -24,7 +25,7 @@ public:
     std::string note(const Word& w) const;
 
 private:
-    const MachineProfile& p_;
+    const MachineProfile* p_;
     const FormatMode* mode_ = nullptr;
     std::string selected_by_;  // "G10", or "" for the initial mode
 };

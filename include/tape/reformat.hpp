@@ -11,11 +11,17 @@
 
 namespace tape {
 
+struct MachineProfile;
+
 struct ReformatOptions {
-    const FormatSpec* spec = nullptr;  ///< the format to write (required)
+    const FormatSpec* spec = nullptr;  ///< the format to write (required unless machine)
     const FormatSpec* from = nullptr;  ///< the format the program is written in, for implied points
     bool strip_zeros = false;          ///< leave out leading (or trailing) zeros where the format allows
     bool spaces = false;               ///< a space between words
+    /// Write for this machine instead of spec: each block in the format its format-changing codes set
+    /// (tape/machine_checks.hpp). A word with an explicit point for an axis whose words are pulses
+    /// (MachineAxis::mm_per_pulse) cannot be written: millimetres are not converted to pulses.
+    const MachineProfile* machine = nullptr;
 };
 
 /// The text of tape rewritten for options.spec: label, programs, blocks and the text after each end,

@@ -38,12 +38,17 @@ enum class FrameStatus : std::uint8_t {
 std::string_view status_name(FrameStatus s);
 inline constexpr std::size_t frame_status_count = 9;
 
+struct MachineProfile;
+
 struct RestoreOptions {
     /// The code the tape is in, for parity and repair; nullopt: a tape in no character code (a binary
     /// computer tape), merged by alignment and vote alone.
     std::optional<FrameCode> code{};
     Dialect dialect = Dialect::automatic;  ///< the grammar repairs must fit
     const FormatSpec* spec = nullptr;      ///< and, when given, the controller's format
+    /// And, when given, the machine's profile (in place of spec): its word format as its format-changing
+    /// codes set it block by block, its feed code table and prefixed S, T and M words.
+    const MachineProfile* machine = nullptr;
     AlignOptions align{};
     /// Where several repairs fit, write the likeliest and mark it guessed (the others listed as its
     /// candidates). Without it nothing is guessed.

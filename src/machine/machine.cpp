@@ -90,7 +90,7 @@ MachineProfile load_machine(std::string_view wanted) {
     if (wanted.empty()) throw Error(Errc::usage, "--machine: no name given");
     if (is_path(wanted)) return read_profile_file(std::string(wanted));
     for (const auto& f : user_files()) {
-        if (f.stem() == wanted) return read_profile_file(f.string());
+        if (f.stem().string() == wanted) return read_profile_file(f.string());
     }
     for (const auto& b : bundled_machines()) {
         MachineProfile p = parse_machine_profile(b.text, "built-in " + std::string(b.name) + ".toml");
@@ -112,7 +112,9 @@ std::vector<MachineListing> list_machines() {
         try {
             m.title = read_profile_file(f.string()).title;
         } catch (const Error& e) {
-            m.title = e.what();
+            std::string why = e.what();  // "FILE: line N: ...": the file is said apart
+            if (why.rfind(m.file + ": ", 0) == 0) why.erase(0, m.file.size() + 2);
+            m.title = why;
             m.broken = true;
         }
         out.push_back(m);

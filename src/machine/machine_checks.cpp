@@ -22,7 +22,7 @@ struct Prefixed {
 std::optional<Prefixed> prefixed(const MachineProfile& p, const Word& w) {
     if (!in(p.prefixed, w.address) || w.has_point() || w.sign || w.macro) return std::nullopt;
     std::string d = w.digits();
-    if (d.empty() || static_cast<int>(d.size()) != format_digits(p, w.address)) return std::nullopt;
+    if (d.size() < 2 || static_cast<int>(d.size()) != format_digits(p, w.address)) return std::nullopt;
     return Prefixed{d[0] - '0', std::stoi(d.substr(1))};
 }
 
@@ -48,10 +48,10 @@ void feed_check(const MachineProfile& p, const Word& w, const Block& b, const st
 
 }  // namespace
 
-MachineFormat::MachineFormat(const MachineProfile& p) : p_(p) { program_start(); }
+MachineFormat::MachineFormat(const MachineProfile& p) : p_(&p) { program_start(); }
 
 void MachineFormat::program_start() {
-    mode_ = p_.initial_mode.empty() ? nullptr : p_.find_mode(p_.initial_mode);
+    mode_ = p_->initial_mode.empty() ? nullptr : p_->find_mode(p_->initial_mode);
     selected_by_.clear();
 }
 
@@ -59,13 +59,13 @@ const FormatSpec& MachineFormat::block(const Block& b) {
     for (const auto& w : b.words) {
         if (w.address != 'G' || !w.known) continue;
         auto g = w.integer();
-        const MachineCode* c = g ? p_.find_code('G', static_cast<int>(*g)) : nullptr;
+        const MachineCode* c = g ? p_->find_code('G', static_cast<int>(*g)) : nullptr;
         if (c && !c->mode.empty()) {
-            mode_ = p_.find_mode(c->mode);
+            mode_ = p_->find_mode(c->mode);
             selected_by_ = w.text;
         }
     }
-    return mode_ ? mode_->spec : p_.format;
+    return mode_ ? mode_->spec : p_->format;
 }
 
 std::string MachineFormat::note(const Word& w) const {

@@ -32,6 +32,7 @@ std::string digits_off(const MachineProfile& p, const Word& w, Say say) {
 std::string feed(const MachineProfile& p, const Word& w, Say say) {
     if (std::string off = digits_off(p, w, say); !off.empty()) return off;
     std::string d = w.digits();
+    if (d.size() < 2) return "";
     const FeedCode* c = p.find_feed_code(d[0] - '0');
     if (!c) return w.text + say(": mode ", ": режим ") + d.substr(0, 1) + say(" is not in the table", " не из таблицы");
     std::string out = w.text + " " + c->meaning;
@@ -50,9 +51,10 @@ std::string speed(const MachineProfile& p, const Word& w, int first, int code, S
     const SpeedCode* s = p.find_speed_code(code);
     std::string out = w.text + say(" speed code ", " код скорости ") + std::to_string(code);
     if (s) return out + ": " + number(s->rpm) + say(" rev/min", " об/мин") + acknowledged(first, say);
-    return out + (p.speed_table_complete ? say(", not in the speed table", ", нет в таблице скоростей")
-                                         : say(", not in the profile's part of the speed table",
-                                               ", нет в известной части таблицы скоростей")) +
+    return out +
+           (p.speed_table_complete
+                ? say(", not in the speed table", ", нет в таблице скоростей")
+                : say(", not in the profile's part of the speed table", ", нет в известной части таблицы скоростей")) +
            acknowledged(first, say);
 }
 
@@ -62,8 +64,9 @@ std::string code_meaning(const MachineProfile& p, const Word& w, Say say) {
     int first = 0, code = std::stoi(d);
     const WordFormat* f = p.format.find(w.address);
     bool pre = p.prefixed.find(w.address) != std::string::npos && f && static_cast<int>(d.size()) == f->before;
-    if (pre && d[0] <= '1') first = d[0] - '0', code = std::stoi(d.substr(1));
-    if (w.address == 'T' && pre) return w.text + say(" tool ", " инструмент ") + std::to_string(code) + acknowledged(first, say);
+    if (pre && d.size() >= 2 && d[0] <= '1') first = d[0] - '0', code = std::stoi(d.substr(1));
+    if (w.address == 'T' && pre)
+        return w.text + say(" tool ", " инструмент ") + std::to_string(code) + acknowledged(first, say);
     if (w.address == 'T') return "";
     if (w.address == 'S') return pre ? speed(p, w, first, code, say) : digits_off(p, w, say);
     if (const MachineCode* c = p.find_code(w.address, code))

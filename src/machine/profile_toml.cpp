@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <tuple>
 
 #include "common/toml_guard.hpp"
 #include "machine/toml_fields.hpp"
@@ -40,8 +41,9 @@ void Reader::format(const Fields& top) {
     if (!t) return;
     Fields f = fields(*t, "format", top.source());
     f.only({"spec", "initial_mode", "prefixed", "mode"});
+    std::string spec = f.required_text("spec");
     try {
-        p.format = parse_format_spec(f.required_text("spec"));
+        p.format = parse_format_spec(spec);
     } catch (const Error& e) {
         f.fail("spec", e.what());
     }
@@ -67,7 +69,8 @@ void Reader::mode(const toml::table& t, std::size_t i, const Fields& parent) {
     m.source = f.source();
     m.spec = p.format;
     for (char c : m.addresses) {
-        auto w = std::find_if(m.spec.words.begin(), m.spec.words.end(), [&](const WordFormat& x) { return x.address == c; });
+        auto w =
+            std::find_if(m.spec.words.begin(), m.spec.words.end(), [&](const WordFormat& x) { return x.address == c; });
         if (w == m.spec.words.end() || !w->dimension)
             f.fail("addresses", std::string("the format has no dimension word ") + c);
         w->before = m.digits;
@@ -122,8 +125,7 @@ void Reader::feed(const Fields& top) {
         FeedCode c;
         c.first_digit = static_cast<int>(r.whole("first_digit", 0, 9).value_or(-1));
         if (c.first_digit < 0) r.fail("first_digit", "is required (0 to 9)");
-        if (p.find_feed_code(c.first_digit))
-            r.fail("first_digit", std::to_string(c.first_digit) + " is given twice");
+        if (p.find_feed_code(c.first_digit)) r.fail("first_digit", std::to_string(c.first_digit) + " is given twice");
         c.meaning = r.required_text("meaning");
         c.factor = r.number("factor", 0, 1000).value_or(1);
         c.source = r.source();
@@ -205,8 +207,8 @@ void Reader::line(const Fields& top) {
 void read_top(Reader& r, const toml::table& root) {
     MachineProfile& p = r.p;
     Fields top(root, "", r.file, "", &p.sources);
-    top.only({"name", "title", "aliases", "kind", "diameter_programming", "dialect", "format", "code", "feed",
-              "speed", "axis", "arc", "line"});
+    top.only({"name", "title", "aliases", "kind", "diameter_programming", "dialect", "format", "code", "feed", "speed",
+              "axis", "arc", "line"});
     if (top.source().empty()) top.fail("source", "is required: where the profile's values come from");
     p.sources["machine"] = top.source();
     p.name = top.required_text("name");
@@ -235,7 +237,12 @@ void read_top(Reader& r, const toml::table& root) {
 }  // namespace
 
 MachineProfile parse_machine_profile(std::string_view text, std::string_view file) {
-    reject_bare_non_ascii(text, file);
+    try {
+        reject_bare_non_ascii(text, file);
+    } catch (const Error& e) {
+        auto line = e.where().line.value_or(0);
+        throw Error(Errc::usage, e.where(), std::string(file) + ": line " + std::to_string(line) + ": " + e.what());
+    }
     toml::table root;
     try {
         root = toml::parse(text, std::string(file));

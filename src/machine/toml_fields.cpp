@@ -68,7 +68,9 @@ void Fields::fail(std::string_view key, const std::string& message) const {
     fail_at(n ? n->source().begin.line : line(), key, message);
 }
 
-void Fields::wrong(std::string_view key, const std::string& must) const { fail(key, must + ", not " + shown(*node(key))); }
+void Fields::wrong(std::string_view key, const std::string& must) const {
+    fail(key, must + ", not " + shown(*node(key)));
+}
 
 void Fields::only(std::initializer_list<std::string_view> known) const {
     for (auto&& [key, value] : table_) {

@@ -1,14 +1,30 @@
 #include "tape/reformat.hpp"
 
+#include <optional>
+
 #include "tape/lint.hpp"
+#include "tape/machine_checks.hpp"
 
 namespace tape {
+namespace {
+
+// A word in millimetres for an axis the machine counts in pulses: writing its digits would move the
+// axis by that many pulses, not millimetres.
+bool millimetres_for_pulses(const MachineProfile* m, const Word& w) {
+    const MachineAxis* a = m && w.has_point() ? m->find_axis(w.address) : nullptr;
+    return a && a->mm_per_pulse > 0;
+}
+
+}  // namespace
 
 std::string reformat(const LoadedTape& tape, const ReformatOptions& o, std::vector<Diagnostic>& findings) {
-    if (!o.spec) throw Error(Errc::usage, "no controller format to write the program for");
+    if (!o.spec && !o.machine) throw Error(Errc::usage, "no controller format to write the program for");
+    std::optional<MachineFormat> machine;
+    if (o.machine) machine.emplace(*o.machine);
     const std::string sep = o.spaces ? " " : "";
     std::string text = tape.label;
     for (const auto& p : tape.programs) {
+        if (machine) machine->program_start();
         if (!o.from && !uses_explicit_points(p)) {
             Finding f = program_finding("implied-point", p.start, 0,
                                         "the program writes no decimal point: its numbers are taken as whole numbers");
@@ -19,7 +35,8 @@ std::string reformat(const LoadedTape& tape, const ReformatOptions& o, std::vect
             text += (tape.physical_start && &p == &tape.programs.front() ? "%%" : "%") +
                     (p.numbered_by_block ? "" : p.number.value_or("")) + "\n";
         for (const auto& b : p.blocks) {
-            if (b.skip && !o.spec->block_skip)  // dropping the '/' would make an optional block mandatory
+            const FormatSpec& spec = machine ? machine->block(b) : *o.spec;
+            if (b.skip && !spec.block_skip)  // dropping the '/' would make an optional block mandatory
                 findings.push_back(
                     program_finding("spec-skip", b.where, b.ordinal, "the controller format has no '/' block skip"));
             std::string line = b.skip ? "/" : "";
@@ -35,8 +52,15 @@ std::string reformat(const LoadedTape& tape, const ReformatOptions& o, std::vect
                                           : ": not a word of the program, so not one the controller format can hold")));
                     return;
                 }
+                if (millimetres_for_pulses(o.machine, w)) {
+                    findings.push_back(program_finding("spec-word", w.where, b.ordinal,
+                                                       w.text + ": " + o.machine->title + " counts " +
+                                                           std::string(1, w.address) +
+                                                           " in pulses; converting millimetres to pulses is not done"));
+                    return;
+                }
                 try {
-                    line += (line.empty() || line == "/" ? "" : sep) + format_word(w, *o.spec, o.from, o.strip_zeros);
+                    line += (line.empty() || line == "/" ? "" : sep) + format_word(w, spec, o.from, o.strip_zeros);
                 } catch (const Error& e) {
                     findings.push_back(program_finding("spec-word", w.where, b.ordinal, e.what()));
                 }

@@ -7,6 +7,7 @@
 #include "tape/code_tables.hpp"
 #include "tape/decode.hpp"
 #include "tape/lint.hpp"
+#include "tape/machine_checks.hpp"
 
 namespace tape::detail {
 namespace {
@@ -234,9 +235,9 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
         auto shape = shape_of(*w);
         if ((shape && rules.format_broken(w->address == ':' ? 'N' : w->address, *shape)) || rules.form_broken(*w))
             out.push_back("word-format");
-        if (s_.spec)
-            for (const auto& [rule, message] : check_word(*w, *s_.spec, rules.points()))
-                out.push_back(std::string(rule));
+        const FormatSpec* spec = first ? rules.block_spec(line_, *first) : s_.spec;
+        if (spec && (!s_.machine || rules.machine_format_trusted(w->address)))
+            for (const auto& [rule, message] : check_word(*w, *spec, rules.points())) out.push_back(std::string(rule));
         if ((w->address == 'N' || w->address == ':') && w->where.line == before_lines_ + 1)
             if (auto expected = rules.expected_number(line_); expected && w->integer() != expected)
                 out.push_back("block-number");
@@ -245,6 +246,13 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
                     w->address, std::strtod(w->digits().c_str(), nullptr) / std::pow(10.0, std::max(shape->after, 0))))
                 out.push_back("value-range");
     }
+    // The machine's feed codes and prefixed words, on the words the decided frames stand in.
+    if (s_.machine && first)
+        machine_checks(*s_.machine, *first, [&](const Finding& f) {
+            for (const Word* w : words)
+                if (w->where.line == f.where.line && w->where.column == f.where.column)
+                    out.push_back(std::string(f.id()));
+        });
     // Where the neighbours say which number the block has, a try that leaves it none breaks the sequence.
     if (first && !first->number && rules.expected_number(line_)) out.push_back("block-number");
     if (const MotionState* state = rules.state_before(line_); state && first && rules.arcs_trusted())

@@ -18,9 +18,10 @@ namespace tape::detail {
 struct RepairSetup {
     FrameCode code;
     Dialect dialect = Dialect::gost;
-    bool nc = true;                    ///< the text is an NC program: its grammar and rules apply
-    const TapeRules* rules = nullptr;  ///< the program's own rules (with nc)
-    const FormatSpec* spec = nullptr;  ///< the controller's format, when given
+    bool nc = true;                           ///< the text is an NC program: its grammar and rules apply
+    const TapeRules* rules = nullptr;         ///< the program's own rules (with nc)
+    const FormatSpec* spec = nullptr;         ///< the controller's format, when given
+    const MachineProfile* machine = nullptr;  ///< the machine's profile, when given (rules has its modes)
     /// The image's first '%' (its frame index; none: SIZE_MAX): blocks after it are a program's.
     std::size_t first_percent = SIZE_MAX;
 };

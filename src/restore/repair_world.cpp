@@ -59,6 +59,7 @@ std::unique_ptr<RepairWorld> learn_world(std::span<const Frame> image, std::span
         if (end_of_block(code, image[i])) w->block_starts.push_back(i + 1);
     w->setup.code = code;
     w->setup.spec = o.spec;
+    w->setup.machine = o.machine;
     for (std::size_t i = 0; i < image.size() && w->setup.first_percent == SIZE_MAX; ++i)
         if (code.kind(image[i]) == FrameKind::character && code.character(image[i]) == '%') w->setup.first_percent = i;
     w->setup.nc = looks_like_nc_program(w->text);
@@ -76,7 +77,7 @@ std::unique_ptr<RepairWorld> learn_world(std::span<const Frame> image, std::span
         learn_skipped_frames(*w, code, line);
     }
     if (!w->setup.nc) return w;
-    w->rules = std::make_unique<TapeRules>(lines, w->numbers_damaged, o.spec);
+    w->rules = std::make_unique<TapeRules>(lines, w->numbers_damaged, o.spec, o.machine);
     load_each(w->text, {}, *w->rules, LoadOptions{w->setup.dialect});
     w->rules->finish(w->text);
     w->setup.rules = w->rules.get();

@@ -95,17 +95,31 @@ void advance(MotionState& state, const Block& block) {
 }
 
 TapeRules::TapeRules(const std::set<std::uint64_t>& damaged_lines, const std::set<std::uint64_t>& numbers_damaged,
-                     const FormatSpec* spec)
+                     const FormatSpec* spec, const MachineProfile* machine)
     : damaged_lines_(damaged_lines),
       numbers_damaged_(numbers_damaged),
+      // The machine's format is not lint's here: a tape that breaks it in places (the course text's
+      // OCR) would count as one whose grammar does not fit, and no repair would be judged by grammar.
       lint_(std::make_unique<LintVisitor>(LintOptions{spec})),
-      spec_(spec) {}
+      spec_(spec),
+      machine_(machine) {
+    if (machine) format_.emplace(*machine);
+}
+
+const FormatSpec* TapeRules::block_spec(std::uint64_t line, const Block& b) const {
+    if (!machine_) return spec_;
+    if (machine_->format.words.empty()) return nullptr;
+    auto at = format_before_.find(line);
+    MachineFormat f = at != format_before_.end() ? at->second : MachineFormat(*machine_);
+    return &f.block(b);  // the profile's format or one of its modes: it outlives f
+}
 
 TapeRules::~TapeRules() = default;
 
 void TapeRules::program_start(const Program& header) {
     lint_->program_start(header);
     state_ = MotionState{};
+    if (format_) format_->program_start();
 }
 
 void TapeRules::block(const Block& b) {
@@ -113,6 +127,18 @@ void TapeRules::block(const Block& b) {
     ++blocks_;
     bool damaged = b.damaged || damaged_lines_.count(b.where.line) > 0;
     if (damaged) before_.emplace(b.where.line, state_);
+    if (format_) {
+        if (damaged) format_before_.emplace(b.where.line, *format_);
+        const FormatSpec& spec = format_->block(b);  // a damaged block's codes as read, as advance() takes them
+        if (!damaged && !machine_->format.words.empty())
+            for (const auto& w : b.words)
+                if (w.known && !w.macro) {
+                    if (check_word(w, spec, points_).empty())
+                        ++fitting_[w.address];
+                    else
+                        untrusted_.insert(w.address);
+                }
+    }
     if (!damaged)
         if (auto closes = arc_agrees(state_, b)) ++arcs_checked_, arcs_open_ += !*closes;
     advance(state_, b);

@@ -20,6 +20,7 @@
 #include "tape/format_spec.hpp"
 #include "tape/frame.hpp"
 #include "tape/lint.hpp"
+#include "tape/machine_checks.hpp"
 #include "tape/program.hpp"
 
 namespace tape::detail {
@@ -61,7 +62,7 @@ public:
     /// before each is kept. numbers_damaged: those of them whose damage may touch the block number (the
     /// others' numbers still tell the sequence).
     TapeRules(const std::set<std::uint64_t>& damaged_lines, const std::set<std::uint64_t>& numbers_damaged,
-              const FormatSpec* spec);
+              const FormatSpec* spec, const MachineProfile* machine = nullptr);
     ~TapeRules() override;
 
     void dialect(const DialectChoice& choice) override { lint_->dialect(choice); }
@@ -108,6 +109,17 @@ public:
     /// then does arc geometry judge a repair (a controller may read I, J, K otherwise).
     bool arcs_trusted() const { return arcs_checked_ >= 3 && arcs_open_ * 10 <= arcs_checked_; }
     const FormatSpec* spec() const { return spec_; }
+    /// The format block b at line is held to: the machine's, in the mode the blocks before it and its own
+    /// codes set (b is a damaged line's block), else spec(); nullptr for none.
+    const FormatSpec* block_spec(std::uint64_t line, const Block& b) const;
+    const MachineProfile* machine() const { return machine_; }
+    /// The tape's undamaged words of the address, enough_words of them or more, all fit the machine's
+    /// format (a tape that does not keep its machine's format for an address, or shows too little of it,
+    /// is not held to it there: a repair would be judged by a rule the tape itself may break).
+    bool machine_format_trusted(char address) const {
+        auto n = fitting_.find(address);
+        return !untrusted_.count(address) && n != fitting_.end() && n->second >= enough_words;
+    }
     /// The dialect's grammar fits the undamaged program: lint finds errors in at most one block in five.
     /// Where it does not (no known dialect fits: an Okuma or Siemens program read as another), repairs
     /// are not judged by it.
@@ -142,6 +154,11 @@ private:
     std::set<std::string> excused_;
     std::map<std::uint64_t, MotionState> before_;
     const FormatSpec* spec_;
+    const MachineProfile* machine_;
+    std::optional<MachineFormat> format_;                   // with a machine: the mode where the next block begins
+    std::map<std::uint64_t, MachineFormat> format_before_;  // and where each damaged line begins
+    std::set<char> untrusted_;             // addresses whose undamaged words break the machine's format
+    std::map<char, std::size_t> fitting_;  // undamaged words that fit it, by address
     bool points_ = false;
     long long step_ = 0;  // the block numbers' steady step, 0 for none
     std::size_t arcs_checked_ = 0, arcs_open_ = 0;

@@ -1,6 +1,9 @@
 // tape emulate: act as a tape reader holding IMAGE toward a controller on DEVICE.
+#include <algorithm>
+
 #include "cli/globals.hpp"
 #include "cli/inputs.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "cli/options.hpp"
@@ -17,7 +20,23 @@ struct EmulateArgs {
     double rate = 1500;
     bool send_leader = false;
     std::vector<std::string> serial_only;  ///< the serial line's options given
+    std::string machine;
+    bool code_given = false, parity_given = false;
 };
+
+// --machine: the profile's reader speed, code, parity and flow where the command line gave none.
+void machine_line(EmulateArgs& a) {
+    auto m = machine_or_fail(a.machine);
+    if (!m) return;
+    const tape::MachineLine& l = m->line;
+    auto given = [&](const char* option) {
+        return std::find(a.serial_only.begin(), a.serial_only.end(), option) != a.serial_only.end();
+    };
+    if (!given("--rate") && l.reader_frames_per_second > 0) a.rate = l.reader_frames_per_second;
+    if (!given("--flow") && l.flow == tape::Flow::rtscts) a.flow = "rtscts";
+    if (!a.code_given && l.code) a.code = std::string(tape::code_name(*l.code));
+    if (!a.parity_given && l.parity) a.parity = std::string(tape::parity_name(*l.parity));
+}
 
 // Through a USB tape adapter wired to the control's reader input: the control's own lines start, stop,
 // turn and rewind; the serial line's options have nothing to act on.
@@ -102,6 +121,7 @@ void add_emulate(CLI::App& app) {
                     "Device string, e.g. serial:/dev/ttyUSB0?baud=9600, or a USB tape adapter wired to the control's "
                     "reader input: adapter:/dev/ttyACM0, usb:1209:0001, hid:1209:0001")
         ->required();
+    add_machine_option(sub, a->machine, "its reader speed, code, parity and flow where these options are not given");
     sub->add_option("--rate", a->rate, "Reader speed in frames per second (ФС-1501: 1500)")
         ->check(real_number(min_rate, max_rate))
         ->capture_default_str();
@@ -126,6 +146,9 @@ void add_emulate(CLI::App& app) {
     sub->callback([a, sub] {
         for (const char* option : {"--rate", "--flow", "--search-char", "--rewind-char"})
             if (sub->count(option)) a->serial_only.push_back(option);
+        a->code_given = sub->count("--code") > 0;
+        a->parity_given = sub->count("--parity") > 0;
+        machine_line(*a);
         run(*a);
     });
 }

@@ -1,5 +1,6 @@
 // tape feed: send a program to a controller over a line, as a tape reader would (DNC, drip feed).
 #include "cli/inputs.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/numbers.hpp"
 #include "commands.hpp"
@@ -19,9 +20,24 @@ struct FeedArgs {
     std::string flow, xon = "0x11", xoff = "0x13";
     std::string from_block;  // restart after a tool break
     bool show = false;
+    std::string machine;
 };
 
-void run(const FeedArgs& a) {
+// --machine: the profile's code, dialect, flow, DC1 wait and reader speed where the command line gave none.
+void machine_line(FeedArgs& a) {
+    auto m = machine_or_fail(a.machine);
+    if (!m) return;
+    const tape::MachineLine& l = m->line;
+    if (a.profile.choice.code == "auto" && l.code) a.profile.choice.code = std::string(tape::code_name(*l.code));
+    if (a.profile.dialect == "auto") a.profile.dialect = std::string(tape::dialect_name(m->dialect));
+    if (a.flow.empty() && l.flow)
+        a.flow = *l.flow == tape::Flow::xonxoff ? "xonxoff" : *l.flow == tape::Flow::rtscts ? "rtscts" : "none";
+    if (l.dc_codes) a.wait_xon = true;
+    if (a.rate == 0 && a.delay_ms == 0) a.rate = l.reader_frames_per_second;
+}
+
+void run(FeedArgs& a) {
+    machine_line(a);
     // Every option is checked before the device is opened: a refusal leaves no file and sends nothing.
     tape::SendOptions o;
     o.rate = a.rate > 0 ? a.rate : (a.delay_ms > 0 ? 1000.0 / a.delay_ms : 0);
@@ -73,6 +89,8 @@ void add_feed(CLI::App& app) {
         ->excludes(rate);
     sub->add_option("--flow", a->flow, "Override the device's flow control: xonxoff, rtscts or none")
         ->check(CLI::IsMember({"xonxoff", "rtscts", "none"}));
+    add_machine_option(sub, a->machine,
+                       "its code, dialect, flow control, DC1 wait and reader speed where these options are not given");
     sub->add_flag("--wait-xon", a->wait_xon, "Send nothing before the controller's first DC1 (XON)");
     sub->add_option("--xon-timeout", a->xon_timeout,
                     "With --wait-xon: give up after SECONDS (default 0: wait until Ctrl-C)")

@@ -1,5 +1,6 @@
 // tape format: rewrite a program for a controller's format (§9): explicit <-> implied point, digits, signs.
 #include "cli/globals.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
@@ -13,25 +14,34 @@ namespace cli {
 namespace {
 
 struct FormatArgs {
-    std::string input = "-", output = "-", spec, from, out_format;
+    std::string input = "-", output = "-", spec, from, out_format, machine;
     ProgramSource source;
     std::string out_code = "iso";
     bool strip_zeros = false, spaces = false, force = false;
     const CLI::Option* from_option = nullptr;  // given or not: "--from ''" is an error, not "no --from"
+    const CLI::Option* spec_option = nullptr;  // the same for --spec
 };
 
 void run(const FormatArgs& a) {
-    tape::FormatSpec spec = parse_spec_or_fail(a.spec);
+    auto machine = machine_or_fail(a.machine);
+    if (machine.has_value() == (a.spec_option->count() > 0))
+        fail("", tape::Errc::usage, "give the format to write: --spec SPEC or --machine NAME (one of them)");
+    if (machine && machine->format.words.empty())
+        fail("", tape::Errc::usage, "--machine " + a.machine + ": the profile holds no word format");
+    std::optional<tape::FormatSpec> spec;
+    if (!machine) spec = parse_spec_or_fail(a.spec);
     std::optional<tape::FormatSpec> from;
     if (a.from_option->count() > 0) from = parse_spec_or_fail(a.from);
     ProgramInput in = open_program(a.input, a.source);
     load_program_whole(in);
     std::vector<tape::Diagnostic> findings;
-    std::string text = tape::reformat(
-        in.tape,
-        tape::ReformatOptions{
-            .spec = &spec, .from = from ? &*from : nullptr, .strip_zeros = a.strip_zeros, .spaces = a.spaces},
-        findings);
+    std::string text = tape::reformat(in.tape,
+                                      tape::ReformatOptions{.spec = spec ? &*spec : nullptr,
+                                                            .from = from ? &*from : nullptr,
+                                                            .strip_zeros = a.strip_zeros,
+                                                            .spaces = a.spaces,
+                                                            .machine = machine ? &*machine : nullptr},
+                                      findings);
     bool failed = false;
     for (const auto& f : findings) {
         std::string block = f.where.block ? ": block " + std::to_string(*f.where.block) : "";
@@ -67,7 +77,9 @@ void add_format(CLI::App& app) {
     auto a = std::make_shared<FormatArgs>();
     auto* sub = app.add_subcommand("format", "Rewrite a program for a controller's format (ГОСТ 20999-83 §9)");
     sub->add_option("input", a->input, "Tape image or text program; - or nothing for stdin");
-    sub->add_option("--spec,-s", a->spec, "The controller's format, e.g. \"N03 G02 X+053 Y+053 F031 M02\"")->required();
+    a->spec_option =
+        sub->add_option("--spec,-s", a->spec, "The controller's format, e.g. \"N03 G02 X+053 Y+053 F031 M02\"");
+    add_machine_option(sub, a->machine, "write for its format, each block as its G codes set it (instead of --spec)");
     a->from_option =
         sub->add_option("--from", a->from, "The format the program is written in, for words with an implied point");
     sub->add_option("-o,--output", a->output, "Where to write: text, or a tape image when OUT has an image extension");

@@ -105,7 +105,8 @@ void run(const LintArgs& a) {
     // Streamed: a tape of any length is checked in bounded memory (--max-errors findings a rule).
     ProgramInput in = open_program(a.input, a.source);
     auto machine = machine_or_fail(a.machine);
-    if (machine && spec) fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");
+    if (machine && spec)
+        fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");
     if (machine && a.source.dialect == "auto") in.load.dialect = machine->dialect;
     tape::LintVisitor linter(
         tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict, machine ? &*machine : nullptr});
@@ -161,7 +162,8 @@ void add_lint(CLI::App& app) {
     sub->add_option("--explain", a->explain, "Print what RULE checks, why, and its reference; no input is read")
         ->option_text("RULE");
     sub->add_flag("--rules", a->rules, "List every rule: id, severity, the dialects it applies to; no input is read");
-    add_machine_option(sub, a->machine, "its word format as its G codes set it (in place of --spec), feed and speed codes");
+    add_machine_option(sub, a->machine,
+                       "its word format as its G codes set it (in place of --spec), feed and speed codes");
     sub->add_flag("--strict", a->strict, "Blank tape inside a block (a character that lost its holes?) is an error");
     sub->callback([a] { run(*a); });
 }

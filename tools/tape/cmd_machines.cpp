@@ -27,13 +27,15 @@ std::string num(double v) {
 void list() {
     std::string out;
     for (const auto& m : tape::list_machines())
-        out += padded(m.name, 14) + m.title + (m.bundled ? "" : "  (" + m.file + ")") + "\n";
+        out += padded(m.name, 14) + (m.broken ? m.file + " does not read: " + m.title : m.title) +
+               (m.bundled || m.broken ? "" : "  (" + m.file + ")") + "\n";
     write_output("-", out, false, false);
 }
 
 // "  key: value  [source]": every value with where it comes from.
 std::string row(const std::string& key, const std::string& value, const std::string& source) {
-    return "  " + padded(key + ":", 22) + value + (source.empty() ? "" : "\n  " + std::string(22, ' ') + "source: " + source) + "\n";
+    return "  " + padded(key + ":", 22) + value +
+           (source.empty() ? "" : "\n  " + std::string(22, ' ') + "source: " + source) + "\n";
 }
 
 std::string source_of(const tape::MachineProfile& p, const std::string& key) {
@@ -45,8 +47,9 @@ std::string format_part(const tape::MachineProfile& p) {
     if (p.format.words.empty()) return row("format", "not known", "");
     std::string out = row("format", p.format.text, source_of(p, "format"));
     for (const auto& m : p.modes)
-        out += row("  mode " + m.name, m.addresses + ": " + std::to_string(m.digits) + " digits" +
-                                           (m.name == p.initial_mode ? " (at the program's start)" : ""),
+        out += row("  mode " + m.name,
+                   m.addresses + ": " + std::to_string(m.digits) + " digits" +
+                       (m.name == p.initial_mode ? " (at the program's start)" : ""),
                    m.source);
     if (!p.prefixed.empty())
         out += row("  first digit 0 or 1", p.prefixed + " (1: after the machine's acknowledgement)", "");
@@ -63,7 +66,8 @@ std::string codes_part(const tape::MachineProfile& p) {
     for (const auto& f : p.feed_codes)
         out += row(std::string(1, p.feed_table_address) + " first digit " + std::to_string(f.first_digit),
                    f.meaning + (f.factor > 0 ? ", x" + num(f.factor) : ""), f.source);
-    for (const auto& s : p.speed_codes) out += row("S code " + std::to_string(s.code), num(s.rpm) + " rev/min", s.source);
+    for (const auto& s : p.speed_codes)
+        out += row("S code " + std::to_string(s.code), num(s.rpm) + " rev/min", s.source);
     if (!p.speed_codes.empty() && !p.speed_table_complete)
         out += row("speed table", "incomplete: other codes may be the machine's", source_of(p, "speed"));
     return out;
@@ -94,14 +98,17 @@ std::string line_part(const tape::MachineProfile& p) {
     if (l.baud) add(std::to_string(l.baud) + " baud");
     if (l.data_bits) add(std::to_string(l.data_bits) + " data bits");
     if (l.stop_bits) add(std::to_string(l.stop_bits) + " stop bits");
-    if (l.flow) add(*l.flow == tape::Flow::xonxoff ? "XON/XOFF" : *l.flow == tape::Flow::rtscts ? "RTS/CTS" : "no flow control");
+    if (l.flow)
+        add(*l.flow == tape::Flow::xonxoff  ? "XON/XOFF"
+            : *l.flow == tape::Flow::rtscts ? "RTS/CTS"
+                                            : "no flow control");
     if (l.dc_codes) add("DC codes (waits for DC1)");
     if (l.reader_frames_per_second > 0) add("reader " + num(l.reader_frames_per_second) + " frames/s");
     return v.empty() ? "" : row("line", v, l.source);
 }
 
 void show(const std::string& name) {
-    tape::MachineProfile p = *machine_or_fail(name);
+    tape::MachineProfile p = *machine_or_fail(name, "machines show");
     std::string aliases;
     for (const auto& a : p.aliases) aliases += (aliases.empty() ? "" : ", ") + a;
     std::string out = p.name + ": " + p.title + " (" + p.file + ")\n";

@@ -4,6 +4,7 @@
 
 #include "cli/files.hpp"
 #include "cli/inputs.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
 #include "cli/outputs.hpp"
@@ -21,7 +22,7 @@ namespace {
 
 struct RestoreArgs {
     std::vector<std::string> reads;
-    std::string output, report, html, format, code = "auto", parity, dialect = "auto", spec;
+    std::string output, report, html, format, code = "auto", parity, dialect = "auto", spec, machine;
     bool json = false, force = false, guess = false, drop_unrelated = false, no_doubts_file = false;
 };
 
@@ -44,6 +45,9 @@ void run(const RestoreArgs& a) {
         refuse_existing(out, a.force);
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
+    auto machine = machine_or_fail(a.machine);
+    if (machine && spec)
+        fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");
     const tape::ImageFormat& out_format = output_format(a.format, a.output);
     refuse_binary_terminal(a.output, out_format.binary, a.force);
     ReadsAndDoubts in = read_tapes_or_pictures(a.reads);
@@ -56,6 +60,7 @@ void run(const RestoreArgs& a) {
     }
     RestoreChoices choices{.dialect = a.dialect, .guess = a.guess, .drop_unrelated = a.drop_unrelated};
     choices.spec = spec ? &*spec : nullptr;
+    choices.machine = machine ? &*machine : nullptr;
     tape::RestoreResult result = run_restore(choices, in, report);
     report.result = &result;
     say_about_reads(report, result);
@@ -106,6 +111,9 @@ void add_restore(CLI::App& app) {
         ->check(CLI::IsMember({"even", "odd", "mark", "space", "none"}));
     add_dialect_option(sub, a->dialect);
     sub->add_option("--spec,-s", a->spec, "Controller format repairs must also fit (ГОСТ 20999-83 §9 notation)");
+    add_machine_option(
+        sub, a->machine,
+        "repairs must fit its word format mode by mode, feed code table and S, T, M words (instead of --spec)");
     sub->add_flag("--guess", a->guess,
                   "Where several repairs fit, write the likeliest, marked guessed with the others listed (exit 1)");
     sub->add_flag("--drop-unrelated", a->drop_unrelated,

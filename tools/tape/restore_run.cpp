@@ -10,7 +10,9 @@ tape::RestoreResult run_restore(const RestoreChoices& c, const ReadsAndDoubts& i
     const std::vector<TapeInput>& reads = in.reads;
     std::vector<std::span<const tape::Frame>> spans;
     for (const auto& r : reads) spans.emplace_back(r.frames);
-    tape::RestoreOptions o{.code = report.code, .dialect = *tape::parse_dialect(c.dialect), .spec = c.spec};
+    tape::Dialect dialect = *tape::parse_dialect(c.dialect);
+    if (c.machine && c.dialect == "auto") dialect = c.machine->dialect;
+    tape::RestoreOptions o{.code = report.code, .dialect = dialect, .spec = c.spec, .machine = c.machine};
     o.guess = c.guess;
     o.align.drop_unrelated = c.drop_unrelated;
     o.doubts = in.doubts;  // a picture's faint holes weigh less than a sure reading

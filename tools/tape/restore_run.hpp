@@ -8,6 +8,7 @@
 #include "picture_reads.hpp"
 #include "restore_report.hpp"
 #include "tape/format_spec.hpp"
+#include "tape/machine.hpp"
 #include "tape/restore.hpp"
 
 namespace cli {
@@ -17,6 +18,7 @@ struct RestoreChoices {
     std::string dialect = "auto";
     bool guess = false, drop_unrelated = false;
     const tape::FormatSpec* spec = nullptr;
+    const tape::MachineProfile* machine = nullptr;  ///< --machine: its format, feed table and dialect
 };
 
 /// Restores in's reads in report.code; a read of another tape (named by its file) or another refusal ends

@@ -12,6 +12,7 @@
 #include "common/toml_guard.hpp"
 #include "tape/error.hpp"
 #include "tape/file_io.hpp"
+#include "tape/machine.hpp"
 #include "tape/serial_settings.hpp"
 
 namespace cli {
@@ -130,10 +131,11 @@ void more_machine_key(const std::string& key, const Value& v, MachineSettings& m
     } else if (key == "answer_unknown") {
         m.answer_unknown = v.flag();
     } else {
-        bad(line_of(v.node), v.what.substr(0, v.what.rfind(':')) + ": unknown key '" + key +
-                                 "' (known: name, device, code, parity, leader, trailer, crlf, percent, dialect, "
-                                 "rate, delay, block_delay, flow, wait_xon, xon_timeout, xon, xoff, burst, "
-                                 "receive_timeout, max_punch_out, answer_unknown)");
+        bad(line_of(v.node),
+            v.what.substr(0, v.what.rfind(':')) + ": unknown key '" + key +
+                "' (known: name, machine, device, code, parity, leader, trailer, crlf, percent, dialect, "
+                "rate, delay, block_delay, flow, wait_xon, xon_timeout, xon, xoff, burst, "
+                "receive_timeout, max_punch_out, answer_unknown)");
     }
 }
 
@@ -170,13 +172,34 @@ void machine_key(const std::string& key, const Value& v, MachineSettings& m) {
     }
 }
 
+// machine = "NAME": the profile's line settings (code, parity, dialect, flow, DC1 wait, reader speed), which
+// the [[machine]]'s own keys then override.
+void profile_settings(const Value& v, MachineSettings& m) {
+    tape::MachineProfile p;
+    std::string name = v.text();
+    try {
+        p = tape::load_machine(name);
+    } catch (const tape::Error& e) {
+        bad(line_of(v.node), v.what + ": " + e.what());
+    }
+    const tape::MachineLine& l = p.line;
+    if (l.code) m.code = *l.code;
+    if (l.parity) m.parity = *l.parity;
+    m.dialect = p.dialect;
+    if (l.flow) m.flow = *l.flow;
+    m.wait_xon = l.dc_codes;
+    if (l.reader_frames_per_second > 0) m.rate = l.reader_frames_per_second;
+}
+
 MachineSettings read_machine(const toml::table& t, std::size_t index) {
     MachineSettings m;
     m.line = line_of(t);
     if (auto name = t["name"].value<std::string>()) m.name = *name;
     std::string who = "machine " + (m.name.empty() ? "#" + std::to_string(index + 1) : "'" + m.name + "'");
+    if (const toml::node* profile = t.get("machine")) profile_settings(Value{*profile, who + ": machine"}, m);
     for (auto&& [key, node] : t)
-        machine_key(std::string(key.str()), Value{node, who + ": " + std::string(key.str())}, m);
+        if (key.str() != "machine")
+            machine_key(std::string(key.str()), Value{node, who + ": " + std::string(key.str())}, m);
     if (m.name.empty()) bad(m.line, who + ": no name (name = \"mill-1\")");
     if (m.device.empty()) bad(m.line, who + ": no device (device = \"serial:/dev/ttyS0?baud=9600\")");
     if ((m.xon & 0x7F) == (m.xoff & 0x7F)) bad(m.line, who + ": xon and xoff are the same character");
