@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -298,6 +299,52 @@ TEST(MotionSamples, SampleTapesSimulated) {
     }
     auto lathe = run(read(sample_path("16k20f3s5-turning.txt")), Dialect::gost);
     EXPECT_GT(lathe.count(MoveKind::not_simulated), 0u);
+}
+
+// Real programs from outside (../shared/data): those that hold only what the interpreter covers run
+// with no move left out; in every one, every move is finite.
+TEST(MotionSamples, OutsideProgramsCovered) {
+    SKIP_WITHOUT_SHARED_DATA("outside2");
+    const char* covered[] = {"outside/gcodes_circle.gcode",
+                             "outside/lcnc/3dtest.ngc",
+                             "outside/lcnc/arcspiral.ngc",
+                             "outside/lcnc/cds.ngc",
+                             "outside/lcnc/comp.ngc",
+                             "outside/lcnc/hole-circle.ngc",
+                             "outside/lcnc/lathe_pawn.ngc",
+                             "outside/lcnc/lathecomp.ngc",
+                             "outside/receiveFile1.nc",
+                             "outside2/fanuc/gcw_FANUC0M.nc",
+                             "outside2/fanuc/gcw_FANUC0T.nc",
+                             "outside2/grbl/escriba_example11.gcode",
+                             "outside2/grbl/pg328_bot_drill.nc",
+                             "outside2/grbl/pg328_pta_etch.nc",
+                             "outside2/haas/gcw_HAAS.nc",
+                             "outside2/lcnc/lagun_HEMA-P005.ngc",
+                             "outside2/other/gcw_TOKARKA.NC",
+                             "outside3/cam/momemarian_Face.nc",
+                             "outside3/cam/norn93_2_HELIX_BORES_modified.gcode",
+                             "outside3/cam/norn93_demo.gcode",
+                             "outside3/cam/sergey_EccentricFlag.nc",
+                             "outside3/cam/sergey_adapter_BK12_1.tap",
+                             "outside3/cam/sergey_petlya_step.nc",
+                             "outside3/cam/shooshx_1024_block_14bit.nc",
+                             "outside3/cam/shooshx_1110_wall_265bit.nc",
+                             "outside3/fanuc/fcs_sub_2001.nc",
+                             "outside3/haas/cade_TEAMMACHINE-ENGRAVE.nc",
+                             "outside3/haas/cade_stepblock-steps-o78241.nc"};
+    for (const char* name : covered) {
+        if (!std::filesystem::exists(shared_data(name))) continue;
+        std::string text = read(shared_data(name));
+        if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+        auto c = run(text, tape::motion_options(tape::guess_dialect(text).dialect));
+        EXPECT_EQ(c.count(MoveKind::not_simulated), 0u) << name;
+        EXPECT_GT(c.moves.size(), 0u) << name;
+        for (const auto& m : c.moves)
+            ASSERT_TRUE(std::isfinite(m.end.x) && std::isfinite(m.end.y) && std::isfinite(m.end.z) &&
+                        std::isfinite(m.length()))
+                << name << " line " << m.where.line;
+    }
 }
 
 }  // namespace
