@@ -123,9 +123,9 @@ struct MotionOptions {
 };
 
 /// The options with the arc tolerance of dialect's controls: ГОСТ and none, the seeds' controller
-/// (1 µm, alarm 7.56); LinuxCNC, its defaults (0.0283 mm or 0.1 % of the radius, 0.0028 in as
-/// 0.0719 mm in G20 programs is not applied: the millimetre rule is taken); Fanuc, 0.02 mm (parameter
-/// No. 3410 is set per machine; give --arc-tolerance for yours).
+/// (1 µm, alarm 7.56); LinuxCNC, its defaults (0.0283 mm or 0.1 % of the radius, either limit passed
+/// is an error; its inch limit, 0.0028 in, is not used: the millimetre rule stands for both); Fanuc,
+/// 0.02 mm (parameter No. 3410 is set per machine: give yours).
 MotionOptions motion_options(Dialect dialect);
 
 /// The interpreter fed by the loader (ProgramLoader, load_each): blocks in, moves out, in bounded memory
