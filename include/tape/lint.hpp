@@ -17,7 +17,8 @@ namespace tape {
 
 namespace lint_detail {
 class BlockTargets;
-}
+class ArcChecks;
+}  // namespace lint_detail
 struct MachineProfile;
 class MachineFormat;
 
@@ -28,6 +29,12 @@ struct LintOptions {
     /// Also check the program against this machine: its word format as its format-changing codes set
     /// it (in place of spec), its feed and speed codes (tape/machine_checks.hpp).
     const MachineProfile* machine = nullptr;
+    /// Arcs are checked to this tolerance in mm (--arc-tolerance); unset: the dialect's controls'
+    /// (motion_options in tape/motion.hpp).
+    std::optional<double> arc_tolerance_mm{};
+    /// Arcs are checked on their circles (the motion interpreter runs alongside). The dialect guess
+    /// turns it off: a program's geometry is no evidence of its dialect.
+    bool arcs = true;
 };
 
 /// Every finding: the loader's syntax findings and the rules of tape/rules.hpp that apply to the
@@ -102,9 +109,10 @@ private:
         std::uint64_t block;
     };
     std::vector<Open> open_;
-    std::unique_ptr<lint_detail::BlockTargets> targets_;
-    std::unique_ptr<MachineFormat> machine_format_;  // with a machine: the word format block by block  // Fanuc: the
-                                                     // blocks its GOTOs, cycles and calls name
+class ArcChecks;
+}  // namespace lint_detail
+struct MachineProfile;
+class MachineFormat;
 };
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).

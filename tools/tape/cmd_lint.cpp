@@ -23,6 +23,7 @@ struct LintArgs {
     ProgramSource source;
     bool json = false, rules = false, strict = false;
     std::uint64_t max = 0;
+    std::optional<double> arc_tolerance;
 };
 
 std::string rule_names() {
@@ -109,7 +110,8 @@ void run(const LintArgs& a) {
         fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");
     if (machine && a.source.dialect == "auto") in.load.dialect = machine->dialect;
     tape::LintVisitor linter(
-        tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict, machine ? &*machine : nullptr});
+        tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict, machine ? &*machine : nullptr,
+                         a.arc_tolerance});
     load_program(in, linter, true);
     std::vector<tape::Finding> findings = linter.findings();
     std::uint64_t unlisted = 0;
@@ -165,6 +167,12 @@ void add_lint(CLI::App& app) {
     add_machine_option(sub, a->machine,
                        "its word format as its G codes set it (in place of --spec), feed and speed codes");
     sub->add_flag("--strict", a->strict, "Blank tape inside a block (a character that lost its holes?) is an error");
+    sub->add_option("--arc-tolerance", a->arc_tolerance,
+                    "How far (mm) an arc's end may be off its circle: the radii to start and end may differ by this "
+                    "much. Default: the dialect's control (ГОСТ: 0.001, the seeds' alarm 7.56; LinuxCNC: 0.0283 or "
+                    "0.1 % of the radius; Fanuc: 0.02, parameter No. 3410)")
+        ->check(CLI::Range(0.0, 1000.0))
+        ->option_text("MM");
     sub->callback([a] { run(*a); });
 }
 
