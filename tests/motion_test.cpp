@@ -167,12 +167,15 @@ TEST(MotionTolerance, GostMicron) {
         << outside.findings[0].message;
 }
 
-// LinuxCNC: off by more than 0.0283 mm OR by more than 0.1 % of the larger radius.
-TEST(MotionTolerance, LinuxCncEitherLimit) {
-    EXPECT_EQ(run(off_circle(10, 0.0099, "") + "M2\n").rule("arc-radius"), 0u);  // 0.1 % of 10 is 0.01
-    EXPECT_EQ(run(off_circle(10, 0.0102, "") + "M2\n").rule("arc-radius"), 1u);
-    EXPECT_EQ(run(off_circle(100, 0.0282, "") + "M2\n").rule("arc-radius"), 0u);  // 0.1 % of 100 is 0.1
-    EXPECT_EQ(run(off_circle(100, 0.0284, "") + "M2\n").rule("arc-radius"), 1u);
+// LinuxCNC (interp_arc.cc, arc_data_ijk): off by more than 0.0283 mm AND by more than 0.1 % of the larger
+// radius, or by more than 2.83 mm whatever the radius.
+TEST(MotionTolerance, LinuxCncBothLimits) {
+    EXPECT_EQ(run(off_circle(10, 0.0280, "") + "M2\n").rule("arc-radius"), 0u);    // 0.28 %, under 0.0283 mm
+    EXPECT_EQ(run(off_circle(10, 0.0290, "") + "M2\n").rule("arc-radius"), 1u);    // 0.29 % and over 0.0283
+    EXPECT_EQ(run(off_circle(100, 0.0990, "") + "M2\n").rule("arc-radius"), 0u);   // over 0.0283, 0.099 %
+    EXPECT_EQ(run(off_circle(100, 0.1010, "") + "M2\n").rule("arc-radius"), 1u);   // 0.101 %
+    EXPECT_EQ(run(off_circle(5000, 2.8000, "") + "M2\n").rule("arc-radius"), 0u);  // 0.056 %
+    EXPECT_EQ(run(off_circle(5000, 2.8400, "") + "M2\n").rule("arc-radius"), 1u);  // over 100 x 0.0283
 }
 
 TEST(MotionTolerance, OptionWidens) {

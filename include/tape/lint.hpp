@@ -109,10 +109,9 @@ private:
         std::uint64_t block;
     };
     std::vector<Open> open_;
-class ArcChecks;
-}  // namespace lint_detail
-struct MachineProfile;
-class MachineFormat;
+    std::unique_ptr<lint_detail::BlockTargets> targets_;  // Fanuc: the blocks its GOTOs, cycles and calls name
+    std::unique_ptr<lint_detail::ArcChecks> arcs_;        // the interpreter, for arcs on their circles
+    std::unique_ptr<MachineFormat> machine_format_;       // with a machine: the word format block by block
 };
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).

@@ -111,9 +111,10 @@ struct MotionOptions {
     double arc_tolerance_mm = 0.001;    ///< an arc's end may be this far off its circle (the seeds' micron)
     double arc_tolerance_relative = 0;  ///< plus this fraction of the radius (LinuxCNC: 0.001)
     bool follow_subprograms = true;     ///< M98/M97/o-call into a program on the same tape
-    /// LinuxCNC's rule: an arc is off when the radii differ by more than arc_tolerance_mm OR by more
-    /// than arc_tolerance_relative of the larger radius (interp_arc.cc). false: by more than their sum.
-    bool arc_tolerance_either = false;
+    /// LinuxCNC's rule (interp_arc.cc, arc_data_ijk): an arc is off when the radii differ by more than
+    /// arc_tolerance_mm AND by more than arc_tolerance_relative of the larger radius, or by more than 100
+    /// times arc_tolerance_mm. false: off when they differ by more than the two added.
+    bool arc_tolerance_linuxcnc = false;
     bool block_skip = false;  ///< the block-skip switch is on: '/' blocks do not run
     /// Not known whether the program is for a lathe (lint): a ZX-plane arc is checked with X read as a
     /// radius and as a diameter, and is a finding only when neither reading puts its end on the circle.

@@ -41,8 +41,9 @@ bool MotionMachine::checkable_arc(unsigned plane_bits, char cu, char cv) const {
 bool MotionMachine::arc_off(double r1, double r2) const {
     double diff = std::fabs(r1 - r2), r = std::max(r1, r2);
     double slack = 1e-9 * (1 + r);  // what a double loses on the way: not the control's tolerance
-    if (opt_.arc_tolerance_either)
-        return diff > opt_.arc_tolerance_mm + slack || diff > opt_.arc_tolerance_relative * r + slack;
+    if (opt_.arc_tolerance_linuxcnc)
+        return diff > 100 * opt_.arc_tolerance_mm + slack ||
+               (diff > opt_.arc_tolerance_mm + slack && diff > opt_.arc_tolerance_relative * r + slack);
     return diff > opt_.arc_tolerance_mm + opt_.arc_tolerance_relative * r + slack;
 }
 
@@ -62,8 +63,10 @@ void MotionMachine::check_arc(int u, int v) {
     }
     std::string tolerance = fixed(opt_.arc_tolerance_mm) + " mm";
     if (opt_.arc_tolerance_relative > 0)
-        tolerance += std::string(opt_.arc_tolerance_either ? " or " : " + ") +
-                     fixed(opt_.arc_tolerance_relative * 100) + " % of the radius";
+        tolerance = opt_.arc_tolerance_linuxcnc
+                        ? tolerance + " when that is over " + fixed(opt_.arc_tolerance_relative * 100) +
+                              " % of the radius, and never " + fixed(100 * opt_.arc_tolerance_mm) + " mm"
+                        : tolerance + " + " + fixed(opt_.arc_tolerance_relative * 100) + " % of the radius";
     finding("arc-radius", "radius to end of arc differs from radius to start: start=" + point(mv_.start, u, v) +
                               " center=" + point(mv_.centre, u, v) + " end=" + point(mv_.end, u, v) +
                               " r1=" + fixed(r1) + " r2=" + fixed(r2) + " difference=" + fixed(std::fabs(r1 - r2)) +

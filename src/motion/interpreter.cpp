@@ -36,7 +36,7 @@ MotionOptions motion_options(Dialect dialect) {
         case Dialect::linuxcnc:  // CENTER_ARC_RADIUS_TOLERANCE_MM = 2 * 0.01 * sqrt(2), SPIRAL_RELATIVE_TOLERANCE
             o.arc_tolerance_mm = 2 * 0.01 * std::numbers::sqrt2;
             o.arc_tolerance_relative = 0.001;
-            o.arc_tolerance_either = true;
+            o.arc_tolerance_linuxcnc = true;
             break;
         case Dialect::fanuc:
             o.arc_tolerance_mm = 0.02;

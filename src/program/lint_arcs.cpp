@@ -10,7 +10,7 @@ MotionOptions ArcChecks::options_for(Dialect dialect, const LintOptions& options
     if (options.arc_tolerance_mm) {
         o.arc_tolerance_mm = *options.arc_tolerance_mm;
         o.arc_tolerance_relative = 0;
-        o.arc_tolerance_either = false;
+        o.arc_tolerance_linuxcnc = false;
     }
     return o;
 }

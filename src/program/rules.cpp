@@ -11,7 +11,7 @@ constexpr std::string_view all = "gost fanuc linuxcnc";
 // What holds for every control, also when no known dialect fits (none): characters, parity, blocks, comments.
 constexpr std::string_view every = "gost fanuc linuxcnc none";
 
-constexpr std::array<Rule, 42> table = {{
+constexpr std::array table = std::to_array<Rule>({
     // The loader: how characters become programs, blocks and words.
     {"unexpected-character", E, every, "ГОСТ 20999-83 tables 1-3; ISO 646 (every control reads 7-bit code)",
      "a character, or a run of characters, that no program of the dialect may hold outside comments (when no "
@@ -149,7 +149,7 @@ constexpr std::array<Rule, 42> table = {{
     {"implied-point", W, all, "ГОСТ 20999-83 §3.1.4",
      "tape format: a program with no decimal point anywhere, whose numbers are taken as whole numbers",
      "with an implied point the same digits mean another size; give the source format with --from"},
-}};
+});
 
 }  // namespace
 
