@@ -37,8 +37,8 @@ TEST(TomlGuard, TextInStringsAndCommentsPasses) {
         "'ключ' = 1\n",
         "note = \"\"\"\nстрока\n\"кавычки\" \"\" внутри\n\"\"\"\n",
         "note = '''\nстрока ' и '' внутри\n'''\n",
-        "note = \"a \\\" Ж\"\n",                 // an escaped quote does not end the string
-        "note = \"\"\"a \\\"\"\" Ж\"\"\"\n",     // nor in a multi-line one
+        "note = \"a \\\" Ж\"\n",                   // an escaped quote does not end the string
+        "note = \"\"\"a \\\"\"\" Ж\"\"\"\n",       // nor in a multi-line one
         "note = \"\"\"кавычка в конце\"\"\"\"\n",  // four quotes: the string ends with one
         "a = 1\r\n# Ж\r\nb = \"Ж\"\r\n",
         "",
