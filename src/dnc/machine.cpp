@@ -172,16 +172,16 @@ bool Machine::listen(Transport& line) {
 
 void Machine::finish_punch_out(Transport& line, Reception& rx, ReceiveResult::End end, double seconds) {
     const PunchOutWatch& watch = rx.watch;
-    if (!watch.content()) {  // a line end or a '%' after the last punch-out: nothing to file
-        rx.file.discard();
-        log(Priority::debug, std::to_string(rx.frames) + " frames of '%', blanks and line ends only: not filed");
-        return;
-    }
     if (watch.noise()) {
         keep_failed(line, rx,
                     std::to_string(watch.bad_frames()) + " of its " + std::to_string(watch.punched_frames()) +
                         " frames bad: noise on the line, no program",
                     seconds);
+        return;
+    }
+    if (!watch.content()) {  // a line end or a '%' after the last punch-out: nothing to file
+        rx.file.discard();
+        log(Priority::debug, std::to_string(rx.frames) + " frames of '%', blanks and line ends only: not filed");
         return;
     }
     if (rx.flood || (end != ReceiveResult::End::program_end && !watch.complete())) {
@@ -216,9 +216,12 @@ void Machine::after_write_failure(Transport& line, Reception& rx, ReceiveResult:
     pending_.clear();
     std::uint64_t dropped = rx.dropped;
     if (end == ReceiveResult::End::program_end) dropped += discard_until_quiet(line);
+    const char* until = end == ReceiveResult::End::hangup    ? "until the other side hung up"
+                        : end == ReceiveResult::End::stopped ? "until the service stopped"
+                                                             : "until the line was quiet";
     std::string message = "received: " + rx.write_error + ": " +
                           (kept.empty() ? "nothing of the punch-out kept" : "what was written kept as " + kept) +
-                          "; the rest, " + std::to_string(dropped) + " frames, dropped until the line was quiet";
+                          "; the rest, " + std::to_string(dropped) + " frames, dropped " + until;
     log(Priority::err, message);
     count(&MachineStatus::failed, message);
 }
