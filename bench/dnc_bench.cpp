@@ -76,6 +76,8 @@ class Shop {
 public:
     Shop(int machines, double scale, int burst) : scale_(scale), rate_(line_cps * scale), burst_(burst) {
         for (auto sub : {"programs", "received", "run"}) std::filesystem::create_directories(dir_ + "/" + sub);
+        std::filesystem::permissions(dir_ + "/run",
+                                     std::filesystem::perms::owner_all);  // tape dnc refuses one open to others
         for (int m = 0; m < machines; ++m) {
             lines_.push_back(std::make_unique<Pty>());
             std::string number = "O" + std::to_string(1001 + m);

@@ -303,10 +303,18 @@ TEST(DncService, StatusThroughAnOwnerOnlySocket) {
     ASSERT_EQ(::stat(run.dir.file("run/control.sock").c_str(), &sock), 0);
     EXPECT_EQ(dir.st_mode & 0777, 0700u);
     EXPECT_EQ(sock.st_mode & 077, 0u);
-    TempDir out;
-    Process status({"dnc", "status", "--config", run.config()}, out);
-    ASSERT_EQ(status.wait(10s), 0) << status.err();
-    std::string table = read_text(out.file("stdout"));
+    std::string table;
+    // Asked again until both lines are open: right after "serving" a machine may still be opening its line.
+    eventually(
+        [&] {
+            TempDir out;
+            Process status({"dnc", "status", "--config", run.config()}, out);
+            EXPECT_EQ(status.wait(10s), 0) << status.err();
+            table = read_text(out.file("stdout"));
+            auto listening = table.find("listening");
+            return listening != std::string::npos && table.find("listening", listening + 1) != std::string::npos;
+        },
+        10s);
     EXPECT_EQ(table.rfind("MACHINE", 0), 0u) << table;
     EXPECT_NE(table.find("m0 "), std::string::npos) << table;
     EXPECT_NE(table.find("m1 "), std::string::npos) << table;

@@ -58,6 +58,7 @@ struct DncRun {
 
     explicit DncRun(std::size_t machines) {
         for (auto sub : {"programs", "received", "run"}) std::filesystem::create_directory(dir.file(sub));
+        ::chmod(dir.file("run").c_str(), 0700);  // a runtime folder open to others is refused
         for (std::size_t i = 0; i < machines; ++i) controls.push_back(std::make_unique<Control>());
     }
     bool ok() const { return controls.empty() || controls[0]->pty.ok(); }
@@ -109,6 +110,13 @@ struct DncRun {
             },
             limit);
         return name;
+    }
+    /// How many times what stands in the log.
+    std::size_t log_count(const std::string& what) const {
+        std::string l = log();
+        std::size_t n = 0;
+        for (auto at = l.find(what); at != std::string::npos; at = l.find(what, at + 1)) ++n;
+        return n;
     }
     std::vector<std::string> received_files() const {
         std::vector<std::string> names;

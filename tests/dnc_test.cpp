@@ -11,6 +11,7 @@
 #include "dnc_service_util.hpp"
 #include "tape/dnc_request.hpp"
 #include "tape/dnc_service.hpp"
+#include "tape/error.hpp"
 
 namespace {
 
@@ -35,6 +36,36 @@ TEST(DncRequest, Restart) {
     ASSERT_TRUE(bad);
     EXPECT_TRUE(bad->names.empty());
     ASSERT_EQ(bad->refused.size(), 1u);
+}
+
+// A request is a punch-out that holds nothing else: a program that mentions one is a program.
+TEST(DncRequest, OnlyAPunchOutOfNothingElse) {
+    for (const char* request : {"%\n(PRG=O1)\n%\n", "(PRG=O1)", "%\r\nO9999 (PRG=O1);\r\nM30;\r\n%\r\n",
+                                "%\n:9999\nN1 (PRG=O1)\nN2 M02\n%\n", "%1234\n(RESTART=O1,N5)\nM99\n"})
+        EXPECT_TRUE(tape::dnc::parse_request(request)) << request;
+    std::string program = "%\nO2001\nN10 G21\n(PRG=O1234)\n";
+    for (int i = 0; i < 200; ++i) program += "N" + std::to_string(20 + i) + " G01 X1.\n";
+    for (const std::string& text : {program + "M30\n%\n", std::string("%\n(PRG=O1)\n(PRG=O2)\n%\n"),
+                                    std::string("%\n(PRG=O1)\nG00 X1\n%\n"), std::string("(MILL 3)\n(PRG=O1)\n")}) {
+        EXPECT_FALSE(tape::dnc::parse_request(text)) << text;
+        EXPECT_TRUE(tape::dnc::request_comment_in(text)) << text;  // said in the log when it is filed
+    }
+}
+
+// Empty names are one refusal, and a thousand bad names a few lines.
+TEST(DncRequest, RefusalsCountedNotRepeated) {
+    auto r = tape::dnc::parse_request("(PRG=O1234,,,,, ,)");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->names, std::vector<std::string>{"O1234"});
+    ASSERT_EQ(r->refused.size(), 1u);
+    EXPECT_EQ(r->refused[0], "6 empty names (commas with nothing between them)");
+    std::string many = "(PRG=";
+    for (int i = 0; i < 1000; ++i) many += "../x,";
+    r = tape::dnc::parse_request(many + "O1)");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->names, std::vector<std::string>{"O1"});
+    ASSERT_EQ(r->refused.size(), 9u);
+    EXPECT_EQ(r->refused.back(), "992 more name(s) refused, not listed");
 }
 
 TEST(DncRequest, NoneInAnOrdinaryProgram) {
@@ -86,6 +117,25 @@ TEST(DncLibrary, NothingOutsideTheLibrary) {
         EXPECT_EQ(tape::dnc::find_program(dir.file("programs"), name).path, "") << name;
 }
 
+// A symbolic link in the library is no program of it: neither by its name nor by the number of what
+// it points to.
+TEST(DncLibrary, SymbolicLinksNeverFollowed) {
+    TempDir dir;
+    std::filesystem::create_directory(dir.file("programs"));
+    std::ofstream(dir.file("outside.nc")) << "%\nO5555\nM30\n%\n";
+    std::filesystem::create_symlink("/etc/passwd", dir.file("programs/passwd"));
+    std::filesystem::create_symlink(dir.file("outside.nc"), dir.file("programs/O5555.nc"));
+    std::filesystem::create_symlink(dir.file("outside.nc"), dir.file("programs/fixture.nc"));
+    std::ofstream(dir.file("programs/O1.nc")) << "%\nO1\nM30\n%\n";
+    for (const char* name : {"passwd", "O5555", "O5555.nc", "fixture", "5555"})
+        EXPECT_EQ(tape::dnc::find_program(dir.file("programs"), name).path, "") << name;
+    EXPECT_EQ(tape::dnc::find_program(dir.file("programs"), "O1").path, dir.file("programs/O1.nc"));
+    // A file made a link after it was found is not read through it either.
+    std::filesystem::remove(dir.file("programs/O1.nc"));
+    std::filesystem::create_symlink("/etc/passwd", dir.file("programs/O1.nc"));
+    EXPECT_THROW(tape::dnc::read_program(dir.file("programs/O1.nc")), tape::Error);
+}
+
 TEST(DncPunchOut, OnDiskAsItArrivesThenFiledBesideNeverReplacing) {
     TempDir dir;
     tape::DecodeOptions decode{.keep_going = true};
@@ -102,16 +152,54 @@ TEST(DncPunchOut, OnDiskAsItArrivesThenFiledBesideNeverReplacing) {
     EXPECT_EQ(read_text(dir.file("O4321-2.nc")), "%\nO4321\nN10 G00 X1\nM30\n%\n");
 }
 
-TEST(DncPunchOut, EndsAtTheClosingPercent) {
+// How many frames of text the watch takes as one punch-out's before it ends.
+std::size_t taken_of(std::string_view text) {
+    static const auto code = tape::FrameCode::iso();
+    tape::dnc::PunchOutWatch watch(code);
+    std::size_t taken = 0;
+    for (auto f : Control::iso(text)) taken += watch.take(f);
+    return taken;
+}
+
+TEST(DncPunchOut, EndsAtTheClosingPercentAndItsLineEnd) {
+    EXPECT_EQ(taken_of("%\n%\n(PRG=O1)\n%\nO2"), std::string("%\n%\n(PRG=O1)\n%\n").size());
+    EXPECT_EQ(taken_of("%\nO1\nM30\n%\r\n%\nO2\n"), std::string("%\nO1\nM30\n%\r\n").size());
+    EXPECT_EQ(taken_of("%\nO1\nM30\n%%\nO2\n"), std::string("%\nO1\nM30\n%").size());  // the next one's '%'
     auto code = tape::FrameCode::iso();
     tape::dnc::PunchOutWatch watch(code);
-    std::size_t ended_at = 0, i = 0;
-    for (auto f : Control::iso("%\n%\n(PRG=O1)\n%\nO2")) {
-        ++i;
-        if (watch.feed(f) && !ended_at) ended_at = i;
-    }
-    EXPECT_EQ(ended_at, std::string("%\n%\n(PRG=O1)\n%").size());
+    for (auto f : Control::iso("%\nO1\nM30\n%")) EXPECT_TRUE(watch.take(f));
+    EXPECT_TRUE(watch.closing());
     EXPECT_TRUE(watch.complete());
+    EXPECT_FALSE(watch.ended());
+}
+
+// Noise: once a quarter of the punched frames are bad, no '%' ends the punch-out.
+TEST(DncPunchOut, NoiseIsNotCutAtItsPercents) {
+    auto code = tape::FrameCode::iso();
+    tape::dnc::PunchOutWatch watch(code);
+    std::vector<std::uint8_t> frames = Control::iso("%\nAB");
+    for (std::uint8_t bad : {0x01, 0x02, 0x04, 0x07, 0x08, 0x10}) frames.push_back(bad);  // odd parity
+    for (auto f : Control::iso("%\nO1\n%\n")) frames.push_back(f);
+    for (auto f : frames) EXPECT_TRUE(watch.take(f));
+    EXPECT_FALSE(watch.ended());
+    EXPECT_TRUE(watch.noise());
+    EXPECT_EQ(watch.bad_frames(), 6u);
+}
+
+// What follows a punch-out's end in the same read is kept for the next; nothing is lost or doubled.
+TEST(DncPunchOut, ReceptionCutsAReadAtTheEnd) {
+    TempDir dir;
+    auto code = tape::FrameCode::iso();
+    std::vector<std::uint8_t> rest;
+    tape::dnc::Reception rx(code, dir.path, "m", tape::DecodeOptions{.keep_going = true}, 1 << 20, rest);
+    auto read = Control::iso("%\nO1111\nM30\n%\n%\nO2222\nM30\n%\n");
+    bool ended = false;
+    for (auto f : read) ended = rx.ends_after(f) || ended;
+    rx.sink(read);
+    EXPECT_TRUE(ended);
+    EXPECT_EQ(read_text(rx.file.path()), "%\nO1111\nM30\n%\n");
+    EXPECT_EQ(Control::text_of(rest), "%\nO2222\nM30\n%\n");
+    EXPECT_EQ(rx.frames + rest.size(), read.size());
 }
 
 TEST(DncPunchOut, ComparedWithTheLibrarysCopy) {

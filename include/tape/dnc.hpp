@@ -74,6 +74,10 @@ struct SendOptions {
     std::size_t burst = 1;
     std::chrono::milliseconds block_delay{0};  ///< a pause after each block_end frame, for controls that need it
     Frame block_end = 0x0A;                    ///< the end-of-block frame (ISO LF; EIA's is 0x80)
+    /// With XON/XOFF the line is read while sending: what the other side sends besides XON and XOFF (a
+    /// control punching out its next request at once) goes here, in order, as it was read. Without it,
+    /// it is dropped.
+    std::function<void(std::span<const std::uint8_t>)> other_input{};
 };
 
 struct SendResult {
@@ -106,10 +110,13 @@ struct ReceiveOptions {
     const std::atomic<bool>* stop = nullptr;
     std::function<void(std::span<const Frame>)> sink{};  ///< every frame, as it arrives
     std::function<void(const LineProgress&)> progress{};
-    /// Asked of each frame kept: true ends the run once the frames of this read are kept
-    /// (End::program_end), for callers that know the end of what they receive better (a DNC request
-    /// ends at its closing '%'). Nothing that came is dropped.
+    /// Asked of each frame kept, in order, before the frames of its read go to sink: true ends the
+    /// run once the frames of this read are kept (End::program_end), for callers that know the end of
+    /// what they receive better (a DNC punch-out ends at its closing '%'). Nothing that came is dropped.
     std::function<bool(Frame)> ends_after{};
+    /// Bytes already read from this line (by an earlier run, or by a sender while it watched for XOFF):
+    /// taken first, by the same rules as a read, before the line is read.
+    std::span<const std::uint8_t> first{};
     /// After each read that brought frames, wait this long before the next, so that one read takes
     /// what a slow line brought meanwhile: fewer wake-ups for many lines at once (the kernel keeps it).
     std::chrono::milliseconds gather{0};

@@ -23,9 +23,17 @@ struct Request {
     std::string block;                 ///< restart: the block, "N50"
 };
 
-/// The first (PRG=...) or (RESTART=...) comment in a punch-out's text, or nullopt when it holds
-/// none. Keys are read in either case, blanks around names ignored. Never throws.
+/// The request a punch-out's text is: one (PRG=...) or (RESTART=...) comment and nothing else but
+/// '%', blanks, line ends (or ';'), a program number (O1234, :1234, %1234) and a program's end (M02,
+/// M30, M99) each on a block of its own or beside the comment, block numbers allowed. Anything more
+/// and the text is a program: nullopt. Keys are read in either case, blanks around names ignored;
+/// empty names are counted in one refusal, and past 8 refusals the rest are counted. Never throws.
 std::optional<Request> parse_request(std::string_view text);
+
+/// The first request comment anywhere in text, whatever stands around it (for saying that a program
+/// holds one); where it opens and closes when asked. Never throws.
+std::optional<Request> request_comment_in(std::string_view text, std::size_t* open_at = nullptr,
+                                          std::size_t* close_at = nullptr);
 
 /// Why a name from a line may not be looked up ("" when it may): empty, over max_name_length, holding
 /// NUL, '/', '\\' or "..", starting with '.', or holding anything but letters, digits, '_', '-', '.'.
@@ -37,10 +45,15 @@ struct Found {
     std::string problem;  ///< "not in the library", "ambiguous: ..."
 };
 
-/// Finds name among the regular files of folder: a file named so or with that stem (exact, then in
-/// either case), else the one file whose program number (O1234, :1234 or the ГОСТ number after '%';
-/// leading zeros ignored) is name. Two candidates at the same step are ambiguous: nothing is chosen.
+/// Finds name among the regular files of folder (symbolic links are none: never followed): a file named so or with that
+/// stem (exact, then in either case), else the one file whose program number (O1234, :1234 or the ГОСТ number after
+/// '%'; leading zeros ignored) is name. Two candidates at the same step are ambiguous: nothing is chosen.
 Found find_program(const std::string& folder, std::string_view name);
+
+/// The text of a library file find_program found, read without following a symbolic link (one put
+/// in its place since is refused). Throws Error(Errc::io) naming path when it cannot be read or is no
+/// regular file.
+std::string read_program(const std::string& path);
 
 /// The program number of a program's text ("O1234", or the ГОСТ number after '%'), made into a file
 /// name's stem; nullopt when it has none that is a safe name.

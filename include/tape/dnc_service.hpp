@@ -125,6 +125,13 @@ private:
     std::unique_ptr<State> s_;
 };
 
+/// What the control socket answers a peer that sent `request` (complete: the peer sent all it will):
+/// the status lines for "status" (its line's end, LF or CR LF, optional at the end), "" (nothing, the
+/// connection closed) for anything else, nullopt while a request may still be coming (no line end yet,
+/// under 64 bytes). Never throws but what status throws.
+std::optional<std::string> control_reply(std::string_view request, bool complete,
+                                         const std::function<std::string()>& status);
+
 /// Asks the service at path for its status lines. Throws Error(Errc::io) when none answers.
 std::string query_control_socket(const std::string& path, std::chrono::milliseconds timeout);
 

@@ -59,6 +59,10 @@ public:
 
     ReceiveResult run() {
         auto last_frame = clock_.now(), start = clock_.now(), last_report = start;
+        if (!o_.first.empty() && take(o_.first)) {
+            r_.end = ReceiveResult::End::program_end;
+            return r_;
+        }
         for (;;) {
             if (o_.stop && o_.stop->load()) {
                 finish_after_stop();
@@ -68,7 +72,7 @@ public:
             ReadResult got = line_.read(buf_, 100ms);
             if (got.count) {
                 last_frame = clock_.now();
-                bool done = take(got.count);
+                bool done = take({buf_, got.count});
                 if (o_.progress && clock_.now() - last_report > 250ms) {
                     last_report = clock_.now();
                     double s = std::chrono::duration<double>(clock_.now() - start).count();
@@ -106,11 +110,11 @@ private:
     std::uint8_t buf_[512];
 
     // Keeps the frames of one read, by the same rules before and after a stop. True at the program's end.
-    bool take(std::size_t count) {
+    bool take(std::span<const std::uint8_t> bytes) {
         kept_.clear();
         bool done = false, ended = false;
-        for (std::size_t i = 0; i < count && !done; ++i) {
-            Frame f = seven_bit_ ? with_track_8(buf_[i], code_) : buf_[i];
+        for (std::size_t i = 0; i < bytes.size() && !done; ++i) {
+            Frame f = seven_bit_ ? with_track_8(bytes[i], code_) : bytes[i];
             if (o_.drop_flow_codes && is_flow_code(f, code_)) continue;
             kept_.push_back(f);
             if (o_.ends_after && o_.ends_after(f)) ended = true;
@@ -134,7 +138,7 @@ private:
         auto grace_end = clock_.now() + 300ms;
         while (clock_.now() < grace_end) {
             ReadResult got = line_.read(buf_, 50ms);
-            if (got.count && take(got.count)) break;
+            if (got.count && take({buf_, got.count})) break;
             if (got.end) break;
         }
     }

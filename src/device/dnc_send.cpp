@@ -133,7 +133,10 @@ private:
     void take_input(std::chrono::milliseconds wait) {
         std::uint8_t buf[64];
         ReadResult got = line_.read(buf, wait);
-        for (std::size_t k = 0; k < got.count; ++k) xonxoff_.receive(buf[k]);
+        std::size_t other = 0;  // the bytes besides XON and XOFF, moved to the front of buf
+        for (std::size_t k = 0; k < got.count; ++k)
+            if (!xonxoff_.receive(buf[k])) buf[other++] = buf[k];
+        if (other && o_.other_input) o_.other_input({buf, other});
         if (got.end)
             throw Error(Errc::io,
                         line_.name() + ": the other side hung up after " + std::to_string(r_.sent) + " frame(s)");

@@ -9,8 +9,11 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <optional>
 #include <thread>
+#include <vector>
 
 #include "common/fd_util.hpp"
 #include "tape/dnc_service.hpp"
@@ -44,13 +47,21 @@ int connected_socket(const std::string& path) {
     return fd;
 }
 
-// The socket's folder, made when missing, owned by us and closed to others.
+// The socket's folder: made owner-only when missing; one that is there must be a folder of ours closed
+// to others already. A folder the service did not make is never changed (a shared one, /tmp, would be
+// closed to every user, or lose its sticky bit).
 void owner_only_folder(const std::string& folder) {
-    if (::mkdir(folder.c_str(), 0700) != 0 && errno != EEXIST) io_fail(folder + ": cannot make the runtime folder");
+    if (::mkdir(folder.c_str(), 0700) == 0) return;
+    if (errno != EEXIST) io_fail(folder + ": cannot make the runtime folder");
     struct stat st {};
     if (::lstat(folder.c_str(), &st) != 0 || !S_ISDIR(st.st_mode) || st.st_uid != ::getuid())
-        throw Error(Errc::io, folder + ": the runtime folder is no folder of this user's");
-    if ((st.st_mode & 077) != 0 && ::chmod(folder.c_str(), 0700) != 0) io_fail(folder + ": cannot close it to others");
+        throw Error(Errc::usage, folder + ": the runtime folder is no folder of this user's");
+    if ((st.st_mode & 07077) != 0) {
+        char mode[8];
+        std::snprintf(mode, sizeof mode, "%04o", static_cast<unsigned>(st.st_mode & 07777));
+        throw Error(Errc::usage, folder + ": the runtime folder is open to others (mode " + mode +
+                                     "): give runtime_directory a folder of its own, or chmod 0700 it");
+    }
 }
 
 bool peer_is_us(int fd) {
@@ -75,7 +86,29 @@ std::vector<std::string> split(std::string_view line, char by) {
     }
 }
 
+// A peer served at most this long: one that connects and says nothing keeps no other waiting.
+constexpr auto peer_deadline = std::chrono::milliseconds(1000);
+// Peers served at once; past it the one that came first is let go.
+constexpr std::size_t max_peers = 64;
+// The longest request read.
+constexpr std::size_t max_request = 64;
+
+struct Peer {
+    int fd;
+    std::chrono::steady_clock::time_point deadline;
+    std::string request{};
+};
+
 }  // namespace
+
+std::optional<std::string> control_reply(std::string_view request, bool complete,
+                                         const std::function<std::string()>& status) {
+    auto end = request.find('\n');
+    if (end == std::string_view::npos && !complete && request.size() < max_request) return std::nullopt;
+    std::string_view line = request.substr(0, end);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    return line == "status" ? status() : std::string();
+}
 
 struct ControlSocket::State {
     std::string path;
@@ -83,22 +116,50 @@ struct ControlSocket::State {
     std::atomic<bool> stop{false};
     std::thread thread;
     std::function<std::string()> answer;
+    std::vector<Peer> peers;
 
+    // Every peer from one thread, none waited for: each is read when it has something to say.
     void serve() {
         while (!stop) {
-            pollfd p{fd, POLLIN, 0};
-            if (::poll(&p, 1, 100) <= 0) continue;
-            int peer = ::accept4(fd, nullptr, nullptr, SOCK_CLOEXEC);
-            if (peer < 0) continue;
-            if (peer_is_us(peer)) {
-                pollfd q{peer, POLLIN, 0};
-                char request[64];
-                ssize_t n = ::poll(&q, 1, 1000) > 0 ? ::read(peer, request, sizeof request) : 0;
-                if (n > 0 && std::string_view(request, static_cast<std::size_t>(n)).starts_with("status"))
-                    write_all(peer, answer());
-            }
-            ::close(peer);
+            std::vector<pollfd> fds{{fd, POLLIN, 0}};
+            for (const auto& p : peers) fds.push_back({p.fd, POLLIN, 0});
+            if (::poll(fds.data(), fds.size(), 100) < 0) continue;
+            auto now = std::chrono::steady_clock::now();
+            for (std::size_t i = peers.size(); i-- > 0;)
+                if ((fds[i + 1].revents && read_from(peers[i])) || now >= peers[i].deadline) let_go(i);
+            if (fds[0].revents & POLLIN) accept_peers(now);
         }
+        while (!peers.empty()) let_go(peers.size() - 1);
+    }
+    void accept_peers(std::chrono::steady_clock::time_point now) {
+        for (int peer; (peer = ::accept4(fd, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK)) >= 0;) {
+            if (!peer_is_us(peer)) {
+                ::close(peer);
+                continue;
+            }
+            if (peers.size() >= max_peers) let_go(0);
+            peers.push_back(Peer{peer, now + peer_deadline});
+        }
+    }
+    // Reads what the peer sent; true when it is done with (answered, gone, or asking for nothing).
+    bool read_from(Peer& p) {
+        char buf[max_request];
+        ssize_t n = ::read(p.fd, buf, max_request - p.request.size());
+        if (n < 0) return errno != EAGAIN && errno != EINTR;
+        p.request.append(buf, static_cast<std::size_t>(n));
+        auto reply = control_reply(p.request, n == 0, answer);
+        if (!reply) return false;
+        if (!reply->empty()) {
+            ::fcntl(p.fd, F_SETFL, 0);  // the answer written whole, within the peer's deadline
+            timeval t{.tv_sec = 1, .tv_usec = 0};
+            ::setsockopt(p.fd, SOL_SOCKET, SO_SNDTIMEO, &t, sizeof t);
+            write_all(p.fd, *reply);
+        }
+        return true;
+    }
+    void let_go(std::size_t i) {
+        ::close(peers[i].fd);
+        peers.erase(peers.begin() + static_cast<std::ptrdiff_t>(i));
     }
 };
 
@@ -113,9 +174,9 @@ ControlSocket::ControlSocket(const std::string& path, std::function<std::string(
     }
     ::unlink(path.c_str());  // a socket left by a service that died
     sockaddr_un a = address_of(path);
-    s_->fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    s_->fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);  // accepted until none waits
     if (s_->fd < 0) io_fail("cannot make a socket");
-    mode_t old = ::umask(077);
+    mode_t old = ::umask(0177);  // the socket 0600: read and written by its owner only
     int bound = ::bind(s_->fd, reinterpret_cast<sockaddr*>(&a), sizeof a);
     ::umask(old);
     if (bound != 0 || ::listen(s_->fd, 8) != 0) {

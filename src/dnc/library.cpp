@@ -7,10 +7,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <map>
 #include <mutex>
 
+#include "common/fd_util.hpp"
 #include "tape/dnc_request.hpp"
+#include "tape/error.hpp"
 #include "tape/program.hpp"
 
 namespace tape::dnc {
@@ -47,7 +50,9 @@ std::vector<std::string> regular_files(const std::string& folder) {
         std::string name = e->d_name;
         if (name.empty() || name[0] == '.') continue;
         struct stat st {};
-        if (::fstatat(::dirfd(dir), e->d_name, &st, 0) == 0 && S_ISREG(st.st_mode)) files.push_back(name);
+        // A symbolic link is no program of the library: it may point anywhere (/etc/passwd).
+        if (::fstatat(::dirfd(dir), e->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(st.st_mode))
+            files.push_back(name);
     }
     ::closedir(dir);
     std::sort(files.begin(), files.end());
@@ -56,7 +61,7 @@ std::vector<std::string> regular_files(const std::string& folder) {
 
 std::string head_of(const std::string& path) {
     std::string text(head_size, '\0');
-    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
     if (fd < 0) return {};
     ssize_t n = ::read(fd, text.data(), text.size());
     ::close(fd);
@@ -84,7 +89,7 @@ std::optional<std::string> cached_number(const std::string& path) {
     static std::mutex mutex;
     static std::map<std::string, Entry> cache;
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) return std::nullopt;
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
     {
         std::lock_guard lock(mutex);
         auto at = cache.find(path);
@@ -123,6 +128,31 @@ Found find_program(const std::string& folder, std::string_view name) {
     }
     if (by_number.empty()) return {"", "not in the library"};
     return one_of(folder, by_number, "hold program " + std::string(name));
+}
+
+std::string read_program(const std::string& path) {
+    // O_NOFOLLOW: a file made a link since it was found is not read through it; O_NONBLOCK: nor a FIFO waited on.
+    int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) io_fail(path + ": cannot open (a symbolic link is never followed)");
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        throw Error(Errc::io, path + ": no regular file");
+    }
+    std::string text;
+    char buf[65536];
+    for (ssize_t n; (n = ::read(fd, buf, sizeof buf)) != 0;) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            int saved = errno;
+            ::close(fd);
+            errno = saved;
+            io_fail(path + ": cannot read");
+        }
+        text.append(buf, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    return text;
 }
 
 std::optional<std::string> program_file_stem(std::string_view text) {

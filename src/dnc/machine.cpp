@@ -129,64 +129,111 @@ void Machine::serve(Transport& line) {
         if (!listen(line)) return;
 }
 
-// Receives one punch-out, or waits receive_timeout for one. False when the line hung up.
+// Receives one punch-out (beginning with what is pending from the last), or waits receive_timeout for
+// one. False when the line hung up.
 bool Machine::listen(Transport& line) {
     set_state(LineState::listening);
-    auto library = shared_->library();
     FrameCode code = FrameCode::make(s_.code, s_.parity);
-    PunchOutWatch watch(code);
-    PunchOutFile file(library->received, s_.name,
-                      DecodeOptions{.code = s_.code, .parity = s_.parity, .keep_going = true, .max_diagnostics = 1});
-    std::uint64_t frames = 0;
-    bool flood = false;
-    Clock::time_point start{};
+    std::vector<std::uint8_t> first = std::exchange(pending_, {});
+    pending_overflow_ = false;
+    Reception rx(code, shared_->library()->received, s_.name,
+                 DecodeOptions{.code = s_.code, .parity = s_.parity, .keep_going = true, .max_diagnostics = 1},
+                 s_.max_punch_out, pending_);
     ReceiveOptions o{.idle_timeout = s_.receive_timeout, .code = s_.code, .parity = s_.parity, .drop_flow_codes = true};
     o.stop = &stop_;
     o.gather = gather;
-    bool began = false;
+    o.first = first;
+    Clock::time_point start{};
     o.sink = [&](std::span<const Frame> f) {
-        file.append(f);
-        frames += f.size();
-        if (!file.started()) return;  // blank leader so far
+        bool began = rx.file.started();
+        rx.sink(f);
+        if (!rx.file.started()) return;  // blank leader so far
         if (!began) {
-            began = true;
             start = shared_->clock->now();
             set_state(LineState::receiving, "punch-out");
         }
-        set_frames(frames);
+        set_frames(rx.frames);
     };
-    o.ends_after = [&](Frame f) { return watch.feed(f) || (flood = file.bytes() > s_.max_punch_out); };
+    o.ends_after = [&rx](Frame f) { return rx.ends_after(f); };
     ReceiveResult r = receive_frames(line, o, *shared_->clock);
-    if (r.end == ReceiveResult::End::program_end && !flood && watch.line_open()) {
+    if (r.end == ReceiveResult::End::program_end && rx.watch.closing() && rx.write_error.empty()) {
         // The closing '%' came without its line's end: it follows at once when it comes at all.
         o.idle_timeout = line_end_wait;
-        o.ends_after = [&](Frame f) { return code.kind(f) == FrameKind::character && code.character(f) == '\n'; };
+        o.first = {};
         ReceiveResult more = receive_frames(line, o, *shared_->clock);
-        r.frames += more.frames;
         if (more.end == ReceiveResult::End::hangup || more.end == ReceiveResult::End::stopped) r.end = more.end;
     }
-    if (file.started()) finish_punch_out(line, file, watch, r, flood, since(start));
+    if (!rx.write_error.empty())
+        after_write_failure(line, rx, r.end);
+    else if (rx.file.started())
+        finish_punch_out(line, rx, r.end, since(start));
     return r.end != ReceiveResult::End::hangup;
 }
 
-void Machine::finish_punch_out(Transport& line, PunchOutFile& file, const PunchOutWatch& watch, ReceiveResult r,
-                               bool flood, double seconds) {
-    std::uint64_t frames = r.frames;
-    if (flood || (r.end != ReceiveResult::End::program_end && !watch.complete())) {
-        std::string kept = file.keep_failed();
-        std::string message = "received: " + std::to_string(frames) + " frames, " + seconds_text(seconds) + ": cut (" +
-                              cut_reason(r.end, flood) + "): kept as " + kept;
-        log(Priority::warning, message);
-        count(&MachineStatus::failed, message);
-        if (flood) discard_flood(line);
+void Machine::finish_punch_out(Transport& line, Reception& rx, ReceiveResult::End end, double seconds) {
+    const PunchOutWatch& watch = rx.watch;
+    if (watch.noise()) {
+        keep_failed(line, rx,
+                    std::to_string(watch.bad_frames()) + " of its " + std::to_string(watch.punched_frames()) +
+                        " frames bad: noise on the line, no program",
+                    seconds);
         return;
     }
-    if (auto request = parse_request(file.head())) {
-        file.discard();
+    if (!watch.content()) {  // a line end or a '%' after the last punch-out: nothing to file
+        rx.file.discard();
+        log(Priority::debug, std::to_string(rx.frames) + " frames of '%', blanks and line ends only: not filed");
+        return;
+    }
+    if (rx.flood || (end != ReceiveResult::End::program_end && !watch.complete())) {
+        keep_failed(line, rx, cut_reason(end, rx.flood), seconds);
+        return;
+    }
+    auto request = rx.file.bytes() <= rx.file.head().size() ? parse_request(rx.file.head()) : std::nullopt;
+    if (request) {
+        rx.file.discard();
         answer(line, *request);
         return;
     }
-    file_program(file, frames, seconds);
+    file_program(rx.file, rx.frames, seconds);
+}
+
+void Machine::keep_failed(Transport& line, Reception& rx, const std::string& reason, double seconds) {
+    std::string kept = rx.file.keep_failed();
+    std::string message = "received: " + std::to_string(rx.frames) + " frames, " + seconds_text(seconds) + ": cut (" +
+                          reason + "): kept as " + kept;
+    log(Priority::warning, message);
+    count(&MachineStatus::failed, message);
+    if (!rx.flood) return;
+    pending_.clear();  // the flood's own
+    std::uint64_t dropped = discard_until_quiet(line);
+    log(Priority::warning, std::to_string(dropped) + " more frames of the flood dropped until the line was quiet");
+}
+
+// A write to received/ failed (a full disk): the rest of that punch-out is dropped until the line is
+// quiet, so that none of it is taken for a punch-out of its own or filed under a program's name.
+void Machine::after_write_failure(Transport& line, Reception& rx, ReceiveResult::End end) {
+    std::string kept = rx.file.keep_written();
+    pending_.clear();
+    std::uint64_t dropped = rx.dropped;
+    if (end == ReceiveResult::End::program_end) dropped += discard_until_quiet(line);
+    const char* until = end == ReceiveResult::End::hangup    ? "until the other side hung up"
+                        : end == ReceiveResult::End::stopped ? "until the service stopped"
+                                                             : "until the line was quiet";
+    std::string message = "received: " + rx.write_error + ": " +
+                          (kept.empty() ? "nothing of the punch-out kept" : "what was written kept as " + kept) +
+                          "; the rest, " + std::to_string(dropped) + " frames, dropped " + until;
+    log(Priority::err, message);
+    count(&MachineStatus::failed, message);
+}
+
+void Machine::keep_pending(std::span<const std::uint8_t> bytes) {
+    std::size_t room = s_.max_punch_out > pending_.size() ? s_.max_punch_out - pending_.size() : 0;
+    pending_.insert(pending_.end(), bytes.begin(),
+                    bytes.begin() + static_cast<std::ptrdiff_t>(std::min(room, bytes.size())));
+    if (room < bytes.size() && !pending_overflow_) {
+        pending_overflow_ = true;
+        log(Priority::warning, "more came while answering than max_punch_out: the rest of it dropped");
+    }
 }
 
 void Machine::file_program(PunchOutFile& file, std::uint64_t frames, double seconds) {
@@ -207,6 +254,8 @@ void Machine::file_program(PunchOutFile& file, std::uint64_t frames, double seco
     } else {
         message += " (it has no program number)";
     }
+    if (auto request = request_comment_in(file.head()))
+        message += "; it holds " + request->comment + " among other text: a program, not a request";
     Priority p = Priority::info;
     if (file.bad_frames()) {
         message += "; " + std::to_string(file.bad_frames()) + " bad frame(s) marked U+FFFD in the text";
@@ -216,14 +265,14 @@ void Machine::file_program(PunchOutFile& file, std::uint64_t frames, double seco
     count(&MachineStatus::filed, message);
 }
 
-void Machine::discard_flood(Transport& line) {
+std::uint64_t Machine::discard_until_quiet(Transport& line) {
     std::uint64_t dropped = 0;
     ReceiveOptions o{.idle_timeout = s_.receive_timeout};
     o.stop = &stop_;
     o.gather = gather;
     o.sink = [&dropped](std::span<const Frame> f) { dropped += f.size(); };
     receive_frames(line, o, *shared_->clock);
-    log(Priority::warning, std::to_string(dropped) + " more frames of the flood dropped until the line was quiet");
+    return dropped;
 }
 
 }  // namespace tape::dnc

@@ -5,7 +5,9 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <thread>
+#include <vector>
 
 #include "tape/dnc.hpp"
 #include "tape/dnc_request.hpp"
@@ -15,7 +17,7 @@
 namespace tape::dnc {
 
 class PunchOutFile;
-class PunchOutWatch;
+struct Reception;
 
 /// What every machine reads: the library (replaced on reload), the log, the clock. Held by each
 /// machine, so that one left blocked at the end still has it.
@@ -58,15 +60,17 @@ private:
     void run();
     void serve(Transport& line);
     bool listen(Transport& line);
-    void finish_punch_out(Transport& line, PunchOutFile& file, const PunchOutWatch& watch, ReceiveResult r, bool flood,
-                          double seconds);
+    void finish_punch_out(Transport& line, Reception& rx, ReceiveResult::End end, double seconds);
+    void keep_failed(Transport& line, Reception& rx, const std::string& reason, double seconds);
+    void after_write_failure(Transport& line, Reception& rx, ReceiveResult::End end);
     void file_program(PunchOutFile& file, std::uint64_t frames, double seconds);
+    void keep_pending(std::span<const std::uint8_t> bytes);
     void answer(Transport& line, const Request& request);
     void answer_restart(Transport& line, const Request& request);
     void send(Transport& line, Input& input, const std::string& program, const std::string& source);
     void send_text(Transport& line, const std::string& text, const std::string& program, const std::string& source);
     void say_unknown(Transport& line, const std::string& message, const std::string& comment);
-    void discard_flood(Transport& line);
+    std::uint64_t discard_until_quiet(Transport& line);
     void pause(std::chrono::milliseconds how_long);
 
     void log(Priority p, const std::string& message) const { shared_->log(p, s_.name + ": " + message); }
@@ -79,6 +83,10 @@ private:
     std::shared_ptr<Shared> shared_;
     std::atomic<bool> stop_{false}, finished_{false};
     std::thread thread_;
+    // What was read from the line but is no part of the punch-out or request just handled: the start of
+    // the next, read with the last one's end or while answering it. Only the machine's thread uses it.
+    std::vector<std::uint8_t> pending_;
+    bool pending_overflow_ = false;
     mutable std::mutex status_mutex_;
     MachineStatus status_;
 };

@@ -43,7 +43,7 @@ std::string comment_text(const std::string& text) {
 
 void Machine::answer(Transport& line, const Request& request) {
     log(Priority::notice, "request " + request.comment);
-    for (const auto& why : request.refused) log(Priority::warning, "request refused: " + why);
+    for (const auto& why : request.refused) say_unknown(line, "request refused: " + why, "REFUSED " + why);
     if (request.kind == Request::Kind::restart) {
         answer_restart(line, request);
         return;
@@ -56,8 +56,14 @@ void Machine::answer(Transport& line, const Request& request) {
             say_unknown(line, "no program '" + name + "' sent: " + found.problem, name + " NOT SENT " + found.problem);
             continue;
         }
-        Input input(found.path, text_input());
-        send(line, input, name, found.path);
+        std::string text;
+        try {
+            text = read_program(found.path);
+        } catch (const Error& e) {
+            say_unknown(line, "no program '" + name + "' sent: " + e.what(), name + " NOT SENT CANNOT BE READ");
+            continue;
+        }
+        send_text(line, text, name, found.path);
     }
 }
 
@@ -71,8 +77,7 @@ void Machine::answer_restart(Transport& line, const Request& request) {
     }
     RestartPlan plan;
     try {
-        auto bytes = read_file(found.path);
-        plan = plan_restart(std::string(bytes.begin(), bytes.end()), request.block, s_.dialect);
+        plan = plan_restart(read_program(found.path), request.block, s_.dialect);
     } catch (const Error& e) {
         say_unknown(line, "no restart of " + name + " at " + request.block + " sent: " + e.what(),
                     "NO RESTART OF " + name + " AT " + request.block);
@@ -115,6 +120,7 @@ void Machine::send(Transport& line, Input& input, const std::string& program, co
     o.block_delay = s_.block_delay;
     o.block_end = code.frame_for('\n').value_or(0x0A);
     o.progress = [this](const LineProgress& p) { set_frames(p.frames); };
+    o.other_input = [this](std::span<const std::uint8_t> b) { keep_pending(b); };  // the control's next request
     set_state(LineState::sending, program, frames.size());
     auto start = shared_->clock->now();
     std::string what = "sent " + program + " (" + source + "): ";

@@ -4,12 +4,15 @@
 
 #include <fcntl.h>
 #include <stdio.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <ctime>
 
 #include "common/fd_util.hpp"
+#include "tape/dnc_request.hpp"
 #include "tape/error.hpp"
 #include "tape/feed.hpp"
 #include "tape/file_io.hpp"
@@ -57,14 +60,48 @@ std::vector<std::string> program_lines(const std::string& text) {
 
 }  // namespace
 
-bool PunchOutWatch::feed(Frame f) {
-    if (code_.kind(f) != FrameKind::character) return false;
-    char c = code_.character(f);
-    last_ = c;
+bool PunchOutWatch::take(Frame f) {
+    if (state_ == State::ended) return false;
+    FrameKind kind = code_.kind(f);
+    char c = kind == FrameKind::character ? code_.character(f) : '\0';
+    if (state_ == State::closing) {
+        if (c == '\r') return true;
+        state_ = State::ended;
+        return c == '\n';
+    }
+    if (kind == FrameKind::blank || kind == FrameKind::rubout) return true;
+    ++punched_;
+    if (kind != FrameKind::character) return ++bad_, true;
     if (end_.feed(c) == ProgramEndWatch::Event::program_end) program_end_ = true;
-    if (c == '%' && content_) return closed_ = true;
+    if (c == '%' && content_ && !noise()) state_ = State::closing;
     if (is_content(c)) content_ = true;
-    return false;
+    return true;
+}
+
+bool Reception::ends_after(Frame f) {
+    if (!write_error.empty()) return false;  // dropped until the line is quiet
+    if (watch.take(f)) ++taken_;
+    flood = flood || file.bytes() > max_bytes;
+    return watch.ended() || flood;
+}
+
+void Reception::sink(std::span<const Frame> got) {
+    if (!write_error.empty()) {
+        dropped += got.size();
+        return;
+    }
+    // The watch took a read's frames from its first on: the rest of the read is the next punch-out's.
+    auto mine = static_cast<std::size_t>(std::min<std::uint64_t>(taken_ - frames, got.size()));
+    try {
+        file.append(got.first(mine));
+    } catch (const Error& e) {
+        write_error = e.what();
+        dropped += got.size();
+        frames += mine;
+        return;
+    }
+    frames += mine;
+    rest.insert(rest.end(), got.begin() + static_cast<std::ptrdiff_t>(mine), got.end());
 }
 
 PunchOutFile::PunchOutFile(std::string folder, std::string machine, const DecodeOptions& decode)
@@ -116,6 +153,18 @@ std::string PunchOutFile::file_as(const std::string& stem) {
     throw Error(Errc::io, folder_ + ": 10000 versions of " + stem + ".nc already");
 }
 
+std::string PunchOutFile::keep_written() {
+    if (fd_ < 0) return "";
+    struct stat st {};
+    bool any = ::fstat(fd_, &st) == 0 && st.st_size > 0;  // a failed write may have left part of its text
+    if (any) ::fsync(fd_);
+    ::close(fd_);
+    fd_ = -1;
+    if (any) return path_;
+    ::unlink(path_.c_str());
+    return "";
+}
+
 void PunchOutFile::discard() {
     if (fd_ < 0) return;
     ::close(fd_);
@@ -125,13 +174,13 @@ void PunchOutFile::discard() {
 
 std::string compare_with(const std::string& received_text, const std::string& library_path) {
     std::string name = library_path.substr(library_path.rfind('/') + 1);
-    std::vector<std::uint8_t> bytes;
+    std::string library_text;
     try {
-        bytes = read_file(library_path);
+        library_text = read_program(library_path);
     } catch (const Error&) {
         return "the library's " + name + " cannot be read";
     }
-    auto ours = program_lines(received_text), theirs = program_lines(std::string(bytes.begin(), bytes.end()));
+    auto ours = program_lines(received_text), theirs = program_lines(library_text);
     for (std::size_t i = 0; i < std::max(ours.size(), theirs.size()); ++i)
         if (i >= ours.size() || i >= theirs.size() || ours[i] != theirs[i])
             return "differs from the library's " + name + " from program line " + std::to_string(i + 1);

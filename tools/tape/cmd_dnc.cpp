@@ -108,9 +108,17 @@ std::string progress_text(const dnc::MachineStatus& m) {
     return text;
 }
 
-void print_status(const std::string& path) {
-    dnc::ServiceConfig config = config_or_fail(path);
-    std::string socket_path = dnc::control_socket_path(config);
+// The control socket: given, or read from the config (its runtime_directory only).
+std::string socket_of(const std::string& config, const std::string& socket) {
+    if (!socket.empty()) return socket;
+    try {
+        return dnc_control_socket(config);
+    } catch (const tape::Error& e) {
+        fail(config, e);
+    }
+}
+
+void print_status(const std::string& socket_path) {
     std::string reply;
     try {
         reply = dnc::query_control_socket(socket_path, 2s);
@@ -138,9 +146,17 @@ void add_dnc(CLI::App& app) {
                                    "punch-outs filed, restarts); runs in the foreground, SIGHUP reloads, SIGTERM ends");
     sub->add_option("--config", *config, "The service's TOML configuration (required; see packaging/dnc.toml)");
     auto* status = sub->add_subcommand("status", "List the machines of a running tape dnc: state, transfer, progress");
-    status->add_option("--config", *config, "The running service's configuration (for its control socket)")->required();
+    auto socket = std::make_shared<std::string>();
+    auto* by_config = status->add_option("--config", *config,
+                                         "The running service's configuration (only its runtime_directory is read)");
+    auto* by_socket = status->add_option("--socket", *socket, "The service's control socket (control.sock)");
+    by_config->excludes(by_socket);
     sub->require_subcommand(0, 1);
-    status->callback([config] { print_status(*config); });
+    status->callback([config, socket] {
+        if (config->empty() && socket->empty())
+            fail("", tape::Errc::usage, "tape dnc status needs --config FILE or --socket PATH");
+        print_status(socket_of(*config, *socket));
+    });
     sub->callback([config, status] {
         if (status->parsed()) return;
         if (config->empty()) fail("", tape::Errc::usage, "--config is required: tape dnc --config FILE");

@@ -1,6 +1,7 @@
 # A bad tape dnc configuration is a usage error naming the file, the line and the key, said before any
 # line is opened: a syntax error, an unknown key, a value out of range, a name given twice, a missing
-# folder, a bad device string, text outside quotes. tape dnc status reads the same file first.
+# folder, a bad device string, text outside quotes, a folder or a FIFO given. tape dnc status reads
+# only the control socket's place from it.
 mkdir programs received
 base='[library]
 programs = "programs"
@@ -32,6 +33,15 @@ printf '%s[[machine]]\nname = Фрезер\ndevice = "serial:/dev/ttyS0"\n' "$ba
 $TAPE dnc --config bare-text.toml; echo "exit $?"
 printf '%s' "$base" > no-machine.toml
 $TAPE dnc --config no-machine.toml; echo "exit $?"
-$TAPE dnc status --config unknown-key.toml; echo "exit $?"
+# --config names a file: a folder or a FIFO is refused by name (a FIFO before anything waits on it).
+$TAPE dnc --config programs; echo "exit $?"
+mkfifo fifo.toml
+$TAPE dnc --config fifo.toml; echo "exit $?"
+# tape dnc status reads only runtime_directory: a machine's bad key is the service's to say, not its.
+printf '[service]\nruntime_directory = "nowhere"\n%s' "$machine" > status.toml
+printf 'rat = 5\n' >> status.toml
+$TAPE dnc status --config status.toml; echo "exit $?"
+$TAPE dnc status --config syntax.toml; echo "exit $?"
+$TAPE dnc status; echo "exit $?"
 $TAPE dnc; echo "exit $?"
 ls received

@@ -1,4 +1,5 @@
 // tape dnc's configuration read with toml++: every key checked, every mistake named with its line.
+#include <sys/stat.h>
 #include <toml++/toml.h>
 #include <unistd.h>
 
@@ -251,18 +252,34 @@ void read_machines(const toml::node& n, ServiceConfig& c) {
     }
 }
 
-}  // namespace
-
-ServiceConfig load_dnc_config(const std::string& path) {
+// The file's text: a regular file (SIGHUP reads it again) of a size a configuration has.
+std::string config_text(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        throw tape::Error(tape::Errc::usage,
+                          "a folder: --config names the configuration file (/etc/tape/dnc.toml; "
+                          "packaging/dnc.toml is a sample)");
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw tape::Error(tape::Errc::usage, std::string(S_ISFIFO(st.st_mode) ? "a FIFO" : "no regular file") +
+                                                 ": tape dnc reads its configuration again on SIGHUP, so it must be "
+                                                 "a file");
     std::vector<std::uint8_t> bytes = tape::read_file(path, max_config_bytes);
-    std::string text(bytes.begin(), bytes.end());
+    return std::string(bytes.begin(), bytes.end());
+}
+
+toml::table parsed(std::string_view text, const std::string& path) {
     tape::reject_bare_non_ascii(text, path);  // before toml++, which 3.3.0 cannot be trusted with it
-    toml::table root;
     try {
-        root = toml::parse(text, path);
+        return toml::parse(text, path);
     } catch (const toml::parse_error& e) {
         bad(e.source().begin.line, std::string(e.description()));
     }
+}
+
+}  // namespace
+
+ServiceConfig parse_dnc_config(std::string_view text, const std::string& path) {
+    toml::table root = parsed(text, path);
     ServiceConfig c;
     c.path = path;
     for (auto&& [key, node] : root) {
@@ -279,6 +296,17 @@ ServiceConfig load_dnc_config(const std::string& path) {
     if (c.library.programs.empty()) bad(1, "no [library] table with programs and received folders");
     if (c.machines.empty()) bad(1, "no [[machine]]: nothing to serve");
     return c;
+}
+
+ServiceConfig load_dnc_config(const std::string& path) { return parse_dnc_config(config_text(path), path); }
+
+std::string dnc_control_socket(const std::string& path) {
+    toml::table root = parsed(config_text(path), path);
+    ServiceConfig c;
+    if (const toml::node* service = root.get("service"); service && service->is_table())
+        if (const toml::node* dir = service->as_table()->get("runtime_directory"))
+            c.runtime_directory = Value{*dir, "service: runtime_directory"}.text();
+    return tape::dnc::control_socket_path(c);
 }
 
 }  // namespace cli
