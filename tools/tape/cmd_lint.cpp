@@ -102,7 +102,9 @@ void run(const LintArgs& a) {
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     // Streamed: a tape of any length is checked in bounded memory (--max-errors findings a rule).
-    ProgramInput in = open_program(a.input, a.source);
+    ProgramSource source = a.source;
+    source.decided_runs = true;  // a restored image: where a wrong run length could hide, as notes
+    ProgramInput in = open_program(a.input, source);
     tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict});
     load_program(in, linter, true);
     std::vector<tape::Finding> findings = linter.findings();

@@ -2,6 +2,8 @@
 // guessed or lost (tape/restore.hpp), and the frames left in doubt kept beside the image.
 #include <malloc.h>
 
+#include <algorithm>
+
 #include "cli/files.hpp"
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
@@ -38,7 +40,9 @@ tape::RestoreResult run_restore(const RestoreArgs& a, const ReadsAndDoubts& in, 
         return tape::restore(spans, o);
     } catch (const tape::UnrelatedRead& e) {
         fail(display_name(reads[e.read()].name), tape::Errc::bad_image,
-             unrelated_text(e, reads) + " (--drop-unrelated goes on without it)");
+             (report.blank[e.read()] ? "no punched frame (blank tape only): nothing of the tape to restore from"
+                                     : unrelated_text(e, reads)) +
+                 " (--drop-unrelated goes on without it)");
     } catch (const tape::Error& e) {
         fail("", e);
     }
@@ -47,7 +51,7 @@ tape::RestoreResult run_restore(const RestoreArgs& a, const ReadsAndDoubts& in, 
 // What the reads and the code say before the report: reads left out, a code that does not fit.
 void say_about_reads(const RestoreReportInput& in, const tape::RestoreResult& r) {
     for (std::size_t i = 0; i < in.names.size(); ++i)
-        if (!r.related[i]) say(display_name(in.names[i]), "left out: a read of another tape, or too damaged to align");
+        if (!r.related[i]) say(display_name(in.names[i]), left_out_text(in, i));
     if (in.code && r.code_misfit)
         say("", "most frames of the reads fail the code " + in.code_text +
                     ": it is not the tape's, so the reads were only voted, nothing repaired (try --code auto, or "
@@ -82,6 +86,7 @@ void run(const RestoreArgs& a) {
     for (const auto& r : reads) {
         report.names.push_back(r.name);
         report.sizes.push_back(r.frames.size());
+        report.blank.push_back(std::all_of(r.frames.begin(), r.frames.end(), [](tape::Frame f) { return f == 0; }));
     }
     tape::RestoreResult result = run_restore(a, in, report, spec ? &*spec : nullptr);
     report.result = &result;
