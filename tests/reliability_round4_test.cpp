@@ -4,6 +4,7 @@
 // data), a text program given to punch and emulate, and a blank read given to restore.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -91,8 +92,9 @@ TEST(Round4Doubts, ManyBadEntriesAreCountedAndNoJsonIsSaid) {
 // 13. Controls from a doubts file (ESC, BEL) do not reach the SVG: shown as decode shows them, and the
 // SVG parses as XML (python3's own parser, a real one).
 TEST(Round4Doubts, ControlsOfADoubtReachNoSvg) {
-    RestoredImage r("{\"status\":\"contested\",\"in_doubt\":true,\"frame\":23,\"after\":22,"
-                    "\"reason\":\"bell \\u0007 escape \\u001b[31m red \\u0000 <&>\"}");
+    RestoredImage r(
+        "{\"status\":\"contested\",\"in_doubt\":true,\"frame\":23,\"after\":22,"
+        "\"reason\":\"bell \\u0007 escape \\u001b[31m red \\u0000 <&>\"}");
     std::string svg = r.dir.file("t.svg");
     Outcome rendered = tape_run({"render", r.image, "-o", svg}, r.dir);
     ASSERT_EQ(rendered.status, 0) << rendered.err;
@@ -100,8 +102,8 @@ TEST(Round4Doubts, ControlsOfADoubtReachNoSvg) {
     EXPECT_EQ(text.find('\x1B'), std::string::npos);
     EXPECT_EQ(text.find('\x07'), std::string::npos);
     EXPECT_NE(text.find("escape \\x1B[31m red"), std::string::npos);
-    Outcome parsed = run("/usr/bin/python3", {"-c", "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])", svg},
-                         r.dir);
+    Outcome parsed =
+        run("/usr/bin/python3", {"-c", "import sys, xml.dom.minidom; xml.dom.minidom.parse(sys.argv[1])", svg}, r.dir);
     EXPECT_EQ(parsed.status, 0) << parsed.err;
 }
 
@@ -164,7 +166,8 @@ TEST(Round4Send, ATextProgramIsNotPunchedAsFrames) {
     EXPECT_EQ(emulated.status, 2);
     EXPECT_NE(emulated.err.find("a text program: use feed, or encode it first"), std::string::npos) << emulated.err;
     // Its bytes as they are, when asked for; and an image is punched as before.
-    EXPECT_EQ(tape_run({"punch", "--format", "raw", dir.file("big.txt"), "file:" + dir.file("raw.ptp")}, dir).status, 0);
+    EXPECT_EQ(tape_run({"punch", "--format", "raw", dir.file("big.txt"), "file:" + dir.file("raw.ptp")}, dir).status,
+              0);
     ASSERT_EQ(tape_run({"encode", dir.file("big.txt"), "-o", dir.file("t.ptp")}, dir).status, 0);
     EXPECT_EQ(tape_run({"punch", dir.file("t.ptp"), "file:" + dir.file("p.ptp")}, dir).status, 0);
     EXPECT_EQ(read_text(dir.file("t.ptp")), read_text(dir.file("p.ptp")));
@@ -177,9 +180,8 @@ TEST(Round4Restore, ABlankReadHasNoPunchedFrame) {
     write_frames(dir.file("a.ptp"), tape);
     write_frames(dir.file("b.ptp"), tape);
     write_frames(dir.file("blank.ptp"), std::vector<Frame>(300, 0));
-    Outcome refused = tape_run({"restore", dir.file("a.ptp"), dir.file("b.ptp"), dir.file("blank.ptp"), "-o",
-                                dir.file("r.ptp")},
-                               dir);
+    Outcome refused = tape_run(
+        {"restore", dir.file("a.ptp"), dir.file("b.ptp"), dir.file("blank.ptp"), "-o", dir.file("r.ptp")}, dir);
     EXPECT_EQ(refused.status, 1) << refused.err;
     EXPECT_NE(refused.err.find("blank.ptp: no punched frame"), std::string::npos) << refused.err;
     EXPECT_EQ(refused.err.find("another tape"), std::string::npos) << refused.err;
@@ -225,8 +227,8 @@ TEST(Round4Pictures, ThePixelBoundIsReadFromTheHeader) {
     EXPECT_THROW(check_picture(bytes_of(png_declaring(0, 10))), Error);
     EXPECT_THROW(check_picture(bytes_of(png_declaring(20000, 20000).substr(0, 20))), Error);
     // JPEG: the size is in the start of frame, after whatever segments come first.
-    std::string jpeg = std::string("\xFF\xD8\xFF\xE0\x00\x04xx\xFF\xC0\x00\x11\x08", 13) + "\x4E\x20\x4E\x20" +
-                       std::string(20, '\0');
+    std::string jpeg =
+        std::string("\xFF\xD8\xFF\xE0\x00\x04xx\xFF\xC0\x00\x11\x08", 13) + "\x4E\x20\x4E\x20" + std::string(20, '\0');
     auto h = scan::read_picture_header(bytes_of(jpeg));
     ASSERT_TRUE(h);
     EXPECT_EQ(h->width * h->height, 400'000'000U);
@@ -253,4 +255,44 @@ TEST(Round4Pictures, ScanRefusesABombDevZeroAndDamageInWords) {
     EXPECT_NE(damaged.err.find("damaged or cut short"), std::string::npos) << damaged.err;
     for (const auto* internal : {"OpenCV(", "Assertion", "libpng", ".cpp:"})
         EXPECT_EQ(damaged.err.find(internal), std::string::npos) << damaged.err;
+}
+
+namespace {
+
+// The frames from the first punched to the last: what a restoration must give back (blank leader and
+// trailer follow the majority of the reads).
+std::vector<Frame> punched_part(std::vector<Frame> f) {
+    auto first = std::find_if(f.begin(), f.end(), [](Frame x) { return x != 0; });
+    auto last = std::find_if(f.rbegin(), f.rend(), [](Frame x) { return x != 0; }).base();
+    return first < last ? std::vector<Frame>(first, last) : std::vector<Frame>{};
+}
+
+}  // namespace
+
+// 15. Many reads of one 1 %-damaged tape: where two reads garble the same stretch, the frames they have
+// and the other 18 lack are not written (the 20 reads wrote 4 such frames, in doubt).
+TEST(Round4Restore, ManyReadsWriteNoFrameTheTapeLacks) {
+    TempDir dir;
+    std::string program;
+    for (int i = 1; i <= 3000; ++i)
+        program += "N" + std::to_string(i) + " G01 X" + std::to_string(i) + ".5 Y-" + std::to_string(i) + "\n";
+    std::ofstream(dir.file("p.nc")) << program;
+    std::string s = dir.file("s.ptp");
+    ASSERT_EQ(tape_run({"encode", dir.file("p.nc"), "-o", s}, dir).status, 0);
+    std::vector<std::string> reads;
+    for (int k = 1; k <= 20; ++k) {
+        reads.push_back(dir.file("d" + std::to_string(k) + ".ptp"));
+        ASSERT_EQ(run(TAPE_DAMAGE_BINARY, {s, "-o", reads.back(), "--seed", std::to_string(k), "--damage", "0.01"}, dir)
+                      .status,
+                  0);
+    }
+    for (std::size_t n : {15U, 20U}) {
+        std::vector<std::string> args{"restore"};
+        args.insert(args.end(), reads.begin(), reads.begin() + static_cast<std::ptrdiff_t>(n));
+        std::string r = dir.file("r" + std::to_string(n) + ".ptp");
+        args.insert(args.end(), {"-o", r, "--report", dir.file("report.txt"), "--force"});
+        Outcome restored = tape_run(args, dir);
+        ASSERT_NE(restored.status, 2) << restored.err;
+        EXPECT_EQ(punched_part(read_frames(r)), punched_part(read_frames(s))) << n << " reads";
+    }
 }
