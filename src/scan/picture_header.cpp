@@ -109,7 +109,8 @@ std::optional<PictureHeader> read_picture_header(std::span<const std::uint8_t> b
 
 PictureHeader check_picture(std::span<const std::uint8_t> bytes) {
     std::string_view f = picture_signature(bytes);
-    if (f.empty()) throw refusal("not a picture scan reads: it does not begin as a " + std::string(formats_read) + " file");
+    if (f.empty())
+        throw refusal("not a picture scan reads: it does not begin as a " + std::string(formats_read) + " file");
     auto h = read_picture_header(bytes);
     if (!h) throw refusal("a " + std::string(f) + " file whose header does not say its size: damaged or cut short");
     if (h->width == 0 || h->height == 0) throw refusal("a " + std::string(f) + " picture with no pixels");
@@ -123,8 +124,8 @@ PictureHeader check_picture(std::span<const std::uint8_t> bytes) {
 }
 
 std::vector<std::uint8_t> read_picture_file(const std::string& path) {
-    const std::string too_big = "more than " + std::to_string(max_picture_bytes >> 20) +
-                                " MiB: larger than any picture scan reads";
+    const std::string too_big =
+        "more than " + std::to_string(max_picture_bytes >> 20) + " MiB: larger than any picture scan reads";
     struct stat st {};
     if (path != "-" && ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
         static_cast<std::uint64_t>(st.st_size) > max_picture_bytes)
