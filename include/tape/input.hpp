@@ -33,6 +33,9 @@ struct InputOptions {
     const ImageFormat* format = nullptr;  ///< given: the input is an image in this format
     bool detect_code = true;              ///< decide ISO or EIA from the tape (ISO when decode.parity is not even)
     DecodeOptions decode{};               ///< the code when not detected, parity, charset, positions, limits
+    /// Also give the runs a restoration decided against a read (its doubts file lists them), each as a
+    /// note where it stands: they are not in doubt, but a wrong length could hide there.
+    bool decided_runs = false;
 };
 
 class Input {
@@ -85,7 +88,8 @@ public:
     /// Frames in doubt met so far: an image file restored by tape restore, whose doubts file beside it
     /// (tape/restore_doubts.hpp) names frames its restoration could not decide. Each is given by
     /// next_text as a Diagnostic (Errc::doubtful_frame) where it stands, and stops decoding as a bad
-    /// frame does (unless decode.keep_going).
+    /// frame does (unless decode.keep_going). Entries of the doubts file that cannot be read are warnings
+    /// among the notes.
     std::uint64_t doubtful_frames() const { return doubtful_met_; }
     /// True when no code fits the tape and, with decode.keep_going, it is decoded with the closest reading
     /// (CodeDetection::closest): the caller must say so (closest_reading_note).
@@ -93,6 +97,7 @@ public:
 
 private:
     void open(std::unique_ptr<ByteSource> source, const std::string& name);
+    void read_doubts(const std::string& path);
     bool feed_with_doubts(std::span<const Frame> frames, std::uint64_t first, DecodeResult& out);
 
     InputOptions options_;

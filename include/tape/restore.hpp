@@ -76,6 +76,9 @@ struct RestoreProblem {
     std::vector<Frame> candidates;  ///< repairs that fit (unresolved: none or several; guessed: all, the guess first)
     std::string reason;
     bool run_length = false;  ///< decided on how many times a frame of a run is punched, the reads disagreeing
+    /// run_length: how much likelier the length written is than the next likeliest; 0 where the
+    /// program's rules decided (or the reads that cover the run whole agree).
+    double odds = 0;
 };
 
 struct RestoreResult {

@@ -41,7 +41,16 @@ private:
 
 Input::Input(const std::string& path, const InputOptions& options) : options_(options) {
     open(std::make_unique<FileSource>(path), path);
-    if (image_ && path != "-") doubts_ = doubts_beside(path);
+    if (image_ && path != "-") read_doubts(path);
+}
+
+void Input::read_doubts(const std::string& path) {
+    DoubtsFile file = read_doubts_beside(path);
+    for (auto& d : file.frames)
+        if (!d.decided || options_.decided_runs) doubts_.push_back(std::move(d));
+    for (const auto& why : file.refused)
+        notes_.push_back(Diagnostic{
+            .code = Errc::bad_image, .message = doubts_file_for(path) + ": " + why, .severity = Severity::warning});
 }
 
 Input::Input(std::unique_ptr<ByteSource> source, const std::string& name, const InputOptions& options)
@@ -225,11 +234,17 @@ bool Input::feed_with_doubts(std::span<const Frame> frames, std::uint64_t first,
         auto line = decoder_->line();  // before the frame in doubt, which may end the line
         given = upto;
         if (!d.left_out && !decoder_->feed(frames.subspan(given++, 1), out)) return false;
+        Diagnostic said{.code = Errc::doubtful_frame,
+                        .where = Position{.frame = std::max<std::uint64_t>(d.frame, 1), .line = line},
+                        .message = d.message()};
+        if (d.decided) {  // not in doubt: named, and decoding goes on
+            said.rule = "run-decided";
+            said.severity = Severity::note;
+            out.diagnostics.push_back(std::move(said));
+            continue;
+        }
         ++doubtful_met_;
-        out.diagnostics.push_back(
-            Diagnostic{.code = Errc::doubtful_frame,
-                       .where = Position{.frame = std::max<std::uint64_t>(d.frame, 1), .line = line},
-                       .message = d.message()});
+        out.diagnostics.push_back(std::move(said));
         if (!decode_->keep_going) return false;
     }
     return decoder_->feed(frames.subspan(given), out);

@@ -146,6 +146,9 @@ constexpr std::array table = std::to_array<Rule>({
      "blank tape inside a block, between two of its characters (an error with --strict)",
      "a character whose holes were all lost reads as blank tape and vanishes: in EIA 0 1 2 4 8 - and space have "
      "one hole, so Z-1 becomes Z1"},
+    {"run-decided", N, every, "tape restore: the doubts file beside the image (IMAGE.restore.json)",
+     "a run of equal frames whose length the restoration decided against a read, by its odds or the program's rules",
+     "a wrong length would hide here if the odds misled: one more read of the place settles it"},
     {"implied-point", W, all, "ГОСТ 20999-83 §3.1.4",
      "tape format: a program with no decimal point anywhere, whose numbers are taken as whole numbers",
      "with an implied point the same digits mean another size; give the source format with --from"},

@@ -8,6 +8,7 @@
 
 #include "tape/error.hpp"
 #include "tape/render.hpp"
+#include "tape/utf8_text.hpp"
 
 namespace tape {
 
@@ -60,8 +61,10 @@ void put_mm(std::string& out, std::int64_t v) {
     out += static_cast<char>('0' + v % 10);
 }
 
-void put_escaped(std::string& out, std::string_view s) {
-    for (char c : s) {
+// Text from outside (a doubts file's reasons, a label) as XML: controls (ESC, BEL: no XML document may
+// hold them) and bytes that are no UTF-8 shown as decode's messages show them (\x1B), then escaped.
+void put_escaped(std::string& out, std::string_view text) {
+    for (char c : visible(text)) {
         switch (c) {
             case '&':
                 out += "&amp;";

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <utility>
 
 namespace tape {
@@ -36,32 +37,111 @@ std::string image_fingerprint(std::span<const std::uint8_t> bytes) {
     return buf;
 }
 
-std::vector<DoubtfulFrame> doubts_beside(const std::string& image_path) {
-    std::vector<DoubtfulFrame> out;
-    std::string doubts = read_small_file(doubts_file_for(image_path), largest_image);
-    if (doubts.empty()) return out;
-    try {
-        auto j = nlohmann::json::parse(doubts);
-        const auto& image = j.at("image");
-        std::string bytes = read_small_file(image_path, largest_image);
-        auto data = std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
-        if (image.at("bytes").get<std::uint64_t>() != bytes.size() ||
-            image.at("fnv1a64").get<std::string>() != image_fingerprint(data))
-            return out;
-        for (const auto& p : j.at("problems")) {
-            if (!p.at("in_doubt").get<bool>()) continue;
-            // A frame left out has no frame of its own: its place is after frame `after`.
-            bool left_out = p.at("frame").is_null();
-            out.push_back({p.at(left_out ? "after" : "frame").get<std::uint64_t>(), p.at("status").get<std::string>(),
-                           p.at("reason").get<std::string>(), left_out});
-            if (!left_out && out.back().frame == 0) return {};  // no frame 0: not a file restore wrote
-        }
-    } catch (const nlohmann::json::exception&) {
-        return {};
+namespace {
+
+using Json = nlohmann::json;
+
+// Entries refused are said one by one up to this many, then counted: a hostile file cannot flood the terminal.
+constexpr std::size_t refusals_said = 10;
+
+// A member as JSON shows it, cut short: what the entry holds, for the message that refuses it.
+std::string shown(const Json& v) {
+    std::string s = v.dump(-1, ' ', true, Json::error_handler_t::replace);
+    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+}
+
+// A frame number as restore writes it: a whole number from 0. JSON reads a larger one (past 2^64), a
+// fraction or an exponent as a double, which no frame is and whose conversion would be undefined; a
+// sign as a signed number.
+std::optional<std::uint64_t> frame_number(const Json& v) {
+    if (v.is_number_unsigned()) return v.get<std::uint64_t>();
+    return std::nullopt;
+}
+
+std::optional<DoubtfulFrame> refuse(std::string& why, std::string text) {
+    why = std::move(text);
+    return std::nullopt;
+}
+
+// One problem of the file as a DoubtfulFrame: nullopt for one that is neither in doubt nor a run decided
+// against a read; nullopt and why for one that is not as restore writes it.
+std::optional<DoubtfulFrame> entry(const Json& p, std::string& why) {
+    if (!p.is_object()) return refuse(why, "not an object");
+    auto in_doubt = p.find("in_doubt");
+    if (in_doubt == p.end() || !in_doubt->is_boolean()) return refuse(why, "no in_doubt true or false");
+    auto run = p.find("run_length");
+    bool decided = !in_doubt->get<bool>() && run != p.end() && run->is_boolean() && run->get<bool>();
+    if (!in_doubt->get<bool>() && !decided) return std::nullopt;
+    DoubtfulFrame d;
+    d.decided = decided;
+    auto frame = p.find("frame"), after = p.find("after");
+    d.left_out = frame == p.end() || frame->is_null();
+    const char* key = d.left_out ? "after" : "frame";
+    const auto& place = d.left_out ? after : frame;
+    if (place == p.end()) return refuse(why, std::string("no ") + key);
+    auto n = frame_number(*place);
+    if (!n) return refuse(why, std::string("its ") + key + " (" + shown(*place) + ") is no frame number");
+    if (!d.left_out && *n == 0) return refuse(why, "its frame is 0: frames are counted from 1");
+    d.frame = *n;
+    for (auto [field, out] : {std::pair{"status", &d.status}, std::pair{"reason", &d.reason}}) {
+        auto v = p.find(field);
+        if (v == p.end() || !v->is_string()) return refuse(why, std::string("no ") + field + " in words");
+        *out = v->get<std::string>();
     }
-    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    return d;
+}
+
+bool same_image(const Json& j, std::span<const std::uint8_t> image) {
+    auto it = j.find("image");
+    if (it == j.end() || !it->is_object()) return false;
+    auto bytes = it->find("bytes"), fnv = it->find("fnv1a64");
+    return bytes != it->end() && frame_number(*bytes) == image.size() && fnv != it->end() && fnv->is_string() &&
+           fnv->get<std::string>() == image_fingerprint(image);
+}
+
+}  // namespace
+
+DoubtsFile read_doubts(std::string_view json, std::span<const std::uint8_t> image) {
+    DoubtsFile out;
+    Json j = Json::parse(json, nullptr, false);
+    if (j.is_discarded() || !j.is_object()) {
+        out.refused.push_back("not the JSON tape restore writes: not read");
+        return out;
+    }
+    if (!same_image(j, image)) return out;  // of the image as it was: changed since, its doubts are not its own
+    auto problems = j.find("problems");
+    if (problems == j.end() || !problems->is_array()) {
+        out.refused.push_back("no list of problems: not read");
+        return out;
+    }
+    std::size_t refused = 0;
+    for (std::size_t i = 0; i < problems->size(); ++i) {
+        std::string why;
+        auto d = entry((*problems)[i], why);
+        if (d) out.frames.push_back(std::move(*d));
+        if (why.empty()) continue;
+        if (++refused <= refusals_said)
+            out.refused.push_back("problem " + std::to_string(i + 1) + ": " + why + ": not read");
+    }
+    if (refused > refusals_said)
+        out.refused.push_back(std::to_string(refused - refusals_said) + " more problem(s) not read");
+    std::stable_sort(out.frames.begin(), out.frames.end(), [](const auto& a, const auto& b) {
         return std::pair(a.place(), !a.left_out) < std::pair(b.place(), !b.left_out);
     });
+    return out;
+}
+
+DoubtsFile read_doubts_beside(const std::string& image_path) {
+    std::string doubts = read_small_file(doubts_file_for(image_path), largest_image);
+    if (doubts.empty()) return {};
+    std::string bytes = read_small_file(image_path, largest_image);
+    return read_doubts(doubts, std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+}
+
+std::vector<DoubtfulFrame> doubts_beside(const std::string& image_path) {
+    std::vector<DoubtfulFrame> out;
+    for (auto& d : read_doubts_beside(image_path).frames)
+        if (!d.decided) out.push_back(std::move(d));
     return out;
 }
 
@@ -69,6 +149,7 @@ std::string DoubtfulFrame::message() const {
     std::string where = !left_out ? ""
                         : frame   ? "a frame left out after this one, "
                                   : "a frame left out before this one, ";
+    if (decided) return "run length decided against a read (" + status + "): " + where + reason;
     return "restored in doubt (" + status + "): " + where + reason;
 }
 

@@ -102,6 +102,9 @@ std::string of_reads(std::size_t k, std::size_t n, const char* what) {
     return std::to_string(k) + " of " + std::to_string(n) + " reads " + what;
 }
 
+// Reads heard well at a place with no frame there, enough that they did not all lose the same frame.
+constexpr std::size_t enough_lacking = 3;
+
 // Builds the problems and verdicts as the vote goes.
 class Voter {
 public:
@@ -158,7 +161,6 @@ void Voter::only_misreadings(std::size_t c, const Heard& h) {
     for (std::size_t r = v_.a.reads(); r-- > 0;) seen = frame_at(v_.a, v_.reads, c, r).value_or(seen);
     // Where several reads slipped, the others may have lost a frame that only a misreading shows; but not
     // three reads heard well here and none with a frame.
-    constexpr std::size_t enough_lacking = 3;
     if (v_.tangled[c] && h.lost < enough_lacking)
         set(c, FrameStatus::contested, seen,
             "only reads that misread this stretch have a frame here, and more than one read slipped in it: not "
@@ -216,6 +218,8 @@ void Voter::run_column(std::size_t c, const RunDecision& d, bool writes, const H
             why + (d.doubt.empty() ? "; too close to decide: " : "; but it breaks " + d.doubt + ": ") +
                 (writes ? "written" : "not written"),
             writes, true);
+    if (d.rule.empty() && d.alternative != d.length)
+        out_.problems[static_cast<std::size_t>(out_.verdicts[c].problem)].odds = d.odds;
 }
 
 // Whether a frame stands in this column at all, where the reads disagree on it and no run decides:
@@ -260,6 +264,9 @@ bool Voter::lone_frame(std::size_t c, const Heard& h, std::size_t lost) {
     const auto& front = h.tally.front();
     std::size_t present = front.good ? h.present_good : h.present;
     if (present != 1 || lost < 2 || h.repeats > 0 || front.value == blank_frame || alone_beside(c)) return false;
+    // Many reads heard well here and none has it (18 of 20): not three reads lost the same frame, the one
+    // that has it misread a stain or splice. Left out, as a frame most reads lack.
+    if (lost >= enough_lacking && h.present < lost) return false;
     if (front.good) {
         out_.verdicts[c].presence = true;
         set(c, FrameStatus::contested, front.value,

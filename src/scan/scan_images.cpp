@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "scan/picture_blobs.hpp"
+#include "scan/picture_header.hpp"
 #include "scan/picture_module_loader.hpp"
 #include "scan/scan_result.hpp"
 #include "scan/strip_reading.hpp"
@@ -17,7 +18,9 @@ namespace {
 // which tells coloured paper (orange, red, yellow) from a grey or white backing far better.
 std::vector<Picture> grey_pictures(const std::string& path, int& width, int& height) {
     std::vector<Picture> out(2);
-    picture_module::call(picture_module::api().greys, std::span<const std::uint8_t>(read_file(path)), out[0], out[1]);
+    std::vector<std::uint8_t> bytes = scan::read_picture_file(path);
+    scan::check_picture(bytes);  // its size from its header, before a decoder allocates it
+    picture_module::call(picture_module::api().greys, std::span<const std::uint8_t>(bytes), out[0], out[1]);
     width = out[0].width, height = out[0].height;
     return out;
 }

@@ -78,14 +78,21 @@ std::unique_ptr<tape::FileSource> open_source(const std::string& path) {
     }
 }
 
-TapeInput read_tape(const std::string& path, const std::string& format_id) {
+void refuse_text_program(const tape::Input& input, const std::string& name) {
+    if (!input.is_image())
+        fail(name, tape::Errc::usage,
+             "a text program: use feed, or encode it first (--format raw sends its bytes as they are)");
+}
+
+TapeInput read_tape(const std::string& path, const std::string& format_id, TextProgram text) {
     TapeInput in;
     in.name = path.empty() ? "-" : path;
-    tape::InputOptions o = input_options(CodeChoice{}, format_id, "image");
+    tape::InputOptions o = input_options(CodeChoice{}, format_id, text == TextProgram::refused ? "auto" : "image");
     o.detect_code = false;
     auto input = open_input(in.name, o);
-    in.format = input->format();
     std::string name = display_name(in.name);
+    if (text == TextProgram::refused) refuse_text_program(*input, name);
+    in.format = input->format();
     // A raw file's size is its frames: one too long for any tape is refused before it is read.
     struct stat st {};
     if (in.format->bytes_are_frames && in.name != "-" && ::stat(in.name.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&

@@ -39,8 +39,14 @@ void say_other_reading(tape::Input& input, const std::string& name);
 /// IN ("-" = stdin) opened to be read as bytes, a chunk at a time (a text to encode); failure ends the program.
 std::unique_ptr<tape::FileSource> open_source(const std::string& path);
 
+/// What reading IN as a tape image makes of a text program: its bytes taken as frames, or refused.
+enum class TextProgram { as_bytes, refused };
 /// Reads IN ("-" = stdin) whole as an image: --format, else by extension, else by content. A tape
 /// longer than tape::max_tape_frames ends the program (bad data, exit 1) before it fills memory.
-TapeInput read_tape(const std::string& path, const std::string& format_id);
+TapeInput read_tape(const std::string& path, const std::string& format_id, TextProgram text = TextProgram::as_bytes);
+/// Ends the program (usage, exit 2) when input is a text program, for the commands that send frames as
+/// they are (punch, emulate): its characters would go out with no parity and no leader, a tape no
+/// reader takes. feed encodes a text; --format raw sends a file's bytes as they are.
+void refuse_text_program(const tape::Input& input, const std::string& name);
 
 }  // namespace cli

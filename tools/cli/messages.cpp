@@ -29,7 +29,8 @@ std::string where_text(const tape::Position& where, bool raw_frames) {
 
 void say_note(const std::string& name, const tape::Diagnostic& d) {
     std::string where = d.where.describe();
-    say(name, (where.empty() ? "" : where + ": ") + "note: " + with_hint(d.message, d.hint));
+    say(name, (where.empty() ? "" : where + ": ") + std::string(tape::severity_name(d.severity)) + ": " +
+                  with_hint(d.message, d.hint));
 }
 
 std::string hint_text(const tape::Hint& hint) {

@@ -35,6 +35,7 @@ ProgramInput open_program(const std::string& path, const ProgramSource& source) 
     tape::InputOptions o = input_options(source.choice, source.format, source.kind);
     o.decode.positions = true;
     o.decode.keep_going = source.keep_going;
+    o.decided_runs = source.decided_runs;
     ProgramInput in;
     in.name = display_name(path);
     in.load = load_options(source);

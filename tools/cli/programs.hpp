@@ -20,6 +20,7 @@ struct ProgramSource {
     std::string kind = "auto";
     std::string dialect = "auto";
     bool keep_going = false;
+    bool decided_runs = false;  ///< name the runs a restoration decided against a read (tape::InputOptions)
 };
 void add_program_source_options(CLI::App* sub, ProgramSource& source, bool with_keep_going = false);
 tape::LoadOptions load_options(const ProgramSource& source);

@@ -71,7 +71,7 @@ RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suff
     RestoreReportInput report;
     report.code = code_for_reads("auto", "", in.reads, report.code_text);
     report.names = names;
-    for (const auto& r : in.reads) report.sizes.push_back(r.frames.size());
+    describe_reads(in, report);
     tape::RestoreResult result = run_restore(RestoreChoices{}, in, report);
     report.result = &result;
     say_about_reads(report, result);

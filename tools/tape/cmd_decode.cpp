@@ -26,6 +26,10 @@ struct DecodeArgs {
 // A bad frame as decode says it; blank tape inside a block as a warning (an error with --strict).
 // True for the latter.
 bool say_decoded(const std::string& name, const tape::Diagnostic& d, bool raw, bool strict) {
+    if (d.severity == tape::Severity::note) {
+        say(name, where_text(d.where, raw) + ": note: " + d.message);
+        return false;
+    }
     if (d.code != tape::Errc::blank_frame) {
         say_diagnostic(name, d, raw);
         return false;
@@ -168,6 +172,7 @@ void run(const DecodeArgs& a) {
     io.decode.keep_going = a.keep_going;
     io.decode.unshift_on_space = a.unshift_on_space;
     if (a.to != "text") io.detect_code = false;  // a binary tape has no character code to find
+    io.decided_runs = globals().verbosity > 0;   // -v: where a restoration decided a run against a read
     auto in = open_input(a.input, io);
     claim_output(a.output);  // refused before anything is read when it is the input
     if (a.to == "text")

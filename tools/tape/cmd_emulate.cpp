@@ -46,7 +46,7 @@ void run_on_adapter(const EmulateArgs& a, const std::vector<std::string>& given,
              option +
                  " is for a serial line; through an adapter the control's own lines start, stop and rewind the "
                  "reader, and its frame rate is the adapter's (tape adapter config --frame-rate)");
-    TapeInput in = read_tape(a.input, a.format);
+    TapeInput in = read_tape(a.input, a.format, TextProgram::refused);
     o.eia_table = globals().table();
     install_interrupt_handler();
     o.stop = &interrupted();
@@ -91,7 +91,7 @@ void run(const EmulateArgs& a) {
             fail("", tape::Errc::usage,
                  "--search-char and --rewind-char cannot be DC1 or DC3: those start and stop the reader");
     if (tape::is_adapter_device(a.device)) return run_on_adapter(a, a.serial_only, o);
-    TapeInput in = read_tape(a.input, a.format);
+    TapeInput in = read_tape(a.input, a.format, TextProgram::refused);
     o.eia_table = globals().table();
     install_interrupt_handler();
     auto line = open_device_or_fail(a.device, tape::DeviceUse::both);

@@ -104,7 +104,9 @@ void run(const LintArgs& a) {
     std::optional<tape::FormatSpec> spec;
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     // Streamed: a tape of any length is checked in bounded memory (--max-errors findings a rule).
-    ProgramInput in = open_program(a.input, a.source);
+    ProgramSource source = a.source;
+    source.decided_runs = true;  // a restored image: where a wrong run length could hide, as notes
+    ProgramInput in = open_program(a.input, source);
     auto machine = machine_or_fail(a.machine);
     if (machine && spec)
         fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");

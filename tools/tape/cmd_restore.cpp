@@ -2,6 +2,8 @@
 // guessed or lost (tape/restore.hpp), and the frames left in doubt kept beside the image.
 #include <malloc.h>
 
+#include <algorithm>
+
 #include "cli/files.hpp"
 #include "cli/inputs.hpp"
 #include "cli/machines.hpp"
@@ -54,10 +56,8 @@ void run(const RestoreArgs& a) {
     const std::vector<TapeInput>& reads = in.reads;
     RestoreReportInput report;
     report.code = code_for_reads(a.code, a.parity, reads, report.code_text);
-    for (const auto& r : reads) {
-        report.names.push_back(r.name);
-        report.sizes.push_back(r.frames.size());
-    }
+    for (const auto& r : reads) report.names.push_back(r.name);
+    describe_reads(in, report);
     RestoreChoices choices{.dialect = a.dialect, .guess = a.guess, .drop_unrelated = a.drop_unrelated};
     choices.spec = spec ? &*spec : nullptr;
     choices.machine = machine ? &*machine : nullptr;

@@ -91,6 +91,9 @@ nlohmann::ordered_json problem_json(const tape::RestoreProblem& p) {
     j["candidates"] = ordered_json::array();
     for (auto c : p.candidates) j["candidates"].push_back(tape::frame_hex(c));
     j["run_length"] = p.run_length;
+    // The odds of the length written over the next (null: the program's rules decided): with the doubts
+    // file, decode -v and lint name each run decided against a read.
+    j["odds"] = p.run_length && p.odds > 0 ? ordered_json(std::round(p.odds)) : ordered_json(nullptr);
     j["reason"] = p.reason;
     return j;
 }
@@ -161,6 +164,12 @@ std::vector<RereadRange> reread_list(const tape::RestoreResult& r) {
     return out;
 }
 
+std::string left_out_text(const RestoreReportInput& in, std::size_t i) {
+    // A blank read shares nothing with the others, but it is no read of another tape.
+    if (i < in.blank.size() && in.blank[i]) return "left out: no punched frame (blank tape only)";
+    return "left out: a read of another tape, or too damaged to align";
+}
+
 std::string restore_report_text(const RestoreReportInput& in) {
     const tape::RestoreResult& r = *in.result;
     std::string s = "restored " + std::to_string(r.frames.size()) + " frames from " + std::to_string(in.names.size()) +
@@ -170,8 +179,7 @@ std::string restore_report_text(const RestoreReportInput& in) {
         char share[16];
         std::snprintf(share, sizeof share, "%.1f", r.shared[i] * 100);
         s += "  read " + std::to_string(i + 1) + ": " + display_name(in.names[i]) + ", " + std::to_string(in.sizes[i]) +
-             " frames, " +
-             (r.related[i] ? std::string(share) + "% shared with the reference" : "left out: a read of another tape") +
+             " frames, " + (r.related[i] ? std::string(share) + "% shared with the reference" : left_out_text(in, i)) +
              "\n";
     }
     s += summary_text(r);

@@ -14,6 +14,7 @@ namespace cli {
 struct RestoreReportInput {
     std::vector<std::string> names;  ///< the reads, as given
     std::vector<std::size_t> sizes;  ///< their frames
+    std::vector<bool> blank;         ///< per read: no punched frame (blank tape, or empty)
     const tape::RestoreResult* result = nullptr;
     std::optional<tape::FrameCode> code;
     std::string code_text;     ///< "ISO with even parity", or "none"
@@ -29,6 +30,9 @@ struct RereadRange {
 /// The frames in doubt (contested, unstable, unresolved, guessed, missing), close ones merged, with a
 /// few frames around each.
 std::vector<RereadRange> reread_list(const tape::RestoreResult& r);
+
+/// Why read i was left out: no punched frame, or a read of another tape (too damaged to align).
+std::string left_out_text(const RestoreReportInput& in, std::size_t i);
 
 std::string restore_report_text(const RestoreReportInput& in);
 std::string restore_report_json(const RestoreReportInput& in);

@@ -1,6 +1,8 @@
 // Restoring reads as tape restore does (restore_run.hpp).
 #include "restore_run.hpp"
 
+#include <algorithm>
+
 #include "cli/messages.hpp"
 #include "cli/restore_inputs.hpp"
 
@@ -19,16 +21,26 @@ tape::RestoreResult run_restore(const RestoreChoices& c, const ReadsAndDoubts& i
     try {
         return tape::restore(spans, o);
     } catch (const tape::UnrelatedRead& e) {
+        bool blank = e.read() < report.blank.size() && report.blank[e.read()];
         fail(display_name(reads[e.read()].name), tape::Errc::bad_image,
-             unrelated_text(e, reads) + " (--drop-unrelated goes on without it)");
+             (blank ? "no punched frame (blank tape only): nothing of the tape to restore from"
+                    : unrelated_text(e, reads)) +
+                 " (--drop-unrelated goes on without it)");
     } catch (const tape::Error& e) {
         fail("", e);
     }
 }
 
+void describe_reads(const ReadsAndDoubts& in, RestoreReportInput& report) {
+    for (const auto& r : in.reads) {
+        report.sizes.push_back(r.frames.size());
+        report.blank.push_back(std::all_of(r.frames.begin(), r.frames.end(), [](tape::Frame f) { return f == 0; }));
+    }
+}
+
 void say_about_reads(const RestoreReportInput& in, const tape::RestoreResult& r) {
     for (std::size_t i = 0; i < in.names.size(); ++i)
-        if (!r.related[i]) say(display_name(in.names[i]), "left out: a read of another tape, or too damaged to align");
+        if (!r.related[i]) say(display_name(in.names[i]), left_out_text(in, i));
     if (in.code && r.code_misfit)
         say("", "most frames of the reads fail the code " + in.code_text +
                     ": it is not the tape's, so the reads were only voted, nothing repaired (try --code auto, or "

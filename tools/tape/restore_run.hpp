@@ -25,6 +25,9 @@ struct RestoreChoices {
 /// the program.
 tape::RestoreResult run_restore(const RestoreChoices& c, const ReadsAndDoubts& in, const RestoreReportInput& report);
 
+/// Each read's size and whether it holds no punched frame, for the report and its messages.
+void describe_reads(const ReadsAndDoubts& in, RestoreReportInput& report);
+
 /// What the reads and the code say before the report: reads left out, a code that does not fit.
 void say_about_reads(const RestoreReportInput& in, const tape::RestoreResult& r);
 

@@ -90,10 +90,11 @@ std::vector<tape::Frame> frames_to_send(tape::Input& input, const std::string& n
     }
 }
 
-SendInput open_frames_to_send(const std::string& path, const FeedProfile& p) {
+SendInput open_frames_to_send(const std::string& path, const FeedProfile& p, bool text_refused) {
     SendInput in;
     in.name_ = display_name(path);
     in.input_ = open_input(path, feed_input_options(p));
+    if (text_refused) refuse_text_program(*in.input_, in.name_);
     tape::FeedOptions o = feed_options(p);
     try {
         tape::DialectChoice chosen;
@@ -124,8 +125,7 @@ SendInput frames_in_memory(std::vector<tape::Frame> frames, const std::string& n
 SendInput open_image_to_send(const std::string& path, const std::string& format_id) {
     FeedProfile p;
     p.format = format_id;
-    p.kind = "image";
-    return open_frames_to_send(path, p);
+    return open_frames_to_send(path, p, true);  // no code, parity or leader chosen for a text
 }
 
 std::span<const tape::Frame> SendInput::next() {

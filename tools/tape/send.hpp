@@ -45,7 +45,7 @@ public:
     tape::Input* input_for_code() { return input_.get(); }
 
 private:
-    friend SendInput open_frames_to_send(const std::string&, const FeedProfile&);
+    friend SendInput open_frames_to_send(const std::string&, const FeedProfile&, bool);
     friend SendInput frames_in_memory(std::vector<tape::Frame>, const std::string&, std::optional<tape::FrameCode>);
 
     std::string name_;
@@ -58,8 +58,9 @@ private:
 
 /// The frames to send for IN: an image as it is (blank ends replaced when --leader/--trailer are given),
 /// or a text program encoded with the profile.
-SendInput open_frames_to_send(const std::string& path, const FeedProfile& p);
-/// A tape image's frames exactly as they are (punch).
+/// text_refused: a text program is refused (refuse_text_program), for punch's frames as they are.
+SendInput open_frames_to_send(const std::string& path, const FeedProfile& p, bool text_refused = false);
+/// A tape image's frames exactly as they are (punch); a text program is refused (refuse_text_program).
 SendInput open_image_to_send(const std::string& path, const std::string& format_id);
 /// Frames made whole before they are sent (a restart); name is for messages, code for a holes picture.
 SendInput frames_in_memory(std::vector<tape::Frame> frames, const std::string& name,

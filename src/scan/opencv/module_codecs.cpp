@@ -1,5 +1,9 @@
 // The picture module's files (picture_module.hpp): PNG, JPEG and TIFF through OpenCV's imgcodecs.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -8,16 +12,43 @@
 namespace tape::picture_module {
 namespace {
 
+// libpng says its errors on standard error itself ("libpng error: IHDR: CRC error") before OpenCV turns
+// them into an empty picture, which is said in words below: standard error points at /dev/null while a
+// picture is decoded (the program says nothing meanwhile).
+class QuietStandardError {
+public:
+    QuietStandardError() {
+        std::fflush(stderr);
+        saved_ = ::fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 3);
+        int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+        if (saved_ >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+        if (null >= 0) ::close(null);
+    }
+    ~QuietStandardError() {
+        if (saved_ < 0) return;
+        std::fflush(stderr);
+        ::dup2(saved_, STDERR_FILENO);
+        ::close(saved_);
+    }
+    QuietStandardError(const QuietStandardError&) = delete;
+    QuietStandardError& operator=(const QuietStandardError&) = delete;
+
+private:
+    int saved_ = -1;
+};
+
 cv::Mat decoded(std::span<const std::uint8_t> bytes, Failure& failure) {
     cv::Mat m;
+    QuietStandardError quiet;
     try {
         m = cv::imdecode(cv::Mat(1, static_cast<int>(bytes.size()), CV_8UC1, const_cast<std::uint8_t*>(bytes.data())),
                          cv::IMREAD_COLOR);
-    } catch (const cv::Exception& e) {
-        failure = {Errc::bad_image, "cannot decode the picture: " + e.msg};
+    } catch (const cv::Exception&) {
+        // OpenCV's message names its source lines and assertions, nothing a machinist can act on.
+        failure = {Errc::bad_image, "the picture cannot be decoded: its data is damaged or cut short"};
         return {};
     }
-    if (m.empty()) failure = {Errc::bad_image, "not a picture OpenCV can read (PNG, JPEG, TIFF, ...)"};
+    if (m.empty()) failure = {Errc::bad_image, "the picture cannot be decoded: its data is damaged or cut short"};
     return m;
 }
 

@@ -1,5 +1,6 @@
 # What tape scan refuses, and how: a strip too short to tell its feed holes (bad data, 1), a file that
-# is no picture (I/O, 3), a number of tracks tape does not have (usage, 2), an output that exists.
+# is no picture (bad data, 1: refused on its first bytes), a number of tracks tape does not have
+# (usage, 2), an output that exists.
 printf '%%\nN1\n' > short.txt
 $TAPE encode --leader 2 --trailer 2 short.txt -o short.ptp
 $TAPE render short.ptp -o short.png
