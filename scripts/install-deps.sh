@@ -34,6 +34,7 @@ features=(
   libopencv-core-dev
   libopencv-imgproc-dev
   libopencv-imgcodecs-dev
+  libcairo2-dev
 )
 test=(
   libgtest-dev

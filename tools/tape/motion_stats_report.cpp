@@ -1,0 +1,86 @@
+#include "motion_stats_report.hpp"
+
+#include <cstdio>
+
+#include "cli/json.hpp"
+#include "cli/messages.hpp"
+#include "cli/outputs.hpp"
+#include "tape/motion_stats.hpp"
+
+namespace cli {
+namespace {
+
+Json point_value(const tape::Point& p) { return Json{{"x", p.x}, {"y", p.y}, {"z", p.z}}; }
+
+Json tool_value(const tape::ToolFigures& t, bool rapid_known) {
+    Json v{{"tool", t.tool == -1 ? Json(nullptr) : Json(t.tool)},
+           {"moves", t.moves},
+           {"min", t.any ? point_value(t.min) : Json(nullptr)},
+           {"max", t.any ? point_value(t.max) : Json(nullptr)},
+           {"cutting_mm", t.cutting_mm},
+           {"rapid_mm", t.rapid_mm},
+           {"cutting_min", t.cutting_min},
+           {"rapid_min", rapid_known ? Json(t.rapid_min) : Json(nullptr)},
+           {"dwell_min", t.dwell_min},
+           {"untimed_feeds", t.untimed}};
+    return v;
+}
+
+std::string tool_text(const tape::ToolFigures& t, bool rapid_known) {
+    char buf[512];
+    std::string head = t.tool == -1 ? "all tools" : "T" + std::to_string(t.tool);
+    std::string out = head + ": " + std::to_string(t.moves) + " moves\n";
+    if (t.any) {
+        std::snprintf(buf, sizeof buf, "  X %.3f .. %.3f  Y %.3f .. %.3f  Z %.3f .. %.3f mm\n", t.min.x, t.max.x,
+                      t.min.y, t.max.y, t.min.z, t.max.z);
+        out += buf;
+    }
+    std::snprintf(buf, sizeof buf, "  cutting %.3f mm in %.2f min, rapid %.3f mm", t.cutting_mm, t.cutting_min,
+                  t.rapid_mm);
+    out += buf;
+    if (rapid_known) {
+        std::snprintf(buf, sizeof buf, " in %.2f min", t.rapid_min);
+        out += buf;
+    }
+    if (t.dwell_min > 0) {
+        std::snprintf(buf, sizeof buf, ", dwell %.2f min", t.dwell_min);
+        out += buf;
+    }
+    out += "\n";
+    if (t.untimed) out += "  " + std::to_string(t.untimed) + " feed move(s) not timed (no feed known)\n";
+    return out;
+}
+
+}  // namespace
+
+void run_motion_stats(const std::string& input, const ProgramSource& source, const MotionArgs& motion,
+                      const StatsArgs& args) {
+    tape::MotionStats stats(args.rapid_mm_per_min);
+    MotionRead read = read_motion(input, source, motion, stats);
+    const tape::MotionFigures& f = stats.figures();
+    bool rapid_known = args.rapid_mm_per_min > 0;
+    std::string out;
+    if (args.json) {
+        Json tools = Json::array();
+        for (const auto& t : f.tools) tools.push_back(tool_value(t, rapid_known));
+        out = json_text(Json{{"tools", tools},
+                             {"total", tool_value(f.total, rapid_known)},
+                             {"not_simulated", f.not_simulated},
+                             {"unknown_place", f.unknown}}) +
+              "\n";
+    } else {
+        for (const auto& t : f.tools) out += tool_text(t, rapid_known);
+        if (f.tools.size() > 1) out += tool_text(f.total, rapid_known);
+        if (!rapid_known) out += "rapid time: give the machine's rapid rate with --rapid MM/MIN\n";
+    }
+    write_output("-", out, false, false);
+    if (f.not_simulated)
+        say(read.name,
+            std::to_string(f.not_simulated) + " block(s) not simulated: the figures leave out what the tool did there");
+    if (f.unknown)
+        say(read.name,
+            std::to_string(f.unknown) + " move(s) with the tool's place not known: not in the least and most");
+    end_motion(read);
+}
+
+}  // namespace cli
