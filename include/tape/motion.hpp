@@ -36,16 +36,16 @@ struct ModalState {
     bool arc_incremental = true;  ///< I/J/K from the start point (LinuxCNC G91.1; absolute with G90.1)
     bool diameter = false;        ///< lathe X in diameters (LinuxCNC G7; Fanuc lathes by default)
     Plane plane = Plane::xy;
-    int motion = -1;         ///< the motion G code in force (0, 1, 2, 3, 33, 81..89, ...), -1 none yet
-    int work_offset = 54;    ///< G54..G59 (work coordinates whose values live in the control, not on tape)
-    bool feed_per_rev = false;  ///< G95 (Fanuc M, LinuxCNC) / G99 (Fanuc lathe): feed in mm per revolution
-    double feed = 0;         ///< the programmed feed, mm/min (or mm/rev with feed_per_rev); 0 none yet
-    double speed = 0;        ///< S as a value (rev/min, or m/min with constant surface speed)
+    int motion = -1;                ///< the motion G code in force (0, 1, 2, 3, 33, 81..89, ...), -1 none yet
+    int work_offset = 54;           ///< G54..G59 (work coordinates whose values live in the control, not on tape)
+    bool feed_per_rev = false;      ///< G95 (Fanuc M, LinuxCNC) / G99 (Fanuc lathe): feed in mm per revolution
+    double feed = 0;                ///< the programmed feed, mm/min (or mm/rev with feed_per_rev); 0 none yet
+    double speed = 0;               ///< S as a value (rev/min, or m/min with constant surface speed)
     bool constant_surface = false;  ///< G96
-    int spindle = 5;         ///< M3, M4 or M5
-    int coolant = 9;         ///< M7, M8 or M9
-    int tool = 0;            ///< the tool in the spindle or turret (T, after M06 where the dialect needs it)
-    bool retract_to_r = false;  ///< G99 on a mill: canned cycles return to R, not to the initial level (G98)
+    int spindle = 5;                ///< M3, M4 or M5
+    int coolant = 9;                ///< M7, M8 or M9
+    int tool = 0;                   ///< the tool in the spindle or turret (T, after M06 where the dialect needs it)
+    bool retract_to_r = false;      ///< G99 on a mill: canned cycles return to R, not to the initial level (G98)
 };
 
 enum class MoveKind : std::uint8_t {
@@ -64,27 +64,30 @@ enum class MoveKind : std::uint8_t {
 /// One canonical move (or event) of the program, carrying the block it came from.
 struct Move {
     MoveKind kind = MoveKind::rapid;
-    Point start{}, end{};        ///< where the tool stood before and after (mm, work coordinates)
-    unsigned known = all_axes;   ///< axes of start and end that are known (AxisBit)
+    Point start{}, end{};           ///< where the tool stood before and after (mm, work coordinates)
+    unsigned known = all_axes;      ///< axes of start and end that are known (AxisBit)
+    unsigned end_known = all_axes;  ///< axes of end that are known (an axis set absolutely from unknown)
     // Arcs:
-    Point centre{};              ///< in the arc's plane; its third coordinate is start's
-    bool clockwise = false;      ///< as seen from the positive end of the plane's normal axis
-    int turns = 0;               ///< whole extra turns (a full circle by I/J is turns 1 with start == end)
-    double radius = 0;           ///< from centre to start
-    double end_radius = 0;       ///< from centre to end (differs from radius by what the control tolerates)
+    Point centre{};          ///< in the arc's plane; its third coordinate is start's
+    bool clockwise = false;  ///< as seen from the positive end of the plane's normal axis
+    int turns = 0;           ///< whole extra turns (a full circle by I/J is turns 1 with start == end)
+    double radius = 0;       ///< from centre to start
+    double end_radius = 0;   ///< from centre to end (differs from radius by what the control tolerates)
     // Other kinds:
-    double seconds = 0;          ///< dwell
-    int code = 0;                ///< tool, spindle, coolant, stop or end code
-    std::string note;            ///< not_simulated: what is not simulated and why, in a machinist's words
+    double seconds = 0;  ///< dwell
+    int code = 0;        ///< tool, spindle, coolant, stop or end code
+    std::string note;    ///< not_simulated: what is not simulated and why, in a machinist's words
     // Where it came from:
-    std::uint64_t block = 0;     ///< Block::ordinal of the block that made it
-    Location where{};            ///< the block's first character (frame when from a tape)
+    std::uint64_t block = 0;                    ///< Block::ordinal of the block that made it
+    Location where{};                           ///< the block's first character (frame when from a tape)
     std::optional<std::uint64_t> last_frame{};  ///< the block's last frame, when from a tape
-    int depth = 0;               ///< 0 in the program; 1.. inside a subprogram or an expanded cycle
-    ModalState state{};          ///< the modal state the move ran under
+    int depth = 0;                              ///< 0 in the program; 1.. inside a subprogram or an expanded cycle
+    ModalState state{};                         ///< the modal state the move ran under
 
     /// Length of the tool's path in mm (arcs and helices along the curve; 0 for events).
     double length() const;
+    /// An arc's angle from start to end in radians, positive, whole turns included (0 for other kinds).
+    double sweep() const;
 };
 
 /// Receives the moves in program order. The Move passed is reused: copy what you keep.
@@ -102,13 +105,26 @@ public:
 /// How a program is interpreted: what the tape does not say about the control.
 struct MotionOptions {
     Dialect dialect = Dialect::automatic;
-    bool lathe = false;              ///< X-Z turning: X is a radius or (diameter) a diameter
-    bool diameter = true;            ///< on a lathe: X written as a diameter unless the program says (G8)
-    const FormatSpec* spec = nullptr;  ///< the control's word formats: the implied point of words without one
-    double arc_tolerance_mm = 0.001;      ///< an arc's end may be this far off its circle (the seeds' micron)
-    double arc_tolerance_relative = 0;    ///< plus this fraction of the radius (LinuxCNC: 0.001)
-    bool follow_subprograms = true;  ///< M98/M97/o-call into a program on the same tape
+    bool lathe = false;                 ///< X-Z turning: X is a radius or (diameter) a diameter
+    bool diameter = true;               ///< on a lathe: X written as a diameter unless the program says (G8)
+    const FormatSpec* spec = nullptr;   ///< the control's word formats: the implied point of words without one
+    double arc_tolerance_mm = 0.001;    ///< an arc's end may be this far off its circle (the seeds' micron)
+    double arc_tolerance_relative = 0;  ///< plus this fraction of the radius (LinuxCNC: 0.001)
+    bool follow_subprograms = true;     ///< M98/M97/o-call into a program on the same tape
+    /// LinuxCNC's rule: an arc is off when the radii differ by more than arc_tolerance_mm OR by more
+    /// than arc_tolerance_relative of the larger radius (interp_arc.cc). false: by more than their sum.
+    bool arc_tolerance_either = false;
+    bool block_skip = false;  ///< the block-skip switch is on: '/' blocks do not run
+    /// Not known whether the program is for a lathe (lint): a ZX-plane arc is checked with X read as a
+    /// radius and as a diameter, and is a finding only when neither reading puts its end on the circle.
+    bool lathe_unknown = false;
 };
+
+/// The options with the arc tolerance of dialect's controls: ГОСТ and none, the seeds' controller
+/// (1 µm, alarm 7.56); LinuxCNC, its defaults (0.0283 mm or 0.1 % of the radius, 0.0028 in as
+/// 0.0719 mm in G20 programs is not applied: the millimetre rule is taken); Fanuc, 0.02 mm (parameter
+/// No. 3410 is set per machine; give --arc-tolerance for yours).
+MotionOptions motion_options(Dialect dialect);
 
 /// The interpreter fed by the loader (ProgramLoader, load_each): blocks in, moves out, in bounded memory
 /// (subprograms on the tape are kept to be followed, nothing else).

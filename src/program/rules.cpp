@@ -11,7 +11,7 @@ constexpr std::string_view all = "gost fanuc linuxcnc";
 // What holds for every control, also when no known dialect fits (none): characters, parity, blocks, comments.
 constexpr std::string_view every = "gost fanuc linuxcnc none";
 
-constexpr std::array<Rule, 39> table = {{
+constexpr std::array<Rule, 42> table = {{
     // The loader: how characters become programs, blocks and words.
     {"unexpected-character", E, every, "ГОСТ 20999-83 tables 1-3; ISO 646 (every control reads 7-bit code)",
      "a character, or a run of characters, that no program of the dialect may hold outside comments (when no "
@@ -99,6 +99,18 @@ constexpr std::array<Rule, 39> table = {{
     {"arc-center", E, all, "ГОСТ 20999-83 §3.2; Fanuc and LinuxCNC: circular interpolation",
      "a G02/G03 block with an end point but no I, J, K (or, Fanuc and LinuxCNC, R)",
      "the controller cannot know the arc: it stops, or cuts a different path"},
+    {"arc-radius", E, all,
+     "controller manual excerpt §4.3, alarm 7.56 (to 1 µm, machine constant 55); LinuxCNC interp_arc.cc; Fanuc "
+     "parameter No. 3410",
+     "an arc by I, J, K whose radius to the end differs from its radius to the start by more than the control's "
+     "tolerance (--arc-tolerance), or whose radius is zero",
+     "the control stops with an alarm, or cuts a spiral that is not the part"},
+    {"arc-radius-short", E, all, "Fanuc and LinuxCNC: circular interpolation by R",
+     "an arc by R whose R is shorter than half the distance from its start to its end",
+     "no circle of that radius reaches the end point: the control alarms"},
+    {"arc-full-circle-r", E, all, "Fanuc and LinuxCNC: circular interpolation by R",
+     "an arc by R that ends where it starts",
+     "a full circle by R has no one centre: the control alarms or does nothing"},
     {"after-end", N, all, "ГОСТ 20999-83 §1.9", "text after M02/M30 that is not a new program",
      "the controller does not read it: it is not part of the program"},
     {"spec-address", E, all, "ГОСТ 20999-83 §9", "an address the controller format does not have",

@@ -1,0 +1,59 @@
+// An arc's end on its circle, to the control's tolerance (MotionOptions): the radius to the start and
+// the radius to the end may differ by so much. Worded as LinuxCNC words its error, with both radii.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "motion/machine.hpp"
+
+namespace tape {
+
+namespace {
+
+double at(const Point& p, int i) { return i == 0 ? p.x : i == 1 ? p.y : p.z; }
+
+std::string fixed(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4f", v);
+    return b;
+}
+
+std::string point(const Point& p, int u, int v) {
+    return std::string("(") + "XYZ"[u] + fixed(at(p, u)) + "," + "XYZ"[v] + fixed(at(p, v)) + ")";
+}
+
+}  // namespace
+
+bool MotionMachine::arc_off(double r1, double r2) const {
+    double diff = std::fabs(r1 - r2), r = std::max(r1, r2);
+    double slack = 1e-9 * (1 + r);  // what a double loses on the way: not the control's tolerance
+    if (opt_.arc_tolerance_either)
+        return diff > opt_.arc_tolerance_mm + slack || diff > opt_.arc_tolerance_relative * r + slack;
+    return diff > opt_.arc_tolerance_mm + opt_.arc_tolerance_relative * r + slack;
+}
+
+void MotionMachine::check_arc(int u, int v) {
+    double r1 = mv_.radius, r2 = mv_.end_radius;
+    if (r1 < 1e-6 || r2 < 1e-6) {
+        finding("arc-radius", "zero-radius arc: start=" + point(mv_.start, u, v) + " center=" +
+                                  point(mv_.centre, u, v) + " end=" + point(mv_.end, u, v) + " (the control alarms)");
+        return;
+    }
+    if (!arc_off(r1, r2)) return;
+    if (opt_.lathe_unknown && st.plane == Plane::zx && v == 0) {
+        // X may be a lathe's diameter: the same words with X halved, I still a radius.
+        double half_s = mv_.start.x / 2, half_e = mv_.end.x / 2, i = mv_.centre.x - mv_.start.x;
+        double rd2 = std::hypot(mv_.end.z - mv_.centre.z, half_e - (half_s + i));
+        if (!arc_off(r1, rd2)) return;
+    }
+    std::string tolerance = fixed(opt_.arc_tolerance_mm) + " mm";
+    if (opt_.arc_tolerance_relative > 0)
+        tolerance += std::string(opt_.arc_tolerance_either ? " or " : " + ") +
+                     fixed(opt_.arc_tolerance_relative * 100) + " % of the radius";
+    finding("arc-radius", "radius to end of arc differs from radius to start: start=" + point(mv_.start, u, v) +
+                              " center=" + point(mv_.centre, u, v) + " end=" + point(mv_.end, u, v) +
+                              " r1=" + fixed(r1) + " r2=" + fixed(r2) + " difference=" + fixed(std::fabs(r1 - r2)) +
+                              " mm; the control allows " + tolerance);
+}
+
+}  // namespace tape

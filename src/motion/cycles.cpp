@@ -1,0 +1,139 @@
+// Canned cycles expanded into their moves (depth 1): drilling G73/G81-G89 in G17 with G98/G99 (Fanuc
+// and LinuxCNC manuals: initial level, R level, bottom; G91 takes R from the initial level and Z from
+// R), and a Fanuc lathe's single cycles G90 (turning), G92 (thread) and G94 (facing).
+#include <algorithm>
+#include <cmath>
+
+#include "motion/machine.hpp"
+
+namespace tape {
+
+using namespace motion;
+
+// One move of a cycle.
+void MotionMachine::leg(MoveKind kind, const Point& to, unsigned to_known) {
+    begin(kind);
+    mv_.depth = 1;
+    mv_.end = to;
+    mv_.end_known = to_known;
+    emit();
+    pos = to;
+    known = to_known;
+}
+
+// A cycle's word in mm: false (said) when the block gives it in a way that cannot be read.
+bool MotionMachine::cycle_value(char letter, double& value) {
+    if (!w_.has(letter)) return true;
+    if (!w_.ok(letter)) {
+        not_simulated("the cycle's " + w_.word_of(letter)->text + " cannot be read: the cycle is not simulated",
+                      all_axes);
+        return false;
+    }
+    value = w_.get(letter) * scale();
+    return true;
+}
+
+void MotionMachine::drill_cycle(const Point& end, unsigned end_known, unsigned named) {
+    if (st.plane != Plane::xy) {
+        not_simulated("a canned cycle (G" + std::to_string(cycle_) + ") outside the XY plane is not simulated",
+                      all_axes);
+        return;
+    }
+    double r = cycle_r_, z = cycle_z_, q = cycle_q_;
+    if (!cycle_value('R', r) || !cycle_value('Z', z) || !cycle_value('Q', q)) return;
+    if (w_.has('R')) cycle_r_ = r, cycle_r_ok_ = true;
+    if (w_.has('Z')) cycle_z_ = z, cycle_z_ok_ = true;
+    if (w_.has('Q')) cycle_q_ = q;
+    if (w_.ok('P')) cycle_p_ = w_.get('P');
+    int repeat = 1;
+    char count = w_.ok('K') ? 'K' : w_.ok('L') ? 'L' : 0;
+    if (count) repeat = static_cast<int>(std::clamp(w_.get(count), 0.0, 1e6));
+    if (!cycle_r_ok_ || !cycle_z_ok_ || repeat > 10000) {
+        not_simulated(repeat > 10000 ? "a canned cycle repeated more than 10000 times is not drawn"
+                                     : "a canned cycle without its R or Z level: the control stops here",
+                      all_axes);
+        return;
+    }
+    // G91: R from the initial level, Z from R.
+    bool inc = st.incremental;
+    double r_level = inc ? initial_z_ + cycle_r_ : cycle_r_;
+    double bottom = inc ? r_level + cycle_z_ : cycle_z_;
+    bool z_known = inc ? initial_known_ : true;
+    unsigned zbit = z_known ? unsigned(axis_z) : 0u;
+    Point step{end.x - pos.x, end.y - pos.y, 0};
+    for (int hole = 0; hole < repeat; ++hole) {
+        Point at = pos;
+        unsigned k = known;
+        if (named & (axis_x | axis_y)) {
+            if (hole == 0)
+                at.x = end.x, at.y = end.y, k = (k & ~(axis_x | axis_y)) | (end_known & (axis_x | axis_y));
+            else if (inc)
+                at.x += step.x, at.y += step.y;
+            leg(MoveKind::rapid, at, k);
+        }
+        at.z = r_level;
+        leg(MoveKind::rapid, at, (known & ~axis_z) | zbit);
+        double q_mm = std::fabs(cycle_q_);
+        bool pecks = (cycle_ == 83 || cycle_ == 73) && q_mm > 0 && (r_level - bottom) / q_mm < 10000;
+        for (double depth = r_level; pecks && depth - q_mm > bottom;) {
+            depth -= q_mm;
+            at.z = depth;
+            leg(MoveKind::linear, at, known);
+            if (cycle_ == 83) {
+                at.z = r_level;
+                leg(MoveKind::rapid, at, known);
+                at.z = depth;
+                leg(MoveKind::rapid, at, known);
+            }
+        }
+        at.z = bottom;
+        leg(MoveKind::linear, at, known);
+        if (cycle_ == 82 || cycle_ == 89 || cycle_ == 88) {
+            begin(MoveKind::dwell);
+            mv_.depth = 1;
+            double s = cycle_p_ / (dialect_ == Dialect::fanuc ? 1000 : 1);
+            mv_.seconds = std::isfinite(s) && s > 0 ? s : 0;
+            emit();
+        }
+        bool feed_out = cycle_ == 84 || cycle_ == 74 || cycle_ == 85 || cycle_ == 89;
+        double top = st.retract_to_r ? r_level : initial_z_;
+        unsigned top_known = st.retract_to_r ? zbit : (initial_known_ ? unsigned(axis_z) : 0u);
+        if (feed_out) {
+            at.z = r_level;
+            leg(MoveKind::linear, at, (known & ~axis_z) | zbit);
+        }
+        if (!feed_out || top != r_level) {
+            at.z = top;
+            leg(MoveKind::rapid, at, (known & ~axis_z) | top_known);
+        }
+    }
+}
+
+void MotionMachine::lathe_cycle(int code, const Point& end, unsigned end_known) {
+    unsigned xz = axis_x | axis_z;
+    if ((known & xz) != xz || (end_known & xz) != xz) {
+        not_simulated("G" + std::to_string(code) + " from a place not known: the cycle is not simulated", xz);
+        return;
+    }
+    double taper = 0;
+    if (!cycle_value('R', taper)) return;
+    Point s = pos, a = pos, b = end, c = pos;
+    MoveKind cut = MoveKind::linear;
+    if (code == 94) {  // facing: Z in, X across, Z out, X back
+        a.z = end.z + taper;
+        b = Point{end.x, pos.y, end.z};
+        leg(MoveKind::rapid, a, known);
+        leg(cut, b, known);
+        c = Point{end.x, pos.y, s.z};
+        leg(cut, c, known);
+    } else {  // G90 turning, G92 thread: X in, Z along, X out, Z back
+        a.x = end.x + taper;
+        leg(MoveKind::rapid, a, known);
+        leg(cut, Point{end.x, pos.y, end.z}, known);
+        c = Point{s.x, pos.y, end.z};
+        leg(code == 92 ? MoveKind::rapid : cut, c, known);
+    }
+    leg(MoveKind::rapid, s, known);
+}
+
+}  // namespace tape

@@ -1,0 +1,118 @@
+// The interpreter's state machine (tape/motion.hpp): the modal state and the tool's place, block by
+// block. machine.cpp runs a block, modal.cpp reads its G and M codes, axes.cpp its end point,
+// arcs.cpp and cycles.cpp make the moves of arcs and canned cycles.
+#pragma once
+
+#include <string>
+
+#include "motion/words.hpp"
+#include "tape/motion.hpp"
+
+namespace tape {
+
+namespace motion {
+
+/// What a G code does, for the interpreter.
+enum class GKind : std::uint8_t {
+    unknown,       // not in the table: not simulated
+    ignore,        // changes nothing the interpreter draws (exact stop, compensation, path mode)
+    motion,        // G00-G03, threads (G32/G33): group 01
+    cycle,         // canned drilling cycles
+    cycle_cancel,  // G80
+    dwell,
+    plane,
+    units,
+    distance,
+    arc_distance,  // LinuxCNC G90.1/G91.1
+    diameter,      // LinuxCNC G7/G8
+    work_offset,
+    feed_mode,
+    speed_mode,
+    cycle_return,  // G98/G99 on a mill
+    set_coords,    // G92 (G50 on a Fanuc lathe): the tool's place gets the values given
+    local_coords,  // G52
+    reset_coords,  // G92.1/G92.2/G92.3
+    reference,     // G28/G30: to a place the control keeps
+    machine,       // G53: a move in machine coordinates, this block only
+    data_setting,  // G10
+    lathe_cycle,   // Fanuc lathe G90/G92/G94 single cycles
+    not_drawn,     // known, but its moves are not simulated (multiple repetitive cycles, probing, splines)
+};
+
+GKind classify(int code10, Dialect dialect, bool lathe);
+
+/// The G code as written: 10 → "G01"? no: "G1"; 901 → "G90.1".
+std::string g_name(int code10);
+
+}  // namespace motion
+
+class MotionMachine {
+public:
+    MotionMachine(MotionVisitor& out, const MotionOptions& options);
+
+    void dialect(Dialect d);
+    void program_start(const Program& header);
+    void block(const Block& b);
+
+    Point pos{};
+    unsigned known = 0;
+    ModalState st{};
+
+private:
+    // machine.cpp
+    void reset();
+    bool statements(const Block& b);
+    void run(const Block& b);
+    void begin(MoveKind kind);
+    void emit();
+    void event(MoveKind kind, int code);
+    void not_simulated(std::string note, unsigned lost);
+    void finding(std::string_view rule, std::string message);
+    // modal.cpp
+    bool g_codes();
+    void apply_g(int code, motion::GKind kind);
+    void values();
+    void events_before();
+    void events_after();
+    // axes.cpp
+    bool target(Point& end, unsigned& end_known, unsigned& named);
+    double scale() const { return st.inch ? 25.4 : 1.0; }
+    void straight(MoveKind kind, const Point& end, unsigned end_known);
+    void coordinates(motion::GKind kind, const Point& end, unsigned end_known, unsigned named);
+    void reference(motion::GKind kind, const Point& end, unsigned end_known, unsigned named);
+    void motion_block();
+    // arcs.cpp
+    void arc(const Point& end, unsigned end_known);
+    // arc_check.cpp
+    void check_arc(int u, int v);
+    bool arc_off(double r1, double r2) const;
+    // cycles.cpp
+    void drill_cycle(const Point& end, unsigned end_known, unsigned named);
+    void lathe_cycle(int code, const Point& end, unsigned end_known);
+    void leg(MoveKind kind, const Point& to, unsigned to_known);
+    bool cycle_value(char letter, double& value);
+
+    MotionVisitor& out_;
+    MotionOptions opt_;
+    Dialect dialect_ = Dialect::gost;
+    bool fanuc_lathe_ = false;
+    motion::NumberRules rules_{};
+    motion::BlockWords w_{};
+    Move mv_{};
+    const Block* block_ = nullptr;
+    int group01_ = -1;  // the motion G code of group 01 in force
+    int cycle_ = -1;    // the canned cycle in force, -1 none
+    int once_ = -1;     // a one-block G code with its own axis words (G28, G53, G92, G10, G52, G04)
+    motion::GKind once_kind_ = motion::GKind::ignore;
+    int lathe_cycle_ = -1;  // Fanuc lathe G90/G92/G94 in force
+    bool program_points_ = false;
+    int sub_depth_ = 0;  // inside LinuxCNC o-sub definitions: not run where written
+    bool tool_changed_ = false, end_seen_ = false;
+    int pending_tool_ = 0;
+    // Canned cycles: the level the tool came from, and R, Z, Q, P kept from block to block.
+    double initial_z_ = 0, cycle_r_ = 0, cycle_z_ = 0, cycle_q_ = 0, cycle_p_ = 0;
+    bool initial_known_ = false, cycle_r_ok_ = false, cycle_z_ok_ = false;
+    Point local_{};  // G52's shift from the work offset's zero
+};
+
+}  // namespace tape

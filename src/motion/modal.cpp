@@ -1,0 +1,322 @@
+// G and M codes: which each is for the interpreter (per dialect; a lathe reads some Fanuc codes as its
+// own), and the modal state and events they make.
+#include <string>
+
+#include "motion/machine.hpp"
+
+namespace tape {
+
+using namespace motion;
+
+namespace motion {
+
+namespace {
+
+GKind fanuc_lathe(int c) {
+    switch (c) {
+        case 900:
+        case 920:
+        case 940:
+            return GKind::lathe_cycle;  // turning, thread, facing (G-code system A)
+        case 500:
+            return GKind::set_coords;
+        case 980:
+        case 990:
+            return GKind::feed_mode;
+        case 700:
+        case 710:
+        case 720:
+        case 730:
+        case 740:
+        case 750:
+        case 760:
+            return GKind::not_drawn;
+        case 910:
+        case 930:
+        case 950:
+            return GKind::unknown;
+        default:
+            return GKind::ignore;  // not lathe-specific: the common table answers
+    }
+}
+
+GKind common(int c) {
+    switch (c) {
+        case 0:
+        case 10:
+        case 20:
+        case 30:
+            return GKind::motion;
+        case 40:
+            return GKind::dwell;
+        case 90:
+        case 400:
+        case 410:
+        case 420:
+        case 430:
+        case 440:
+        case 490:
+        case 610:
+        case 640:
+        case 670:
+        case 690:
+        case 150:
+        case 501:  // exact stop, compensation, path mode, cancels
+            return GKind::ignore;
+        case 170:
+        case 180:
+        case 190:
+            return GKind::plane;
+        case 280:
+        case 300:
+            return GKind::reference;
+        case 530:
+            return GKind::machine;
+        case 540:
+        case 550:
+        case 560:
+        case 570:
+        case 580:
+        case 590:
+            return GKind::work_offset;
+        case 800:
+            return GKind::cycle_cancel;
+        case 810:
+        case 820:
+        case 830:
+        case 840:
+        case 850:
+        case 860:
+        case 880:
+        case 890:
+            return GKind::cycle;
+        case 900:
+        case 910:
+            return GKind::distance;
+        case 920:
+            return GKind::set_coords;
+        case 930:
+        case 940:
+        case 950:
+            return GKind::feed_mode;
+        case 960:
+        case 970:
+            return GKind::speed_mode;
+        case 980:
+        case 990:
+            return GKind::cycle_return;
+        case 100:
+            return GKind::data_setting;
+        case 50:
+        case 51:
+        case 52:
+        case 60:
+        case 310:
+        case 381:
+        case 382:
+        case 383:
+        case 384:
+        case 385:
+        case 650:
+        case 660:
+        case 661:
+        case 680:
+        case 511:
+        case 510:
+        case 120:
+        case 130:
+        case 160:
+        case 870:
+            return GKind::not_drawn;
+        default:
+            return GKind::unknown;
+    }
+}
+
+}  // namespace
+
+GKind classify(int c, Dialect d, bool lathe) {
+    if (lathe && d == Dialect::fanuc) {
+        GKind k = fanuc_lathe(c);
+        if (k != GKind::ignore) return k;
+    }
+    switch (d) {
+        case Dialect::gost:
+            if (c == 700 || c == 710) return GKind::units;
+            if (c == 330 || c == 340 || c == 350) return GKind::motion;  // threads: a straight feed move
+            if (c == 80) return GKind::ignore;                           // G08/G09: acceleration, deceleration
+            if (c == 200 || c == 210 || c == 520) return GKind::unknown;
+            break;
+        case Dialect::fanuc:
+            if (c == 200 || c == 210) return GKind::units;
+            if (c == 320 || c == 330) return GKind::motion;
+            if (c == 520) return GKind::local_coords;
+            if (c == 541) return GKind::work_offset;
+            if (c == 730 || c == 740 || c == 760) return GKind::cycle;  // peck, counter tapping, fine boring
+            if (c == 500) return GKind::ignore;                         // scaling off
+            break;
+        case Dialect::linuxcnc:
+            if (c == 200 || c == 210) return GKind::units;
+            if (c == 330) return GKind::motion;
+            if (c == 70 || c == 80) return GKind::diameter;
+            if (c == 901 || c == 911) return GKind::arc_distance;
+            if (c == 921 || c == 922 || c == 923) return GKind::reset_coords;
+            if (c == 520) return GKind::local_coords;
+            if (c == 591 || c == 592 || c == 593) return GKind::work_offset;
+            if (c == 730) return GKind::cycle;
+            if (c == 611 || c == 431 || c == 491 || c == 411 || c == 421) return GKind::ignore;
+            if (c == 331 || c == 760 || c == 700 || c == 710 || c == 720 || c == 51 || c == 52 || c == 21 || c == 31)
+                return GKind::not_drawn;
+            break;
+        default:
+            if (c == 200 || c == 210) return GKind::units;
+            if (c == 330) return GKind::motion;
+            break;
+    }
+    return common(c);
+}
+
+std::string g_name(int code10) {
+    std::string s = "G" + std::string(code10 < 100 ? "0" : "") + std::to_string(code10 / 10);
+    if (code10 % 10) s += "." + std::to_string(code10 % 10);
+    return s;
+}
+
+}  // namespace motion
+
+// The block's G codes into the modal state. False when one is not simulated: said, and the block's
+// motion is left out (its modal codes still count).
+bool MotionMachine::g_codes() {
+    once_ = -1;
+    std::string unknown;
+    for (int i = 0; i < w_.g_count; ++i) {
+        int c = w_.g[i];
+        GKind k = classify(c, dialect_, opt_.lathe);
+        if (k == GKind::unknown || k == GKind::not_drawn) {
+            if (!unknown.empty()) unknown += ", ";
+            unknown += g_name(c);
+            continue;
+        }
+        apply_g(c, k);
+    }
+    if (unknown.empty()) return true;
+    unsigned lost = 0;
+    for (char a : {'X', 'U'})
+        if (w_.has(a)) lost |= axis_x;
+    if (w_.has('Y') || w_.has('V')) lost |= axis_y;
+    if (w_.has('Z') || w_.has('W')) lost |= axis_z;
+    values();
+    events_before();
+    not_simulated(unknown + (unknown.find(',') == std::string::npos ? " is" : " are") +
+                      " not simulated: the interpreter does not draw what it does" +
+                      (lost ? ", and the tool's place on the axes this block names is unknown after it" : ""),
+                  lost);
+    events_after();
+    return false;
+}
+
+void MotionMachine::apply_g(int c, GKind k) {
+    switch (k) {
+        case GKind::motion:
+            group01_ = c / 10;
+            cycle_ = lathe_cycle_ = -1;
+            return;
+        case GKind::cycle:
+            if (cycle_ < 0) {
+                initial_z_ = pos.z;
+                initial_known_ = (known & axis_z) != 0;
+                cycle_r_ok_ = cycle_z_ok_ = false;
+            }
+            cycle_ = c / 10;
+            return;
+        case GKind::cycle_cancel:
+            cycle_ = -1;
+            if (dialect_ == Dialect::linuxcnc) group01_ = -1;  // G80 is LinuxCNC's motion mode "none"
+            return;
+        case GKind::plane:
+            st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
+            return;
+        case GKind::units:
+            st.inch = c == 200 || c == 700;
+            return;
+        case GKind::distance:
+            st.incremental = c == 910;
+            return;
+        case GKind::arc_distance:
+            st.arc_incremental = c == 911;
+            return;
+        case GKind::diameter:
+            st.diameter = c == 70;
+            return;
+        case GKind::work_offset:
+            if (c / 10 != st.work_offset) known = 0;  // the other offset's values are the control's
+            st.work_offset = c / 10;
+            return;
+        case GKind::feed_mode:
+            st.feed_per_rev = c == 950 || (fanuc_lathe_ && c == 990);
+            return;
+        case GKind::speed_mode:
+            st.constant_surface = c == 960;
+            return;
+        case GKind::cycle_return:
+            st.retract_to_r = c == 990;
+            return;
+        case GKind::lathe_cycle:
+            lathe_cycle_ = c / 10;
+            group01_ = -1;
+            return;
+        case GKind::ignore:
+            return;
+        default:
+            once_ = c;
+            once_kind_ = k;
+            return;
+    }
+}
+
+// F, S and T.
+void MotionMachine::values() {
+    if (w_.ok('F')) st.feed = w_.get('F') * (st.inch && !st.feed_per_rev ? 25.4 : st.inch ? 25.4 : 1.0);
+    if (w_.ok('S')) st.speed = w_.get('S');
+    if (w_.ok('T') && w_.get('T') >= 0 && w_.get('T') < 1e9) {
+        auto t = static_cast<int>(w_.get('T'));
+        pending_tool_ = fanuc_lathe_ && t >= 100 ? t / 100 : t;
+    }
+}
+
+void MotionMachine::events_before() {
+    bool lathe_turret = opt_.lathe && w_.ok('T');
+    if (w_.has_m(6) || lathe_turret) {
+        st.tool = pending_tool_;
+        event(MoveKind::tool_change, st.tool);
+    }
+    for (int i = 0; i < w_.m_count; ++i) {
+        int m = w_.m[i];
+        bool gost_both = dialect_ == Dialect::gost && (m == 13 || m == 14);  // ГОСТ table 7: spindle and coolant on
+        if (m == 3 || m == 4 || gost_both) {
+            st.spindle = m == 4 || m == 14 ? 4 : 3;
+            event(MoveKind::spindle, st.spindle);
+        }
+        if (m == 7 || m == 8 || gost_both) {
+            st.coolant = m == 7 ? 7 : 8;
+            event(MoveKind::coolant, st.coolant);
+        }
+    }
+}
+
+void MotionMachine::events_after() {
+    for (int i = 0; i < w_.m_count; ++i) {
+        int m = w_.m[i];
+        if (m == 5) st.spindle = 5, event(MoveKind::spindle, 5);
+        if (m == 9) st.coolant = 9, event(MoveKind::coolant, 9);
+        if (m == 0 || m == 1) event(MoveKind::stop, m);
+        bool call = (m == 98 || m == 97) && dialect_ != Dialect::linuxcnc;
+        if (call)
+            not_simulated(
+                "a subprogram call (M" + std::to_string(m) + ") is not followed: where it leaves the tool is not known",
+                all_axes);
+        if (m == 2 || m == 30 || (m == 99 && dialect_ == Dialect::fanuc)) event(MoveKind::program_end, m);
+    }
+}
+
+}  // namespace tape
