@@ -81,7 +81,12 @@ TEST(Plot, CollinearMovesBecomeOneSegmentAndRepeatedPassesOne) {
     tape::PlotPlan p = tape::plan_plot(path, options());
     std::size_t segments = 0;
     for (const auto& s : p.strokes) segments += s.count - 1;
-    EXPECT_EQ(segments, 1u + 4u) << p.strokes.size() << " strokes";
+    std::string drawn;
+    for (const auto& s : p.strokes)
+        for (std::uint32_t k = 0; k < s.count; ++k)
+            drawn += std::to_string(p.points[2 * (s.first + k)]) + "," +
+                     std::to_string(p.points[2 * (s.first + k) + 1]) + (k + 1 < s.count ? " " : "\n");
+    EXPECT_EQ(segments, 1u + 4u) << drawn;
 }
 
 TEST(Plot, MovesUnderAPixelAreDroppedButTheirWayIsKept) {

@@ -80,7 +80,8 @@ struct PlotOptions {
     bool diameter = false;    ///< lathe: X drawn as the diameter (the profile stretched twice across)
     int width = 1200;         ///< the picture's size in pixels (PNG) or points (SVG, PDF)
     int height = 900;
-    std::string title{};  ///< written in the picture's corner
+    std::string title{};     ///< written in the picture's corner
+    bool per_block = false;  ///< each stroke one block's moves (for the HTML page's hover)
 };
 
 /// What a picture is made of: strokes (polylines and arcs) in one style each, and text, in page

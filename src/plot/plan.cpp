@@ -139,7 +139,7 @@ PlotPlan plan_plot(const Toolpath& path, const PlotOptions& options) {
     plan.scale = page.scale();
     double unit = std::clamp(std::min(options.width, options.height) / 900.0, 1.0, 4.0);
     ToolColours tools;
-    plot::Strokes strokes(plan);
+    plot::Strokes strokes(plan, path.moves(), options.per_block);
     bool any_doubt = false;
     for (std::uint32_t i = 0; i < path.moves().size(); ++i) {
         const PathMove& m = path.moves()[i];

@@ -85,7 +85,8 @@ void Strokes::add_point(Open& o, Xy b) {
 void Strokes::line(std::uint16_t style, std::uint32_t move, Xy a, Xy b) {
     Open& o = open_[style];
     Built& into = built_[static_cast<int>(layer_of_[style])];
-    if (!o.open || std::abs(o.end.x - a.x) > 1e-6 || std::abs(o.end.y - a.y) > 1e-6) {
+    bool other_block = split_ && o.open && moves_[move].block != moves_[o.stroke.move].block;
+    if (!o.open || other_block || std::abs(o.end.x - a.x) > 1e-6 || std::abs(o.end.y - a.y) > 1e-6) {
         close(o, into);
         start(o, style, move, a);
     }
@@ -135,7 +136,7 @@ void Strokes::finish() {
         Built& into = built_[static_cast<int>(layer_of_[s])];
         if (o.open && o.pending) {
             std::size_t n = o.points.size();
-            if (o.end.x != o.points[n - 2] || o.end.y != o.points[n - 1]) add_point(o, o.end);
+            if (std::hypot(o.end.x - o.points[n - 2], o.end.y - o.points[n - 1]) > 0.01) add_point(o, o.end);
         }
         close(o, into);
     }

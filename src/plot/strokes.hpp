@@ -19,7 +19,10 @@ enum class Layer : std::uint8_t { rapid, feed, doubt };
 
 class Strokes {
 public:
-    explicit Strokes(PlotPlan& plan) : plan_(plan) {}
+    /// split_blocks: a polyline ends where the block changes, so that each stroke is one block's (for
+    /// the HTML page's hover); blocks: the moves' blocks (Toolpath::moves()).
+    Strokes(PlotPlan& plan, const std::vector<PathMove>& moves, bool split_blocks)
+        : plan_(plan), moves_(moves), split_(split_blocks) {}
 
     /// The index of style in the plan (added the first time).
     std::uint16_t style(Layer layer, const PlotStyle& style);
@@ -55,6 +58,8 @@ private:
     void count(std::uint32_t move);
 
     PlotPlan& plan_;
+    const std::vector<PathMove>& moves_;
+    bool split_;
     std::map<std::pair<std::uint8_t, std::uint32_t>, std::uint16_t> style_index_;
     std::vector<Layer> layer_of_;  // by style
     std::vector<Open> open_;       // by style: its polyline being drawn

@@ -52,7 +52,6 @@ void add_move(ToolFigures& t, const Move& m, double rapid_rate) {
         else if (length > 0)
             ++t.untimed;
     }
-    if ((m.known & all_axes) != all_axes) return;
     extend(t, m.start);
     extend(t, m.end);
     if (m.kind == MoveKind::arc) extend_arc(t, m);
@@ -83,7 +82,11 @@ void MotionStats::move(const Move& m) {
         default:
             return;
     }
-    if ((m.known & all_axes) != all_axes) ++f_.unknown;
+    // From a place not known (the program's first move), the length is not known either.
+    if ((m.known & all_axes) != all_axes) {
+        ++f_.unknown;
+        return;
+    }
     add_move(of(m.state.tool), m, rapid_);
     f_.total.tool = -1;
     add_move(f_.total, m, rapid_);

@@ -76,6 +76,7 @@ void write_plot(const PlotArgs& a, const MotionRead& read, const tape::Toolpath&
                 const std::vector<std::uint64_t>& doubtful) {
     std::string_view format = tape::plot_format_for_path(a.output);
     tape::PlotOptions o = plot_options(a, read.name);
+    o.per_block = format == "html";
     std::string bytes;
     try {
         tape::PlotPlan plan = tape::plan_plot(path, o);
@@ -108,10 +109,11 @@ void run(const PlotArgs& a) {
     std::vector<std::uint64_t> doubtful = plot_doubt_frames(a, read);
     path.mark_doubtful(doubtful);
     say_not_simulated(read.name, path.not_simulated(), path.not_simulated_count(), read.from_tape);
-    if (path.unknown_moves())
+    // The first move of a program comes from a place no tape says: said only when asked.
+    if (path.unknown_moves() && globals().verbosity > 0)
         say(read.name, std::to_string(path.unknown_moves()) +
-                           " move(s) not drawn: the tool's place was not known (an axis moved incrementally "
-                           "before it was set, or after a move not simulated)");
+                           " move(s) not drawn: the tool's place was not known (the first move, an axis moved "
+                           "incrementally before it was set, or after a move not simulated)");
     write_plot(a, read, path, doubtful);
     end_motion(read);
 }

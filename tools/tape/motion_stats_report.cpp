@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cli/globals.hpp"
 #include "cli/json.hpp"
 #include "cli/messages.hpp"
 #include "cli/outputs.hpp"
@@ -77,9 +78,10 @@ void run_motion_stats(const std::string& input, const ProgramSource& source, con
     if (f.not_simulated)
         say(read.name,
             std::to_string(f.not_simulated) + " block(s) not simulated: the figures leave out what the tool did there");
-    if (f.unknown)
-        say(read.name,
-            std::to_string(f.unknown) + " move(s) with the tool's place not known: not in the least and most");
+    if (f.unknown && globals().verbosity > 0)
+        say(read.name, std::to_string(f.unknown) +
+                           " move(s) from a place not known (the first, or after a move not simulated): "
+                           "not in the figures");
     end_motion(read);
 }
 
