@@ -20,11 +20,13 @@ namespace tape {
 /// frames it was read from are in doubt.
 struct PathMove {
     Point start{}, end{}, centre{};
-    MoveKind kind = MoveKind::linear;  ///< rapid, linear or arc
-    Plane plane = Plane::xy;           ///< arcs
-    bool clockwise = false;            ///< arcs, seen from the plane's normal axis
-    bool doubt = false;                ///< read from a frame that failed parity, was in doubt or guessed
-    int turns = 0;                     ///< arcs: whole extra turns
+    /// rapid, linear or arc; or not_simulated: a block the interpreter could not follow (a bad frame, a
+    /// macro value), marked at the place the tool last stood (start == end)
+    MoveKind kind = MoveKind::linear;
+    Plane plane = Plane::xy;  ///< arcs
+    bool clockwise = false;   ///< arcs, seen from the plane's normal axis
+    bool doubt = false;       ///< read from a frame that failed parity, was in doubt or guessed
+    int turns = 0;            ///< arcs: whole extra turns
     int tool = 0;
     std::uint64_t block = 0;                    ///< Block::ordinal
     std::uint64_t line = 0;                     ///< of the block's first character
@@ -40,9 +42,11 @@ public:
     explicit Toolpath(bool keep_blocks = false) : keep_blocks_(keep_blocks) {}
 
     void move(const Move& move) override;
+    void program_start(const Program& header) override;
     /// Moves read from any of frames (1-based, any order) are in doubt: drawn in the doubt colour.
     void mark_doubtful(std::vector<std::uint64_t> frames);
-    /// The block the interpreter is about to be given (keep_blocks: its text is kept for its moves).
+    /// The block the interpreter is about to be given: where its frames start (for mark_doubtful), and
+    /// with keep_blocks its text, kept for its moves.
     void note_block(const Block& block);
 
     const std::vector<PathMove>& moves() const { return moves_; }
@@ -56,7 +60,11 @@ public:
     std::uint64_t not_simulated_count() const { return not_simulated_count_; }
 
 private:
+    void keep(const Move& move);
+    std::uint64_t last_frame_of(const PathMove& move) const;
+
     std::vector<PathMove> moves_;
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> block_frames_;  // block ordinal, its first frame
     bool keep_blocks_;
     std::string texts_;                   // block texts, one after the other (keep_blocks)
     std::vector<std::uint32_t> text_at_;  // where each move's block text starts in texts_
@@ -64,6 +72,8 @@ private:
     std::string source_;
     std::uint64_t unknown_ = 0, not_simulated_count_ = 0;
     std::vector<Move> not_simulated_;
+    Point last_end_{};
+    bool has_last_ = false;  // last_end_ is where the tool stands
 };
 
 /// Which side the toolpath is seen from.

@@ -14,7 +14,8 @@
 namespace tape {
 namespace {
 
-constexpr std::uint32_t doubt_rgb = 0xe69a1c;  // tape render's "doubtful"
+constexpr std::uint32_t doubt_rgb = 0xe69a1c;          // tape render's "doubtful"
+constexpr std::uint32_t not_simulated_rgb = 0xe0302a;  // and its "parity error"
 constexpr std::uint32_t palette[] = {0x1f5fbf, 0x2a9d4a, 0x8e3fbf, 0x00a0a8, 0xb8327a,
                                      0x6b6b00, 0x4a4a4a, 0x0070ff, 0x7a4a1c, 0xd0308a};
 
@@ -61,20 +62,24 @@ private:
 };
 
 plot::Layer layer_of(const PathMove& m) {
-    if (m.doubt) return plot::Layer::doubt;
+    if (m.doubt || m.kind == MoveKind::not_simulated) return plot::Layer::doubt;
     return m.kind == MoveKind::rapid ? plot::Layer::rapid : plot::Layer::feed;
 }
 
 PlotStyle style_of(const PathMove& m, std::uint32_t colour, double unit) {
     if (m.doubt) return {doubt_rgb, static_cast<float>(2.5 * unit), m.kind == MoveKind::rapid};
+    if (m.kind == MoveKind::not_simulated) return {not_simulated_rgb, static_cast<float>(2 * unit), false};
     if (m.kind == MoveKind::rapid) return {colour, static_cast<float>(1.25 * unit), true};
     return {colour, static_cast<float>(2 * unit), false};
 }
 
 // A move seen on the page: an arc face on as an arc, any other arc as a polyline fine enough that it
 // strays less than a quarter unit, a line as a line.
-void lay_move(plot::Strokes& out, const plot::Page& page, const PathMove& m, std::uint16_t style, std::uint32_t i) {
+void lay_move(plot::Strokes& out, const plot::Page& page, const PathMove& m, std::uint16_t style, std::uint32_t i,
+              double unit) {
     plot::Xy a = page.at(m.start), b = page.at(m.end);
+    // A block not simulated: a ring where the tool stood.
+    if (m.kind == MoveKind::not_simulated) return out.arc(style, i, a, 6 * unit, 0, 2 * std::numbers::pi);
     if (m.kind != MoveKind::arc) return out.line(style, i, a, b);
     arcs::Sweep w = arcs::sweep_of(m.start, m.end, m.centre, m.plane, m.clockwise, m.turns);
     double r = std::max(w.r0, w.r1) * page.scale();
@@ -106,13 +111,14 @@ void lay_scale_bar(PlotPlan& plan, double scale, int height) {
     plan.texts.push_back({x1 + 6, y + 4, 12, 0x333333, text});
 }
 
-void lay_legend(PlotPlan& plan, const ToolColours& tools, bool any_doubt) {
+void lay_legend(PlotPlan& plan, const ToolColours& tools, bool any_doubt, bool any_not_simulated) {
     double x = plan.width - 20.0, y = plan.height - 16.0;
     auto put = [&](std::uint32_t rgb, std::string text) {
         x -= 8.0 * static_cast<double>(text.size()) + 14;
         plan.texts.push_back({x, y, 12, rgb, std::move(text)});
     };
     if (any_doubt) put(doubt_rgb, "in doubt");
+    if (any_not_simulated) put(not_simulated_rgb, "o not simulated");
     put(0x666666, "rapids dashed");
     std::vector<std::pair<std::size_t, int>> order;
     for (auto [tool, k] : tools.tools()) order.emplace_back(k, tool);
@@ -140,18 +146,19 @@ PlotPlan plan_plot(const Toolpath& path, const PlotOptions& options) {
     double unit = std::clamp(std::min(options.width, options.height) / 900.0, 1.0, 4.0);
     ToolColours tools;
     plot::Strokes strokes(plan, path.moves(), options.per_block);
-    bool any_doubt = false;
+    bool any_doubt = false, any_not_simulated = false;
     for (std::uint32_t i = 0; i < path.moves().size(); ++i) {
         const PathMove& m = path.moves()[i];
         any_doubt |= m.doubt;
+        any_not_simulated |= !m.doubt && m.kind == MoveKind::not_simulated;
         std::uint16_t style = strokes.style(layer_of(m), style_of(m, tools.of(m.tool), unit));
-        lay_move(strokes, page, m, style, i);
+        lay_move(strokes, page, m, style, i, unit);
     }
     strokes.finish();
     if (!options.title.empty()) plan.texts.push_back({20, 24, 14, 0x1b1b1b, options.title});
     plan.texts.push_back({20, 42, 11, 0x555555, std::string(page.axes_text())});
     lay_scale_bar(plan, page.scale(), options.height);
-    lay_legend(plan, tools, any_doubt);
+    lay_legend(plan, tools, any_doubt, any_not_simulated);
     return plan;
 }
 

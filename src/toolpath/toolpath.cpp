@@ -5,13 +5,21 @@
 
 namespace tape {
 
+// A block's frames run from its first to the frame before the next block's first (its end of block
+// included), as the loader gave them; the last block's to its move's last frame.
+std::uint64_t Toolpath::last_frame_of(const PathMove& m) const {
+    std::uint64_t last = std::max(*m.frame, m.last_frame.value_or(*m.frame));
+    auto next = std::upper_bound(block_frames_.begin(), block_frames_.end(), std::make_pair(m.block, UINT64_MAX));
+    if (next != block_frames_.end() && next->second > *m.frame) last = std::max(last, next->second - 1);
+    return last;
+}
+
 void Toolpath::mark_doubtful(std::vector<std::uint64_t> frames) {
     std::sort(frames.begin(), frames.end());
     for (auto& m : moves_) {
         if (!m.frame || m.doubt) continue;
-        std::uint64_t first = *m.frame, last = std::max(first, m.last_frame.value_or(first));
-        auto it = std::lower_bound(frames.begin(), frames.end(), first);
-        m.doubt = it != frames.end() && *it <= last;
+        auto it = std::lower_bound(frames.begin(), frames.end(), *m.frame);
+        m.doubt = it != frames.end() && *it <= last_frame_of(m);
     }
 }
 
@@ -19,13 +27,27 @@ void Toolpath::move(const Move& m) {
     if (m.kind == MoveKind::not_simulated) {
         if (not_simulated_.size() < 100) not_simulated_.push_back(m);
         ++not_simulated_count_;
-        return;
+        if (!has_last_) return;
+        // Marked where the tool stood: where on the part the picture stops being sure.
+        Move here = m;
+        here.start = here.end = last_end_;
+        has_last_ = false;
+        return keep(here);
     }
     if (m.kind != MoveKind::rapid && m.kind != MoveKind::linear && m.kind != MoveKind::arc) return;
     if ((m.known & all_axes) != all_axes) {
         ++unknown_;
+        has_last_ = false;
         return;
     }
+    last_end_ = m.end;
+    has_last_ = true;
+    keep(m);
+}
+
+void Toolpath::program_start(const Program&) { has_last_ = false; }
+
+void Toolpath::keep(const Move& m) {
     PathMove p{.start = m.start,
                .end = m.end,
                .centre = m.centre,
@@ -52,6 +74,8 @@ void Toolpath::move(const Move& m) {
 }
 
 void Toolpath::note_block(const Block& block) {
+    if (block.where.frame && (block_frames_.empty() || block_frames_.back().first < block.ordinal))
+        block_frames_.emplace_back(block.ordinal, *block.where.frame);
     if (!keep_blocks_) return;
     source_block_ = block.ordinal;
     source_ = block.source;
