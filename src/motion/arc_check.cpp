@@ -24,6 +24,20 @@ std::string point(const Point& p, int u, int v) {
 
 }  // namespace
 
+// Whether the arc's words can be checked: not a lathe's arc read in the mill's plane (lint, not knowing
+// the machine, with a plane the program never chose and Z or K words in XY); not Fanuc values with and
+// without points mixed (X92 is 0.092 mm as shipped and 92 mm with calculator-type input, parameter DPI:
+// the program's writer had one in mind that the tape does not say).
+bool MotionMachine::checkable_arc(unsigned plane_bits, char cu, char cv) const {
+    if (opt_.lathe_unknown && !plane_set_ && st.plane == Plane::xy && (w_.has('Z') || w_.has('K'))) return false;
+    if (dialect_ != Dialect::fanuc) return true;
+    bool positions_scaled = ((scaled_ | scaled_start_) & plane_bits) != 0;
+    bool words_scaled = w_.scaled(cu) || w_.scaled(cv);
+    bool words_pointed =
+        (w_.ok(cu) && !w_.scaled(cu) && w_.get(cu) != 0) || (w_.ok(cv) && !w_.scaled(cv) && w_.get(cv) != 0);
+    return !((positions_scaled && words_pointed) || (words_scaled && !positions_scaled));
+}
+
 bool MotionMachine::arc_off(double r1, double r2) const {
     double diff = std::fabs(r1 - r2), r = std::max(r1, r2);
     double slack = 1e-9 * (1 + r);  // what a double loses on the way: not the control's tolerance

@@ -97,7 +97,10 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
             return;
         }
         double ar = std::fabs(r);
-        if (half - ar > opt_.arc_tolerance_mm)
+        // X may be a lathe's diameter (lint, not knowing the machine): the chord with X halved.
+        double half_d = ax.v == 0 ? std::hypot(eu - su, (ev - sv) / 2) / 2 : half;
+        bool short_either = !(opt_.lathe_unknown && st.plane == Plane::zx && half_d - ar <= opt_.arc_tolerance_mm);
+        if (half - ar > opt_.arc_tolerance_mm && short_either && checkable_arc(plane_bits, 'R', 'R'))
             finding("arc-radius-short", "R" + mm(r) + " is shorter than half the chord (" + mm(half) +
                                             " mm): no arc of that radius reaches the end point (the control alarms)");
         if (half > ar) ar = half;
@@ -126,7 +129,7 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
     bool closed = std::hypot(eu - su, ev - sv) < 1e-9;
     int p = w_.ok('P') && dialect_ == Dialect::linuxcnc ? static_cast<int>(std::clamp(w_.get('P'), 1.0, 1e6)) : 1;
     mv_.turns = p - 1 + (closed && !by_r ? 1 : 0);
-    if (ends_known && !by_r) check_arc(ax.u, ax.v);
+    if (ends_known && !by_r && checkable_arc(plane_bits, ax.cu, ax.cv)) check_arc(ax.u, ax.v);
     emit();
     pos = end;
     known = end_known;

@@ -30,6 +30,7 @@ bool MotionMachine::target(Point& end, unsigned& end_known, unsigned& named) {
     end = pos;
     end_known = known;
     named = 0;
+    scaled_start_ = scaled_;
     std::string unread;
     unsigned lost = 0;
     static constexpr char absolute[3] = {'X', 'Y', 'Z'};
@@ -51,7 +52,8 @@ bool MotionMachine::target(Point& end, unsigned& end_known, unsigned& named) {
             if (incremental)
                 at(end, i) += v;  // unknown stays unknown
             else
-                at(end, i) = v, end_known |= bit;
+                at(end, i) = v, end_known |= bit, scaled_ &= ~bit;
+            if (w_.scaled(letter)) scaled_ |= bit;
         }
     }
     if (unread.empty()) return true;
@@ -98,6 +100,11 @@ void MotionMachine::motion_block() {
     }
     if (!target(end, end_known, named)) return;
     if (once_ >= 0) return coordinates(once_kind_, end, end_known, named);
+    if (!transform_.empty() && named) {
+        not_simulated(transform_ + " (a coordinate transformation) is in force: where this move goes is not simulated",
+                      named);
+        return;
+    }
     if (lathe_cycle_ >= 0 && named) return lathe_cycle(lathe_cycle_, end, end_known);
     if (cycle_ >= 0 && (named || w_.has('R') || w_.has('Z'))) return drill_cycle(end, end_known, named);
     if (!named) return;

@@ -39,6 +39,9 @@ void MotionMachine::reset() {
     tool_changed_ = end_seen_ = false;
     pending_tool_ = 0;
     local_ = Point{};
+    transform_.clear();
+    plane_set_ = false;
+    scaled_ = 0;
     initial_known_ = cycle_r_ok_ = cycle_z_ok_ = false;
 }
 
@@ -63,6 +66,7 @@ void MotionMachine::block(const Block& b) {
 bool MotionMachine::statements(const Block& b) {
     for (const auto& s : b.statements) {
         if (s.kind == Statement::Kind::o_word) {
+            if (s.keyword.empty()) continue;  // "O0000 (NAME)": a program's number, nothing runs
             if (s.keyword == "sub") ++sub_depth_;
             if (s.keyword == "endsub" && sub_depth_ > 0) {
                 --sub_depth_;

@@ -37,6 +37,8 @@ enum class GKind : std::uint8_t {
     data_setting,  // G10
     lathe_cycle,   // Fanuc lathe G90/G92/G94 single cycles
     not_drawn,     // known, but its moves are not simulated (multiple repetitive cycles, probing, splines)
+    transform,     // polar coordinates, rotation, scaling, mirror: every move after it is not simulated
+    transform_off,
 };
 
 GKind classify(int code10, Dialect dialect, bool lathe);
@@ -85,6 +87,7 @@ private:
     void arc(const Point& end, unsigned end_known);
     // arc_check.cpp
     void check_arc(int u, int v);
+    bool checkable_arc(unsigned plane_bits, char cu, char cv) const;
     bool arc_off(double r1, double r2) const;
     // cycles.cpp
     void drill_cycle(const Point& end, unsigned end_known, unsigned named);
@@ -112,7 +115,11 @@ private:
     // Canned cycles: the level the tool came from, and R, Z, Q, P kept from block to block.
     double initial_z_ = 0, cycle_r_ = 0, cycle_z_ = 0, cycle_q_ = 0, cycle_p_ = 0;
     bool initial_known_ = false, cycle_r_ok_ = false, cycle_z_ok_ = false;
-    Point local_{};  // G52's shift from the work offset's zero
+    Point local_{};           // G52's shift from the work offset's zero
+    std::string transform_;   // the G code of a coordinate transformation in force ("G68"), or empty
+    bool plane_set_ = false;  // the program chose its plane (G17/G18/G19)
+    unsigned scaled_ = 0,
+             scaled_start_ = 0;  // axes whose place came from a Fanuc value without a point (least increment)
 };
 
 }  // namespace tape

@@ -59,9 +59,7 @@ GKind common(int c) {
         case 610:
         case 640:
         case 670:
-        case 690:
-        case 150:
-        case 501:  // exact stop, compensation, path mode, cancels
+            // exact stop, compensation, path mode, a macro call cancelled
             return GKind::ignore;
         case 170:
         case 180:
@@ -120,14 +118,19 @@ GKind common(int c) {
         case 650:
         case 660:
         case 661:
-        case 680:
-        case 511:
-        case 510:
         case 120:
         case 130:
-        case 160:
         case 870:
             return GKind::not_drawn;
+        case 160:
+        case 680:
+        case 510:
+        case 511:
+            return GKind::transform;
+        case 150:
+        case 690:
+        case 501:
+            return GKind::transform_off;
         default:
             return GKind::unknown;
     }
@@ -153,7 +156,7 @@ GKind classify(int c, Dialect d, bool lathe) {
             if (c == 520) return GKind::local_coords;
             if (c == 541) return GKind::work_offset;
             if (c == 730 || c == 740 || c == 760) return GKind::cycle;  // peck, counter tapping, fine boring
-            if (c == 500) return GKind::ignore;                         // scaling off
+            if (c == 500) return GKind::transform_off;                  // scaling off
             break;
         case Dialect::linuxcnc:
             if (c == 200 || c == 210) return GKind::units;
@@ -233,7 +236,14 @@ void MotionMachine::apply_g(int c, GKind k) {
             cycle_ = -1;
             if (dialect_ == Dialect::linuxcnc) group01_ = -1;  // G80 is LinuxCNC's motion mode "none"
             return;
+        case GKind::transform:
+            transform_ = g_name(c);
+            return;
+        case GKind::transform_off:
+            transform_.clear();
+            return;
         case GKind::plane:
+            plane_set_ = true;
             st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
             return;
         case GKind::units:

@@ -59,7 +59,8 @@ Parsed parse(const Word& w) {
         }
         if (c < '0' || c > '9') continue;
         if (c != '0') p.zero = false;
-        if (!p.zero && ++digits > 15) return p;  // more than a double holds exactly: no control's value
+        // A whole part longer than any control's word; digits far after the point are only precision.
+        if (!p.zero && ++digits > 15 && !after) return p;
         if (after)
             scale /= 10, fraction += (c - '0') * scale;
         else
@@ -78,7 +79,8 @@ double spec_value(const Word& w, const WordFormat* f) {
     return d.negative ? -v : v;
 }
 
-ValueState value_of(const Word& w, const NumberRules& r, double& out) {
+ValueState value_of(const Word& w, const NumberRules& r, double& out, bool& implied) {
+    implied = false;
     if (w.macro) return ValueState::macro;
     Parsed p = parse(w);
     if (!p.ok) return ValueState::bad;
@@ -95,6 +97,7 @@ ValueState value_of(const Word& w, const NumberRules& r, double& out) {
     switch (r.dialect) {
         case Dialect::fanuc:
             out = p.value * (r.inch ? 0.0001 : 0.001);
+            implied = true;
             return ValueState::ok;
         case Dialect::linuxcnc:
             return ValueState::ok;
@@ -150,7 +153,7 @@ void read_words(const Block& block, const NumberRules& rules, BlockWords& out) {
         }
         auto i = static_cast<std::size_t>(w.address - 'A');
         out.word[i] = &w;
-        out.state[i] = value_of(w, rules, out.value[i]);
+        out.state[i] = value_of(w, rules, out.value[i], out.implied[i]);
     }
 }
 

@@ -34,6 +34,7 @@ struct BlockWords {
     std::array<ValueState, 26> state{};
     std::array<double, 26> value{};
     std::array<const Word*, 26> word{};
+    std::array<bool, 26> implied{};  ///< a non-zero value read with Fanuc's least input increment (no point)
     static constexpr int max_codes = 8;
     int g[max_codes] = {};  ///< G codes ×10 (G90.1 → 901) in block order
     int g_count = 0;
@@ -45,6 +46,7 @@ struct BlockWords {
     bool ok(char a) const { return state[static_cast<std::size_t>(a - 'A')] == ValueState::ok; }
     ValueState at(char a) const { return state[static_cast<std::size_t>(a - 'A')]; }
     double get(char a) const { return value[static_cast<std::size_t>(a - 'A')]; }
+    bool scaled(char a) const { return implied[static_cast<std::size_t>(a - 'A')]; }
     const Word* word_of(char a) const { return word[static_cast<std::size_t>(a - 'A')]; }
     bool has_g(int code10) const;
     bool has_m(int code) const;
