@@ -12,6 +12,7 @@ namespace tape {
 struct ToolFigures {
     int tool = 0;
     Point min{}, max{};  ///< over every move of the tool with its axes known (arcs by their extremes)
+    unsigned axes = 0;   ///< the axes min and max hold (AxisBit)
     bool any = false;    ///< min and max hold a point
     double cutting_mm = 0, rapid_mm = 0;
     double cutting_min = 0, rapid_min = 0, dwell_min = 0;
@@ -40,6 +41,7 @@ private:
     ToolFigures& of(int tool);
     double rapid_;
     MotionFigures f_;
+    unsigned ever_known_ = 0;  // axes known in any move so far
 };
 
 }  // namespace tape

@@ -28,6 +28,7 @@ struct PathMove {
     bool doubt = false;       ///< read from a frame that failed parity, was in doubt or guessed
     int turns = 0;            ///< arcs: whole extra turns
     int tool = 0;
+    unsigned known = all_axes;                  ///< axes known (AxisBit): a view needs its two
     std::uint64_t block = 0;                    ///< Block::ordinal
     std::uint64_t line = 0;                     ///< of the block's first character
     std::optional<std::uint64_t> frame{};       ///< the block's first frame, from a tape
@@ -35,7 +36,8 @@ struct PathMove {
 };
 
 /// The moves of a program kept for drawing; events (tool changes, spindle, ...) are not kept, their
-/// effect is in each move's tool. A move whose axes are not all known is not drawn, and counted.
+/// effect is in each move's tool. A move with no axis known (the first, from where the tool stood before
+/// the program) is counted, not kept; a view draws the moves whose two axes are known.
 class Toolpath : public MotionVisitor {
 public:
     /// keep_blocks: each move's block text is kept too (for the HTML page's hover).
@@ -52,8 +54,7 @@ public:
     const std::vector<PathMove>& moves() const { return moves_; }
     /// The block text of moves()[i] (keep_blocks), else empty.
     std::string_view block_text(std::size_t i) const;
-    /// Moves not drawn because the tool's place was unknown (after a move not simulated, or before an
-    /// axis was set absolutely).
+    /// Moves not kept because no axis of the tool's place was known (a program's first move).
     std::uint64_t unknown_moves() const { return unknown_; }
     /// The moves not simulated, in program order (at most 100 kept): their notes, at their blocks.
     const std::vector<Move>& not_simulated() const { return not_simulated_; }
@@ -73,6 +74,7 @@ private:
     std::uint64_t unknown_ = 0, not_simulated_count_ = 0;
     std::vector<Move> not_simulated_;
     Point last_end_{};
+    unsigned last_known_ = all_axes;
     bool has_last_ = false;  // last_end_ is where the tool stands
 };
 
@@ -127,10 +129,11 @@ struct PlotPlan {
     /// scale, y = y0 - v * scale.
     double x0 = 0, y0 = 0, scale = 1;
     std::uint64_t moves_drawn = 0;  ///< moves that became at least part of a stroke
+    std::uint64_t unplaced = 0;     ///< moves not drawn: an axis of the view not known
 };
 
 /// The toolpath seen from options.view, fitted to the page, cut down to its resolution. Throws
-/// Error(Errc::bad_program) when there is nothing to draw (no move with every axis known).
+/// Error(Errc::bad_program) when there is nothing to draw (no move with the view's axes known).
 PlotPlan plan_plot(const Toolpath& path, const PlotOptions& options);
 
 /// "svg", "png", "pdf" or "html" for a file name's extension; empty for another.

@@ -46,6 +46,20 @@ public:
     double origin_x() const { return x0_ - u0_ * scale_; }
     double origin_y() const { return y0_ + v0_ * scale_; }
 
+    /// The axes a move needs known to be drawn from this side (AxisBit).
+    unsigned axes() const {
+        switch (o_.view) {
+            case PlotView::xz:
+            case PlotView::lathe:
+                return axis_x | axis_z;
+            case PlotView::yz:
+                return axis_y | axis_z;
+            case PlotView::xy:
+                break;
+        }
+        return axis_x | axis_y;
+    }
+    bool shows(const PathMove& m) const { return (m.known & axes()) == axes(); }
     /// An arc of plane is seen face on (as a true arc) from this side, at an even scale.
     bool face_on(Plane plane) const;
     /// An arc's sweep (counterclockwise positive, seen from its plane's normal) as the page's angle

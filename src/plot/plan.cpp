@@ -41,6 +41,7 @@ void add_arc_bounds(Bounds& b, const plot::Page& page, const PathMove& m) {
 Bounds bounds_of(const Toolpath& path, const plot::Page& page) {
     Bounds b;
     for (const auto& m : path.moves()) {
+        if (!page.shows(m)) continue;
         b.add(page.view(m.start));
         b.add(page.view(m.end));
         if (m.kind == MoveKind::arc) add_arc_bounds(b, page, m);
@@ -130,12 +131,16 @@ void lay_legend(PlotPlan& plan, const ToolColours& tools, bool any_doubt, bool a
 }  // namespace
 
 PlotPlan plan_plot(const Toolpath& path, const PlotOptions& options) {
-    if (path.moves().empty())
-        throw Error(Errc::bad_program, "no move to draw (no rapid, feed or arc whose every axis is known)");
     if (options.width < 100 || options.height < 100 || options.width > 20000 || options.height > 20000)
         throw Error(Errc::usage, "the picture is 100 to 20000 units across and high");
     plot::Page page(options);
     Bounds b = bounds_of(path, page);
+    if (b.u0 > b.u1)
+        throw Error(Errc::bad_program, std::string("no move to draw (no rapid, feed or arc with ") +
+                                           (page.axes() == (axis_x | axis_y)   ? "X and Y"
+                                            : page.axes() == (axis_y | axis_z) ? "Y and Z"
+                                                                               : "X and Z") +
+                                           " known)");
     page.fit(b.u0, b.u1, b.v0, b.v1);
     PlotPlan plan;
     plan.width = options.width;
@@ -149,6 +154,10 @@ PlotPlan plan_plot(const Toolpath& path, const PlotOptions& options) {
     bool any_doubt = false, any_not_simulated = false;
     for (std::uint32_t i = 0; i < path.moves().size(); ++i) {
         const PathMove& m = path.moves()[i];
+        if (!page.shows(m)) {
+            ++plan.unplaced;
+            continue;
+        }
         any_doubt |= m.doubt;
         any_not_simulated |= !m.doubt && m.kind == MoveKind::not_simulated;
         std::uint16_t style = strokes.style(layer_of(m), style_of(m, tools.of(m.tool), unit));

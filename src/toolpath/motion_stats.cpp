@@ -4,17 +4,25 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "toolpath/arc.hpp"
 
 namespace tape {
 namespace {
 
-void extend(ToolFigures& t, const Point& p) {
-    if (!t.any) t.min = t.max = p;
-    t.any = true;
-    t.min = {std::min(t.min.x, p.x), std::min(t.min.y, p.y), std::min(t.min.z, p.z)};
-    t.max = {std::max(t.max.x, p.x), std::max(t.max.y, p.y), std::max(t.max.z, p.z)};
+// The least and most of the axes known.
+void extend(ToolFigures& t, const Point& p, unsigned known) {
+    for (auto [bit, value, lo, hi] :
+         {std::tuple{axis_x, p.x, &t.min.x, &t.max.x}, std::tuple{axis_y, p.y, &t.min.y, &t.max.y},
+          std::tuple{axis_z, p.z, &t.min.z, &t.max.z}}) {
+        if (!(known & bit)) continue;
+        if (!(t.axes & bit)) *lo = *hi = value;
+        *lo = std::min(*lo, value);
+        *hi = std::max(*hi, value);
+        t.axes |= bit;
+    }
+    t.any = t.axes != 0;
 }
 
 // An arc reaches past its ends where it crosses the plane's axes: those quarter points count too.
@@ -23,7 +31,8 @@ void extend_arc(ToolFigures& t, const Move& m) {
     double quarter = std::numbers::pi / 2, lo = std::min(w.start, w.start + w.sweep),
            hi = std::max(w.start, w.start + w.sweep);
     for (double k = std::ceil(lo / quarter); k * quarter <= hi && k - std::ceil(lo / quarter) < 4; ++k)
-        extend(t, arcs::point_at(w, m.start, m.end, m.centre, m.state.plane, (k * quarter - w.start) / w.sweep));
+        extend(t, arcs::point_at(w, m.start, m.end, m.centre, m.state.plane, (k * quarter - w.start) / w.sweep),
+               m.known);
 }
 
 // The feed in mm/min of a move, 0 when not known (per revolution without a speed; constant surface
@@ -52,8 +61,8 @@ void add_move(ToolFigures& t, const Move& m, double rapid_rate) {
         else if (length > 0)
             ++t.untimed;
     }
-    extend(t, m.start);
-    extend(t, m.end);
+    extend(t, m.start, m.known);
+    extend(t, m.end, m.known);
     if (m.kind == MoveKind::arc) extend_arc(t, m);
 }
 
@@ -82,8 +91,12 @@ void MotionStats::move(const Move& m) {
         default:
             return;
     }
-    // From a place not known (the program's first move), the length is not known either.
-    if ((m.known & all_axes) != all_axes) {
+    // From a place not known the length is not known either: the program's first move (no axis known),
+    // or a move after an axis was lost (a block not simulated). An axis never set (a lathe's Y) never
+    // moved: the move is measured without it.
+    unsigned known = m.known & all_axes, ever = ever_known_;
+    ever_known_ |= known;
+    if (known == 0 || (known | (all_axes & ~ever)) != all_axes) {
         ++f_.unknown;
         return;
     }

@@ -31,16 +31,18 @@ void Toolpath::move(const Move& m) {
         // Marked where the tool stood: where on the part the picture stops being sure.
         Move here = m;
         here.start = here.end = last_end_;
+        here.known = last_known_;
         has_last_ = false;
         return keep(here);
     }
     if (m.kind != MoveKind::rapid && m.kind != MoveKind::linear && m.kind != MoveKind::arc) return;
-    if ((m.known & all_axes) != all_axes) {
+    if ((m.known & all_axes) == 0) {
         ++unknown_;
         has_last_ = false;
         return;
     }
     last_end_ = m.end;
+    last_known_ = m.known;
     has_last_ = true;
     keep(m);
 }
@@ -56,6 +58,7 @@ void Toolpath::keep(const Move& m) {
                .clockwise = m.clockwise,
                .turns = m.turns,
                .tool = m.state.tool,
+               .known = m.known & all_axes,
                .block = m.block,
                .line = m.where.line,
                .frame = m.where.frame,

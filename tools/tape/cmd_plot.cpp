@@ -91,7 +91,10 @@ void write_plot(const PlotArgs& a, const MotionRead& read, const tape::Toolpath&
         if (globals().verbosity > 0)
             say(read.name, std::to_string(path.moves().size()) + " moves, " + std::to_string(plan.moves_drawn) +
                                " drawn (the rest under a pixel or over one drawn), " +
-                               std::to_string(plan.strokes.size()) + " strokes");
+                               std::to_string(plan.strokes.size()) + " strokes; " +
+                               std::to_string(plan.unplaced + path.unknown_moves()) +
+                               " not drawn from a place not known (the first move, an axis not set yet, or after a "
+                               "block not simulated)");
     } catch (const tape::Error& e) {
         fail(e.code() == tape::Errc::io ? "" : read.name, e);
     }
@@ -109,11 +112,6 @@ void run(const PlotArgs& a) {
     std::vector<std::uint64_t> doubtful = plot_doubt_frames(a, read);
     path.mark_doubtful(doubtful);
     say_not_simulated(read.name, path.not_simulated(), path.not_simulated_count(), read.from_tape);
-    // The first move of a program comes from a place no tape says: said only when asked.
-    if (path.unknown_moves() && globals().verbosity > 0)
-        say(read.name, std::to_string(path.unknown_moves()) +
-                           " move(s) not drawn: the tool's place was not known (the first move, an axis moved "
-                           "incrementally before it was set, or after a move not simulated)");
     write_plot(a, read, path, doubtful);
     end_motion(read);
 }

@@ -1,6 +1,7 @@
 #include "motion_input.hpp"
 
 #include "cli/messages.hpp"
+#include "cli/options.hpp"
 
 namespace cli {
 namespace {
@@ -32,10 +33,15 @@ private:
 
 void add_motion_options(CLI::App* sub, MotionArgs& args) {
     sub->add_flag("--lathe", args.lathe, "The program is for a lathe (X-Z turning, X written as a diameter)");
+    sub->add_option("--spec,-s", args.spec,
+                    "Controller format, ГОСТ 20999-83 §9 notation (\"X+053 Z+053 F031\"): where the point of a "
+                    "number written without one stands");
 }
 
-tape::MotionOptions motion_options(const ProgramSource& source, const MotionArgs& args) {
+tape::MotionOptions motion_options(const ProgramSource& source, const MotionArgs& args,
+                                   const std::optional<tape::FormatSpec>& spec) {
     tape::MotionOptions o;
+    o.spec = spec ? &*spec : nullptr;
     o.dialect = load_options(source).dialect;
     o.lathe = args.lathe;
     return o;
@@ -49,7 +55,9 @@ MotionRead read_motion(const std::string& path, const ProgramSource& source, con
     read.in = open_program(path, reading);
     read.name = read.in.name;
     read.from_tape = read.in.from_tape;
-    tape::Interpreter interpreter(out, motion_options(source, args));
+    std::optional<tape::FormatSpec> spec;
+    if (!args.spec.empty()) spec = parse_spec_or_fail(args.spec);
+    tape::Interpreter interpreter(out, motion_options(source, args, spec));
     MotionFeed feed(interpreter, on_block, read.bad_frames);
     load_program(read.in, feed, true);
     return read;

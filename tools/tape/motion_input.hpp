@@ -5,10 +5,12 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/programs.hpp"
+#include "tape/format_spec.hpp"
 #include "tape/motion.hpp"
 
 namespace cli {
@@ -16,9 +18,12 @@ namespace cli {
 /// What the tape does not say about the machine.
 struct MotionArgs {
     bool lathe = false;
+    std::string spec;  ///< --spec: the control's word formats, for the implied point of words without one
 };
 void add_motion_options(CLI::App* sub, MotionArgs& args);
-tape::MotionOptions motion_options(const ProgramSource& source, const MotionArgs& args);
+/// The interpreter's options (spec, when given, must outlive them).
+tape::MotionOptions motion_options(const ProgramSource& source, const MotionArgs& args,
+                                   const std::optional<tape::FormatSpec>& spec);
 
 struct MotionRead {
     std::string name;

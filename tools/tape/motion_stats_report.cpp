@@ -1,6 +1,7 @@
 #include "motion_stats_report.hpp"
 
 #include <cstdio>
+#include <tuple>
 
 #include "cli/globals.hpp"
 #include "cli/json.hpp"
@@ -11,13 +12,16 @@
 namespace cli {
 namespace {
 
-Json point_value(const tape::Point& p) { return Json{{"x", p.x}, {"y", p.y}, {"z", p.z}}; }
+Json point_value(const tape::Point& p, unsigned axes) {
+    auto one = [axes](unsigned bit, double v) { return axes & bit ? Json(v) : Json(nullptr); };
+    return Json{{"x", one(tape::axis_x, p.x)}, {"y", one(tape::axis_y, p.y)}, {"z", one(tape::axis_z, p.z)}};
+}
 
 Json tool_value(const tape::ToolFigures& t, bool rapid_known) {
     Json v{{"tool", t.tool == -1 ? Json(nullptr) : Json(t.tool)},
            {"moves", t.moves},
-           {"min", t.any ? point_value(t.min) : Json(nullptr)},
-           {"max", t.any ? point_value(t.max) : Json(nullptr)},
+           {"min", t.any ? point_value(t.min, t.axes) : Json(nullptr)},
+           {"max", t.any ? point_value(t.max, t.axes) : Json(nullptr)},
            {"cutting_mm", t.cutting_mm},
            {"rapid_mm", t.rapid_mm},
            {"cutting_min", t.cutting_min},
@@ -32,9 +36,15 @@ std::string tool_text(const tape::ToolFigures& t, bool rapid_known) {
     std::string head = t.tool == -1 ? "all tools" : "T" + std::to_string(t.tool);
     std::string out = head + ": " + std::to_string(t.moves) + " moves\n";
     if (t.any) {
-        std::snprintf(buf, sizeof buf, "  X %.3f .. %.3f  Y %.3f .. %.3f  Z %.3f .. %.3f mm\n", t.min.x, t.max.x,
-                      t.min.y, t.max.y, t.min.z, t.max.z);
-        out += buf;
+        out += " ";
+        for (auto [bit, letter, lo, hi] :
+             {std::tuple{tape::axis_x, 'X', t.min.x, t.max.x}, std::tuple{tape::axis_y, 'Y', t.min.y, t.max.y},
+              std::tuple{tape::axis_z, 'Z', t.min.z, t.max.z}})
+            if (t.axes & bit) {
+                std::snprintf(buf, sizeof buf, " %c %.3f .. %.3f", letter, lo, hi);
+                out += buf;
+            }
+        out += " mm\n";
     }
     std::snprintf(buf, sizeof buf, "  cutting %.3f mm in %.2f min, rapid %.3f mm", t.cutting_mm, t.cutting_min,
                   t.rapid_mm);
