@@ -161,13 +161,20 @@ TEST(Plot, DoubtfulMovesAreDrawnInTheDoubtColourAndNothingIsDrawnWithoutMoves) {
     EXPECT_THROW(tape::plan_plot(tape::Toolpath(), options()), tape::Error);
 }
 
-TEST(Plot, MovesWhoseToolPlaceIsUnknownAreCountedNotDrawn) {
+TEST(Plot, AViewDrawsTheMovesWhoseTwoAxesAreKnown) {
     tape::Toolpath path;
-    Move m = line({0, 0, 0}, {10, 0, 0});
-    m.known = tape::axis_x | tape::axis_y;
-    path.move(m);
+    Move first = line({0, 0, 0}, {10, 0, 0});
+    first.known = 0;  // a program's first move: from where the tool stood before it
+    path.move(first);
     EXPECT_EQ(path.unknown_moves(), 1u);
-    EXPECT_TRUE(path.moves().empty());
+    Move flat = line({10, 0, 0}, {20, 5, 0});
+    flat.known = tape::axis_x | tape::axis_y;  // Z never set
+    path.move(flat);
+    ASSERT_EQ(path.moves().size(), 1u);
+    tape::PlotPlan above = tape::plan_plot(path, options());
+    EXPECT_EQ(above.moves_drawn, 1u);
+    EXPECT_EQ(above.unplaced, 0u);
+    EXPECT_THROW(tape::plan_plot(path, options(tape::PlotView::xz)), tape::Error);
 }
 
 TEST(Plot, PngPixelsShowTheFeedWhereItIsAndPaperElsewhere) {
