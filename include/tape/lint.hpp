@@ -17,12 +17,19 @@ namespace tape {
 
 namespace lint_detail {
 class BlockTargets;
-}
+class ArcChecks;
+}  // namespace lint_detail
 
 struct LintOptions {
     const FormatSpec* spec = nullptr;  ///< also check every word against this controller format
     std::size_t max_per_rule = 0;  ///< list the first this many findings of a rule by position, count the rest (0: all)
     bool strict = false;           ///< blank tape inside a block is an error, not a warning
+    /// Arcs are checked to this tolerance in mm (--arc-tolerance); unset: the dialect's controls'
+    /// (motion_options in tape/motion.hpp).
+    std::optional<double> arc_tolerance_mm{};
+    /// Arcs are checked on their circles (the motion interpreter runs alongside). The dialect guess
+    /// turns it off: a program's geometry is no evidence of its dialect.
+    bool arcs = true;
 };
 
 /// Every finding: the loader's syntax findings and the rules of tape/rules.hpp that apply to the
@@ -97,6 +104,7 @@ private:
     };
     std::vector<Open> open_;
     std::unique_ptr<lint_detail::BlockTargets> targets_;  // Fanuc: the blocks its GOTOs, cycles and calls name
+    std::unique_ptr<lint_detail::ArcChecks> arcs_;        // the interpreter, for arcs on their circles
 };
 
 /// True when any word of the program writes an explicit decimal point (§3.1.4).

@@ -118,6 +118,8 @@ struct MotionOptions {
     /// Not known whether the program is for a lathe (lint): a ZX-plane arc is checked with X read as a
     /// radius and as a diameter, and is a finding only when neither reading puts its end on the circle.
     bool lathe_unknown = false;
+    /// Only findings are wanted (lint): no moves are passed to the visitor, which saves their making.
+    bool findings_only = false;
 };
 
 /// The options with the arc tolerance of dialect's controls: ГОСТ and none, the seeds' controller

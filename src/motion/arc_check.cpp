@@ -67,7 +67,8 @@ void MotionMachine::check_arc(int u, int v) {
     finding("arc-radius", "radius to end of arc differs from radius to start: start=" + point(mv_.start, u, v) +
                               " center=" + point(mv_.centre, u, v) + " end=" + point(mv_.end, u, v) +
                               " r1=" + fixed(r1) + " r2=" + fixed(r2) + " difference=" + fixed(std::fabs(r1 - r2)) +
-                              " mm; the control allows " + tolerance);
+                              " mm (" + fixed(std::fabs(r1 - r2) / std::max(r1, r2) * 100) +
+                              " %); the control allows " + tolerance);
 }
 
 }  // namespace tape

@@ -68,6 +68,15 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
         known = end_known;
         return;
     }
+    if (!by_r && !w_.has(ax.cu) && !w_.has(ax.cv)) {
+        // No centre and no radius (lint's arc-center): the control stops; nothing to draw.
+        not_simulated("G0" + std::to_string(group01_) + " with no centre (" + ax.cu + ", " + ax.cv +
+                          ") and no R: the control stops here",
+                      0);
+        pos = end;
+        known = end_known;
+        return;
+    }
     begin(MoveKind::arc);
     mv_.end = end;
     mv_.end_known = end_known;

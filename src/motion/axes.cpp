@@ -69,6 +69,11 @@ bool MotionMachine::target(Point& end, unsigned& end_known, unsigned& named) {
 }
 
 void MotionMachine::straight(MoveKind kind, const Point& end, unsigned end_known) {
+    if (opt_.findings_only) {
+        pos = end;
+        known = end_known;
+        return;
+    }
     begin(kind);
     mv_.end = end;
     mv_.end_known = end_known;

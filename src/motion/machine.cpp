@@ -17,6 +17,10 @@ void MotionMachine::dialect(Dialect d) {
     dialect_ = d;
     rules_.dialect = d;
     rules_.spec = opt_.spec;
+    if (opt_.findings_only) {  // F, S, T and the rest make no finding: not read
+        rules_.letters = 0;
+        for (char c : std::string_view("IJKLPQRUVWXYZ")) rules_.letters |= 1u << (c - 'A');
+    }
     fanuc_lathe_ = opt_.lathe && d == Dialect::fanuc;
     reset();
 }
@@ -96,7 +100,9 @@ bool MotionMachine::statements(const Block& b) {
 }
 
 void MotionMachine::run(const Block& b) {
-    if (!program_points_ && block_has_points(b)) program_points_ = true;
+    // §3.1.4 reads words without a point by the program's other words; Fanuc and LinuxCNC do not.
+    bool by_points = dialect_ != Dialect::fanuc && dialect_ != Dialect::linuxcnc;
+    if (by_points && !program_points_ && block_has_points(b)) program_points_ = true;
     rules_.program_points = program_points_;
     rules_.inch = st.inch;
     read_words(b, rules_, w_);
@@ -139,10 +145,11 @@ void MotionMachine::begin(MoveKind kind) {
 
 void MotionMachine::emit() {
     mv_.known = mv_.known & mv_.end_known;
-    out_.move(mv_);
+    if (!opt_.findings_only) out_.move(mv_);
 }
 
 void MotionMachine::event(MoveKind kind, int code) {
+    if (opt_.findings_only) return;
     begin(kind);
     mv_.code = code;
     emit();

@@ -58,16 +58,18 @@ Parsed parse(const Word& w) {
             continue;
         }
         if (c < '0' || c > '9') continue;
+        p.ok = true;
         if (c != '0') p.zero = false;
         // A whole part longer than any control's word; digits far after the point are only precision.
-        if (!p.zero && ++digits > 15 && !after) return p;
+        if (!p.zero && ++digits > 15 && !after) {
+            p.ok = false;
+            return p;
+        }
         if (after)
             scale /= 10, fraction += (c - '0') * scale;
         else
             whole = whole * 10 + (c - '0');
     }
-    bool any = w.text.find_first_of("0123456789", 1) != std::string::npos;
-    p.ok = any;
     p.value = (whole + fraction) * (w.sign == '-' ? -1 : 1);
     return p;
 }
@@ -152,6 +154,7 @@ void read_words(const Block& block, const NumberRules& rules, BlockWords& out) {
             continue;
         }
         auto i = static_cast<std::size_t>(w.address - 'A');
+        if (!(rules.letters >> i & 1)) continue;
         out.word[i] = &w;
         out.state[i] = value_of(w, rules, out.value[i], out.implied[i]);
     }

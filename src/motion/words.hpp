@@ -27,6 +27,7 @@ struct NumberRules {
     const FormatSpec* spec = nullptr;
     bool program_points = false;  ///< the program has written a decimal point in some word (§3.1.4)
     bool inch = false;            ///< Fanuc's least input increment is 0.0001 inch in G20
+    std::uint32_t letters = ~0u;  ///< the letters to read (bit 0 = 'A'); the others are left absent
 };
 
 /// The words of one block: letters as 'A'..'Z' indexes.

@@ -32,6 +32,7 @@ bool reads_as_block(std::string_view line) {
 // read as blocks among them, for ГОСТ), and how many blocks it saw.
 class Trial : public LintVisitor {
 public:
+    Trial() : LintVisitor(LintOptions{.arcs = false}) {}
     void label(std::string_view text) override {
         for (char c : text) {
             if (c != '\n') {

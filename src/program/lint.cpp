@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "program/block_targets.hpp"
+#include "program/lint_arcs.hpp"
 #include "tape/code_tables.hpp"
 #include "tape/functions.hpp"
 #include "tape/rules.hpp"
@@ -205,6 +206,13 @@ void LintVisitor::dialect(const DialectChoice& choice) {
     dialect_ = choice.dialect;
     close_ = choice.close;
     unknown_codes_.clear();
+    // Two close readings may place a number's point differently (Fanuc's X1000 is 1 mm, LinuxCNC's
+    // 1000 mm): arcs are checked only in a reading that stands alone.
+    arcs_.reset();
+    if (!close_ && options_.arcs)
+        arcs_ = std::make_unique<lint_detail::ArcChecks>(dialect_, options_, [this](Finding f) {
+            if (!quiet_) keep(std::move(f));
+        });
 }
 
 void LintVisitor::program_start(const Program& header) {
@@ -220,6 +228,7 @@ void LintVisitor::program_start(const Program& header) {
     feed_given_ = no_feed_said_ = subprogram_ = false;
     no_feed_.reset();
     open_.clear();
+    if (arcs_) arcs_->start(header);
 }
 
 void LintVisitor::block(const Block& b) {
@@ -237,6 +246,7 @@ void LintVisitor::block(const Block& b) {
     if (dialect_ == Dialect::fanuc) targets_->block(b);
     if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, "99");
     word_checks(sink_, b, dialect_, close_);
+    if (arcs_) arcs_->next(b);
     code_checks(sink_, b, dialect_, close_, unknown_codes_);
     motion_checks(b);
     flow_checks(b);

@@ -22,6 +22,7 @@ struct LintArgs {
     ProgramSource source;
     bool json = false, rules = false, strict = false;
     std::uint64_t max = 0;
+    std::optional<double> arc_tolerance;
 };
 
 std::string rule_names() {
@@ -103,7 +104,8 @@ void run(const LintArgs& a) {
     if (!a.spec.empty()) spec = parse_spec_or_fail(a.spec);
     // Streamed: a tape of any length is checked in bounded memory (--max-errors findings a rule).
     ProgramInput in = open_program(a.input, a.source);
-    tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict});
+    tape::LintVisitor linter(
+        tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict, a.arc_tolerance});
     load_program(in, linter, true);
     std::vector<tape::Finding> findings = linter.findings();
     std::uint64_t unlisted = 0;
@@ -157,6 +159,12 @@ void add_lint(CLI::App& app) {
         ->option_text("RULE");
     sub->add_flag("--rules", a->rules, "List every rule: id, severity, the dialects it applies to; no input is read");
     sub->add_flag("--strict", a->strict, "Blank tape inside a block (a character that lost its holes?) is an error");
+    sub->add_option("--arc-tolerance", a->arc_tolerance,
+                    "How far (mm) an arc's end may be off its circle: the radii to start and end may differ by this "
+                    "much. Default: the dialect's control (ГОСТ: 0.001, the seeds' alarm 7.56; LinuxCNC: 0.0283 or "
+                    "0.1 % of the radius; Fanuc: 0.02, parameter No. 3410)")
+        ->check(CLI::Range(0.0, 1000.0))
+        ->option_text("MM");
     sub->callback([a] { run(*a); });
 }
 
