@@ -12,7 +12,7 @@ add_custom_command(TARGET tape POST_BUILD
                    VERBATIM)
 
 # Man pages are installed compressed, as Debian's policy asks; man reads them so.
-set(TAPE_MAN_PAGES man/tape.1 man/tape-archive.1 man/tape-damage.1 man/tape-image.5 man/tape-devices.7 man/tape-usb.7)
+set(TAPE_MAN_PAGES man/tape.1 man/tape-archive.1 man/tape-plot.1 man/tape-damage.1 man/tape-image.5 man/tape-devices.7 man/tape-usb.7)
 foreach(page ${TAPE_MAN_PAGES})
   get_filename_component(name ${page} NAME)
   string(REGEX REPLACE ".*\\." "" section ${name})
@@ -30,6 +30,9 @@ install(TARGETS tape RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runti
 # The picture module, where the programs look for it: ../LIBDIR/tape beside them (CMakeLists.txt).
 if(TARGET tape_pictures)
   install(TARGETS tape_pictures LIBRARY DESTINATION ${TAPE_PICTURE_MODULE_DIR} COMPONENT runtime)
+endif()
+if(TARGET tape_plot)
+  install(TARGETS tape_plot LIBRARY DESTINATION ${TAPE_PICTURE_MODULE_DIR} COMPONENT runtime)
 endif()
 # Built by `cmake --build build`, not by the demo's build of the tape target alone: installed when built.
 install(TARGETS tape-damage tape-adapter-sim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime OPTIONAL)

@@ -36,6 +36,7 @@ features=(
   libopencv-core-dev
   libopencv-imgproc-dev
   libopencv-imgcodecs-dev
+  libcairo2-dev
 )
 test=(
   libgtest-dev

@@ -42,6 +42,8 @@ struct RenderOptions {
     double strip_mm = 254;            ///< tape drawn in strips of this length, one under the other
     bool mirror = false;              ///< seen from the other side: track 1 on top instead of track 8
     std::vector<FrameMark> marks{};   ///< in any order
+    /// Frames (any order) given an id "fN" for links even when not marked: an empty outline of the frame.
+    std::vector<std::uint64_t> anchors{};
     /// A leader label's frames (tape/label.hpp; first 1-based, 0: none): drawn with no character and
     /// never shaded as bad frames, since their holes are letters.
     std::uint64_t label_first = 0, label_frames = 0;

@@ -130,6 +130,9 @@ public:
         strips_ = drawn_.empty() ? 1 : (drawn_.size() + per_ - 1) / per_;
         for (const auto& m : o.marks)
             if (m.frame >= o.from && m.frame <= last) marks_.emplace(m.frame, &m);
+        anchors_ = o.anchors;
+        std::sort(anchors_.begin(), anchors_.end());
+        anchors_.erase(std::unique(anchors_.begin(), anchors_.end()), anchors_.end());
     }
 
     void write() {
@@ -160,6 +163,7 @@ private:
     std::span<const Frame> drawn_;
     std::uint64_t last_ = 0, per_ = 1, strips_ = 1;
     std::multimap<std::uint64_t, const FrameMark*> marks_;  // the caller's
+    std::vector<std::uint64_t> anchors_;                    // sorted, once each
     std::string out_;
 };
 
@@ -238,6 +242,18 @@ void SvgWriter::strip_marks(std::uint64_t begin, std::uint64_t end, std::int64_t
     }
     for (auto it = here.begin(); it != here.end(); ++it)
         mark(*it->second, it != here.begin() && std::prev(it)->first == it->first, begin, top);
+    // Anchors for links, where no mark has the frame's id already.
+    for (auto a = std::lower_bound(anchors_.begin(), anchors_.end(), o_.from + begin);
+         a != anchors_.end() && *a < o_.from + end; ++a) {
+        if (here.contains(*a)) continue;
+        out_ += "<rect id=\"f";
+        put(out_, static_cast<std::int64_t>(*a));
+        out_ += "\" class=\"anchor\" x=\"";
+        put(out_, left + static_cast<std::int64_t>(*a - o_.from - begin) * pitch);
+        out_ += "\" y=\"";
+        put(out_, top);
+        out_ += "\" width=\"254\" height=\"2540\" fill=\"none\"/>\n";
+    }
 }
 
 void SvgWriter::mark(const FrameMark& m, bool repeated, std::uint64_t begin, std::int64_t top) {

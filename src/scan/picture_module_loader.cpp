@@ -1,15 +1,9 @@
-// Loading the picture module (picture_module_loader.hpp) with dlopen, and tape/picture.hpp and
-// scan_available() through it. The module is looked for where this program's installation keeps it
-// (beside the program, as in the build tree and any prefix it was installed to), then where it was
-// configured to be installed; TAPE_PICTURE_MODULE names another file, for tests and packagers.
+// Loading the picture module (picture_module_loader.hpp) as common/module_loader.hpp loads any module, and
+// tape/picture.hpp and scan_available() through it; TAPE_PICTURE_MODULE names another file, for tests and
+// packagers.
 #include "scan/picture_module_loader.hpp"
 
-#include <dlfcn.h>
-
-#include <cstdlib>
-#include <filesystem>
-#include <vector>
-
+#include "common/module_loader.hpp"
 #include "tape/scan.hpp"
 
 #ifndef TAPE_PICTURE_MODULE_BUILT
@@ -24,43 +18,23 @@ struct Loaded {
     std::string why;  // empty when api is there
 };
 
-std::vector<std::string> candidates() {
-    if (const char* path = std::getenv("TAPE_PICTURE_MODULE"); path && *path) return {path};
-    std::vector<std::string> out;
-    std::error_code ec;
-    std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (!ec) out.push_back((program.parent_path() / ".." / TAPE_PICTURE_MODULE_RELATIVE).lexically_normal().string());
-    if (out.empty() || out.front() != TAPE_PICTURE_MODULE_INSTALLED) out.push_back(TAPE_PICTURE_MODULE_INSTALLED);
-    return out;
-}
-
-Loaded open_module(const std::string& path) {
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle)
-        return {nullptr, std::string("cannot load the picture module, which reads and writes pictures through "
-                                     "OpenCV: ") +
-                             dlerror() +
-                             " (it needs OpenCV's core, imgproc and imgcodecs libraries; "
-                             "Debian: libopencv-imgcodecs406)"};
-    auto entry = reinterpret_cast<const Api* (*)()>(dlsym(handle, "tape_picture_module_api"));
-    const Api* table = entry ? entry() : nullptr;
-    if (!table || table->abi != abi_version)
-        return {nullptr, path + " is not the picture module of this build of tape (reinstall tape)"};
-    return {table, ""};  // never closed: its functions serve until the program ends
-}
-
 Loaded load() {
     if (!TAPE_PICTURE_MODULE_BUILT)
         return {nullptr,
                 "built without OpenCV: reading pictures needs it (install libopencv-imgcodecs-dev and "
                 "libopencv-imgproc-dev, or run scripts/install-deps.sh features, then build again)"};
-    std::vector<std::string> paths = candidates();
-    std::string looked;
-    for (const auto& path : paths) {
-        if (std::filesystem::exists(path)) return open_module(path);
-        looked += (looked.empty() ? "" : ", ") + path;
-    }
-    return {nullptr, "the picture module is not installed (looked for " + looked + "): reinstall tape"};
+    static const modules::ModuleSpec spec{
+        "the picture module, which reads and writes pictures through OpenCV",
+        "TAPE_PICTURE_MODULE",
+        TAPE_PICTURE_MODULE_RELATIVE,
+        TAPE_PICTURE_MODULE_INSTALLED,
+        "tape_picture_module_api",
+        "it needs OpenCV's core, imgproc and imgcodecs libraries; Debian: libopencv-imgcodecs406"};
+    modules::Opened m = modules::open_module(spec);
+    auto table = static_cast<const Api*>(m.table);
+    if (table && table->abi != abi_version)
+        return {nullptr, m.path + " is not the picture module of this build of tape (reinstall tape)"};
+    return {table, m.why};
 }
 
 const Loaded& loaded() {

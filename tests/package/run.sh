@@ -47,7 +47,7 @@ if [ "${TAPE_HAVE_OPENCV:-OFF}" = ON ]; then
     -o "$work/drawn.png"
   rm -f "$work/drawn.png"
 fi
-for page in man1/tape.1 man1/tape-damage.1 man5/tape-image.5 man7/tape-devices.7 man7/tape-usb.7; do
+for page in man1/tape.1 man1/tape-plot.1 man1/tape-damage.1 man5/tape-image.5 man7/tape-devices.7 man7/tape-usb.7; do
   [ -f "$prefix/$TAPE_MANDIR/$page.gz" ] || fail "no $TAPE_MANDIR/$page.gz"
 done
 command -v man >/dev/null || fail "man is not installed (bash scripts/install-deps.sh test installs man-db)"

@@ -4,9 +4,11 @@
 #include "cli/json.hpp"
 #include "cli/machines.hpp"
 #include "cli/messages.hpp"
+#include "cli/numbers.hpp"
 #include "cli/outputs.hpp"
 #include "cli/programs.hpp"
 #include "commands.hpp"
+#include "motion_stats_report.hpp"
 #include "tape/code_tables.hpp"
 #include "tape/machine_checks.hpp"
 #include "tape/utf8_text.hpp"
@@ -17,9 +19,11 @@ namespace {
 struct BlocksArgs {
     std::string input = "-";
     ProgramSource source;
-    bool json = false, explain = false, strict = false;
+    bool json = false, explain = false, strict = false, stats = false;
     std::string lang = "en", machine;
     std::optional<tape::MachineProfile> profile{};  // --machine, loaded before the listing starts
+    MotionArgs motion;
+    StatsArgs stats_args;
 };
 
 std::string statement_kind(tape::Statement::Kind k) {
@@ -230,6 +234,7 @@ private:
 };
 
 void run(BlocksArgs& a) {
+    if (a.stats) return run_motion_stats(a.input, a.source, a.motion, StatsArgs{a.stats_args.rapid_mm_per_min, a.json});
     a.profile = machine_or_fail(a.machine);
     ProgramInput in = open_program(a.input, a.source);
     if (a.profile && a.source.dialect == "auto") in.load.dialect = a.profile->dialect;
@@ -259,6 +264,13 @@ void add_blocks(CLI::App& app) {
                   "Fanuc lathe or mill, LinuxCNC)");
     add_machine_option(sub, a->machine, "--explain names its G and M codes, feed, speed and tool words");
     sub->add_flag("--strict", a->strict, "Blank tape inside a block is an error: exit 1");
+    auto* stats = sub->add_flag("--stats", a->stats,
+                                "Instead of the blocks, the figures of the toolpath per tool: the least and most of "
+                                "each axis, cutting and rapid length, and time at the programmed feeds");
+    sub->add_option("--rapid", a->stats_args.rapid_mm_per_min, "With --stats: the machine's rapid rate, mm/min")
+        ->check(real_number(1, 1e6))
+        ->needs(stats);
+    add_motion_options(sub, a->motion);
     sub->add_option("--lang", a->lang, "Language of --explain: en or ru")
         ->check(CLI::IsMember({"en", "ru"}))
         ->capture_default_str();

@@ -1,10 +1,12 @@
 // tape diff: two reads of one tape aligned and compared frame by frame, to look before merging.
 #include "cli/inputs.hpp"
 #include "cli/messages.hpp"
+#include "cli/numbers.hpp"
 #include "cli/outputs.hpp"
 #include "cli/restore_inputs.hpp"
 #include "cli/run.hpp"
 #include "commands.hpp"
+#include "motion_diff_report.hpp"
 #include "restore_report.hpp"
 #include "tape/align.hpp"
 
@@ -13,7 +15,10 @@ namespace {
 
 struct DiffArgs {
     std::string first, second, code = "auto";
-    bool strict = false;
+    bool strict = false, motion = false;
+    double tolerance_mm = 0.001;
+    ProgramSource source;  // --motion: the programs are read as plot reads them
+    MotionArgs machine;
 };
 
 std::string side(const std::optional<tape::FrameCode>& code, const std::vector<tape::Frame>& frames, std::int32_t i) {
@@ -65,6 +70,7 @@ void say_cut_short(const Counts& n, const std::vector<TapeInput>& reads) {
 }
 
 void run(const DiffArgs& a) {
+    if (a.motion) return run_motion_diff(a.first, a.second, a.source, a.machine, a.tolerance_mm);
     std::vector<TapeInput> reads = read_all_bounded({a.first, a.second});
     std::string code_name;
     std::optional<tape::FrameCode> code = code_for_reads(a.code, "", reads, code_name);
@@ -105,9 +111,22 @@ void run(const DiffArgs& a) {
 
 void add_diff(CLI::App& app) {
     auto a = std::make_shared<DiffArgs>();
-    auto* sub = app.add_subcommand("diff", "Two reads of one tape aligned and compared frame by frame");
-    sub->add_option("read1", a->first, "A read of the tape, in any image format")->required();
-    sub->add_option("read2", a->second, "Another read of the same tape")->required();
+    auto* sub = app.add_subcommand(
+        "diff",
+        "Two reads of one tape aligned and compared frame by frame; with --motion, two programs by what they cut");
+    sub->add_option("read1", a->first, "A read of the tape, in any image format (--motion: a program, text or tape)")
+        ->required();
+    sub->add_option("read2", a->second, "Another read of the same tape (--motion: another program)")->required();
+    auto* motion = sub->add_flag("--motion", a->motion,
+                                 "Compare the toolpaths: the same within --tolerance, or the first move that differs, "
+                                 "with its block in each (exit 1)");
+    sub->add_option("--tolerance", a->tolerance_mm,
+                    "With --motion: how far apart two points may be and be the same, mm")
+        ->check(real_number(1e-6, 100))
+        ->capture_default_str()
+        ->needs(motion);
+    add_dialect_option(sub, a->source.dialect);
+    add_motion_options(sub, a->machine);
     sub->add_option("--code,-c", a->code, "How frames are named: auto, iso, eia, or none (holes only)")
         ->check(CLI::IsMember({"auto", "iso", "eia", "none"}))
         ->capture_default_str();

@@ -23,6 +23,7 @@ void add_restore(CLI::App& app);
 void add_diff(CLI::App& app);
 void add_adapter(CLI::App& app);
 void add_label(CLI::App& app);
+void add_plot(CLI::App& app);
 void add_render(CLI::App& app);
 void add_dnc(CLI::App& app);
 void add_scan(CLI::App& app);

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
     cli::add_diff(app);
     cli::add_adapter(app);
     cli::add_label(app);
+    cli::add_plot(app);
     cli::add_render(app);
     cli::add_dnc(app);
     cli::add_scan(app);
