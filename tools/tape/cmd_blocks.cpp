@@ -234,6 +234,7 @@ private:
 };
 
 void run(BlocksArgs& a) {
+    a.motion.machine = a.machine;  // --machine: for --stats, the lathe, formats and rapid rates
     if (a.stats) return run_motion_stats(a.input, a.source, a.motion, StatsArgs{a.stats_args.rapid_mm_per_min, a.json});
     a.profile = machine_or_fail(a.machine);
     ProgramInput in = open_program(a.input, a.source);
@@ -270,7 +271,7 @@ void add_blocks(CLI::App& app) {
     sub->add_option("--rapid", a->stats_args.rapid_mm_per_min, "With --stats: the machine's rapid rate, mm/min")
         ->check(real_number(1, 1e6))
         ->needs(stats);
-    add_motion_options(sub, a->motion);
+    add_motion_options(sub, a->motion, false);
     sub->add_option("--lang", a->lang, "Language of --explain: en or ru")
         ->check(CLI::IsMember({"en", "ru"}))
         ->capture_default_str();

@@ -1,5 +1,6 @@
 #include "motion_input.hpp"
 
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
 
@@ -31,19 +32,42 @@ private:
 
 }  // namespace
 
-void add_motion_options(CLI::App* sub, MotionArgs& args) {
+void add_motion_options(CLI::App* sub, MotionArgs& args, bool with_machine) {
     sub->add_flag("--lathe", args.lathe, "The program is for a lathe (X-Z turning, X written as a diameter)");
-    sub->add_option("--spec,-s", args.spec,
-                    "Controller format, ГОСТ 20999-83 §9 notation (\"X+053 Z+053 F031\"): where the point of a "
-                    "number written without one stands");
+    auto* spec = sub->add_option("--spec,-s", args.spec,
+                                 "Controller format, ГОСТ 20999-83 §9 notation (\"X+053 Z+053 F031\"): where the "
+                                 "point of a number written without one stands");
+    if (with_machine)
+        add_machine_option(sub, args.machine,
+                           "lathe or mill, X as a diameter, its word formats, arc tolerance and rapid rates")
+            ->excludes(spec);
+}
+
+const tape::MachineProfile* motion_machine(const MotionArgs& args) {
+    static std::optional<tape::MachineProfile> loaded;  // one command, one machine
+    if (args.machine.empty()) return nullptr;
+    if (!loaded) loaded = machine_or_fail(args.machine);
+    return &*loaded;
 }
 
 tape::MotionOptions motion_options(const ProgramSource& source, const MotionArgs& args,
                                    const std::optional<tape::FormatSpec>& spec) {
-    tape::MotionOptions o;
+    tape::Dialect dialect = load_options(source).dialect;
+    const tape::MachineProfile* machine = motion_machine(args);
+    if (machine && source.dialect == "auto") dialect = machine->dialect;
+    tape::MotionOptions o = tape::motion_options(dialect);  // the arc tolerance of the dialect's controls
     o.spec = spec ? &*spec : nullptr;
-    o.dialect = load_options(source).dialect;
     o.lathe = args.lathe;
+    if (machine) {
+        o.lathe = machine->kind == tape::MachineKind::lathe;
+        o.diameter = machine->diameter_programming;
+        if (!machine->format.words.empty()) o.spec = &machine->format;
+        if (machine->arc_tolerance_mm > 0 || machine->arc_tolerance_relative > 0) {
+            o.arc_tolerance_mm = machine->arc_tolerance_mm;
+            o.arc_tolerance_relative = machine->arc_tolerance_relative;
+            o.arc_tolerance_linuxcnc = false;
+        }
+    }
     return o;
 }
 

@@ -11,6 +11,7 @@
 
 #include "cli/programs.hpp"
 #include "tape/format_spec.hpp"
+#include "tape/machine.hpp"
 #include "tape/motion.hpp"
 
 namespace cli {
@@ -18,9 +19,13 @@ namespace cli {
 /// What the tape does not say about the machine.
 struct MotionArgs {
     bool lathe = false;
-    std::string spec;  ///< --spec: the control's word formats, for the implied point of words without one
+    std::string spec;     ///< --spec: the control's word formats, for the implied point of words without one
+    std::string machine;  ///< --machine: lathe or mill, diameters, word formats, arc tolerance, rapid rates
 };
-void add_motion_options(CLI::App* sub, MotionArgs& args);
+/// --lathe and --spec, and --machine unless the command has its own (with_machine false).
+void add_motion_options(CLI::App* sub, MotionArgs& args, bool with_machine = true);
+/// The machine's profile, when --machine names one: loaded once, kept for the options that point into it.
+const tape::MachineProfile* motion_machine(const MotionArgs& args);
 /// The interpreter's options (spec, when given, must outlive them).
 tape::MotionOptions motion_options(const ProgramSource& source, const MotionArgs& args,
                                    const std::optional<tape::FormatSpec>& spec);

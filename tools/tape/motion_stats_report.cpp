@@ -66,10 +66,15 @@ std::string tool_text(const tape::ToolFigures& t, bool rapid_known) {
 
 void run_motion_stats(const std::string& input, const ProgramSource& source, const MotionArgs& motion,
                       const StatsArgs& args) {
-    tape::MotionStats stats(args.rapid_mm_per_min);
+    double rapid = args.rapid_mm_per_min;
+    // Without --rapid, the machine's slowest axis: the cycle time is not understated.
+    if (const tape::MachineProfile* m = motion_machine(motion); rapid <= 0 && m)
+        for (const auto& [axis, rate] : m->rapid_mm_per_min)
+            if (rate > 0 && (rapid <= 0 || rate < rapid)) rapid = rate;
+    tape::MotionStats stats(rapid);
     MotionRead read = read_motion(input, source, motion, stats);
     const tape::MotionFigures& f = stats.figures();
-    bool rapid_known = args.rapid_mm_per_min > 0;
+    bool rapid_known = rapid > 0;
     std::string out;
     if (args.json) {
         Json tools = Json::array();
