@@ -79,7 +79,8 @@ void Machine::answer_restart(Transport& line, const Request& request) {
         return;
     }
     send_text(line, plan.text(), name + " from " + plan.block,
-              found.path + ", " + std::to_string(plan.modal.size()) + " block(s) of modal state rebuilt");
+              found.path + ", " + std::to_string(plan.modal.size()) + " block(s) of modal state rebuilt, " +
+                  std::to_string(plan.approach.size()) + " block(s) of approach");
 }
 
 void Machine::say_unknown(Transport& line, const std::string& message, const std::string& comment) {

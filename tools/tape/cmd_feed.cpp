@@ -18,7 +18,7 @@ struct FeedArgs {
     double xon_timeout = 0;
     std::string flow, xon = "0x11", xoff = "0x13";
     std::string from_block;  // restart after a tool break
-    bool show = false;
+    bool show = false, lathe = false;
 };
 
 void run(const FeedArgs& a) {
@@ -44,7 +44,7 @@ void run(const FeedArgs& a) {
     // program or tape is read as it is sent.
     std::optional<SendInput> restart;
     if (!a.from_block.empty()) {
-        auto frames = restart_frames(a.input, a.profile, a.from_block, a.show);
+        auto frames = restart_frames(a.input, a.profile, a.from_block, a.show, a.lathe);
         if (a.show) return;
         restart = frames_in_memory(std::move(frames), display_name(a.input));
     }
@@ -83,9 +83,11 @@ void add_feed(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--from-block", a->from_block,
                     "Restart after a tool break: the program's start, the modal state at block N (G groups, F, S, "
-                    "T, spindle and coolant) rebuilt as blocks, then N to the end; refused, saying why, where it "
-                    "cannot be rebuilt safely")
+                    "T, spindle and coolant) rebuilt as blocks, a safe approach to where N starts (retract, across, "
+                    "down at the feed), then N to the end; refused, saying why, where it cannot be rebuilt safely")
         ->type_name("N");
+    sub->add_flag("--lathe", a->lathe,
+                  "With --from-block: the program is a lathe's (the approach goes X clear, then Z, then X)");
     sub->add_flag("--show", a->show, "With --from-block: print the restart's header on stdout, send nothing");
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
     sub->add_flag("--force", a->force, "Replace an existing file: device");
