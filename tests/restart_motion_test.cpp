@@ -28,9 +28,11 @@ struct Collect : tape::MotionVisitor {
     }
 };
 
-Collect interpret(const std::string& text, tape::Dialect d) {
+Collect interpret(const std::string& text, tape::Dialect d, bool lathe = false) {
     Collect c;
-    tape::interpret_each(text, {}, c, tape::motion_options(d));
+    auto options = tape::motion_options(d);
+    options.lathe = lathe;
+    tape::interpret_each(text, {}, c, options);
     return c;
 }
 
@@ -82,8 +84,8 @@ std::string reason(const std::string& what) {
 }
 
 // For every numbered block of the program (at most ~150 spread over it): refused, or the same moves.
-void check_program(const std::string& name, const std::string& text, tape::Dialect d, Tally& t) {
-    Collect whole = interpret(text, d);
+void check_program(const std::string& name, const std::string& text, tape::Dialect d, Tally& t, bool lathe = false) {
+    Collect whole = interpret(text, d, lathe);
     if (whole.unsimulated() != 0 || whole.moves.empty()) return;  // not a program the interpreter covers
     tape::LoadOptions lo;
     lo.dialect = d;
@@ -102,13 +104,13 @@ void check_program(const std::string& name, const std::string& text, tape::Diale
         ++t.blocks;
         tape::RestartPlan plan;
         try {
-            plan = tape::plan_restart(text, block, d);
+            plan = tape::plan_restart(text, block, d, lathe);
         } catch (const tape::Error& e) {
             ++t.refusals[reason(e.what())];
             continue;
         }
         ++t.restarted;
-        Collect again = interpret(plan.text(), d);
+        Collect again = interpret(plan.text(), d, lathe);
         std::uint64_t rest_line = lines_in(plan.header()) + 1;
         std::string diff =
             differ(whole.moves, first_at_line(whole.moves, line), again.moves, first_at_line(again.moves, rest_line));
@@ -177,6 +179,9 @@ TEST(RestartMotion, RefusedWhereThePlaceIsNotKnown) {
     // A block the interpreter does not simulate.
     why = refusal("%\nO1\nN10 G90 G00 X0 Y0 Z5.\nN20 G68 X0 Y0 R45.\nN30 G01 X10. F100.\nM30\n%\n", "N30");
     EXPECT_NE(why.find("line 4"), std::string::npos) << why;
+    // A rotation in force at the block (the modal blocks do not send it again): where it goes is not known.
+    why = refusal("%\nO1\nN10 G90 G00 X0 Y0 Z5.\nN20 G68 R45.\nN30 G01 X10. F100.\nM30\n%\n", "N30");
+    EXPECT_NE(why.find("a coordinate transformation (G68 at line 4) is in force"), std::string::npos) << why;
     // Values without a point: worth what the control's least increment makes them.
     why = refusal("%\nO1\nN10 G90 G00 X1000 Y0 Z5.\nN30 G01 X10. F100.\nM30\n%\n", "N30");
     EXPECT_NE(why.find("X1000 has no decimal point"), std::string::npos) << why;
@@ -195,6 +200,14 @@ TEST(RestartMotion, SameMovesFromTheBlockOnInTheSamples) {
     check_program("issue example", issue_example, tape::Dialect::fanuc, t);
     for (const char* name : {"circle-examples.txt", "gost-20999-format-example.txt", "koi7-comment.txt"})
         check_program(name, read_text(sample_path(name)), tape::Dialect::gost, t);
+    // Lathes: a Fanuc lathe in diameters, a LinuxCNC lathe in G7 with an arc.
+    check_program("fanuc lathe",
+                  "%\nO10\nN10 G21 G18 G00 X50. Z5.\nN20 G01 X20. F0.2\nN30 Z-30.\nN40 X40.\nN50 M30\n%\n",
+                  tape::Dialect::fanuc, t, true);
+    check_program("linuxcnc lathe",
+                  "G7 G18 G21 G90\nN10 G0 X40. Z2.\nN20 G1 X10. F0.1\nN30 Z-10.\nN40 G2 X20. Z-15. I5. K0\n"
+                  "N50 G1 X30.\nN60 G0 X40.\nN70 M2\n",
+                  tape::Dialect::linuxcnc, t, true);
     report("samples", t);
     EXPECT_GE(t.programs, 2u);
     EXPECT_GT(t.restarted, 0u);
@@ -217,6 +230,21 @@ TEST(RestartMotion, SameMovesFromTheBlockOnInTheOutsidePrograms) {
         }
     }
     report("outside", t);
+    EXPECT_GT(t.programs, 0u);
+}
+
+// The lathe programs among them, restarted as a lathe's (X clear, Z, X; X in diameters where the
+// dialect says so).
+TEST(RestartMotion, SameMovesFromTheBlockOnInTheOutsideLathePrograms) {
+    SKIP_WITHOUT_SHARED_DATA("outside2");
+    Tally t;
+    for (const char* name : {"outside/lcnc/lathe_pawn.ngc", "outside/lcnc/lathecomp.ngc",
+                             "outside2/fanuc/gcw_FANUC0T.nc", "outside2/other/gcw_TOKARKA.NC"}) {
+        if (!std::filesystem::exists(shared_data(name))) continue;
+        std::string text = read_text(shared_data(name));
+        check_program(name, text, tape::guess_dialect(text).dialect, t, true);
+    }
+    report("outside lathes", t);
     EXPECT_GT(t.programs, 0u);
 }
 

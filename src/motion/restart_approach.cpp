@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 
+#include "motion/machine.hpp"
 #include "tape/error.hpp"
 #include "tape/motion.hpp"
 
@@ -115,6 +116,23 @@ void check_known(const ApproachInput& in, const Interpreter& run, const Before& 
                                  ": no safe place to retract to is known");
 }
 
+// A coordinate transformation (G68 rotation, G51 scaling, G16 polar) in force at the block: the modal
+// blocks do not send it again, and the interpreter does not follow the moves under it.
+void check_transform(const ApproachInput& in, const Block& target) {
+    std::optional<Word> in_force;
+    for (std::size_t i = 0; i < in.index; ++i)
+        for (const auto& w : in.program->blocks[i].words) {
+            if (w.address != 'G' || w.macro) continue;
+            double code = std::strtod(w.text.c_str() + 1, nullptr);
+            auto kind = motion::classify(static_cast<int>(std::lround(code * 10)), in.dialect, in.lathe);
+            if (kind == motion::GKind::transform) in_force = w;
+            if (kind == motion::GKind::transform_off) in_force.reset();
+        }
+    if (in_force)
+        refuse(target.where, "a coordinate transformation (" + in_force->text + " at line " +
+                                 std::to_string(in_force->where.line) + ") is in force: it is not rebuilt");
+}
+
 }  // namespace
 
 std::vector<std::string> restart_approach(const ApproachInput& in) {
@@ -129,9 +147,11 @@ std::vector<std::string> restart_approach(const ApproachInput& in) {
     run.program_start(p);
     for (std::size_t i = 0; i < in.index; ++i) run.block(p.blocks[i]);
     check_known(in, run, before, target);
+    check_transform(in, target);
 
-    const ModalState& st = run.state();
+    const ModalState st = run.state();
     const Point at = run.position();
+    double safe = std::max(before.highest.at(st.work_offset), in.lathe ? at.x : at.z);
     double scale = st.inch ? 25.4 : 1.0;
     int places = decimals(p, in.index, st.inch);
     auto value = [&](double mm, bool x_on_lathe = false) {
@@ -141,7 +161,6 @@ std::vector<std::string> restart_approach(const ApproachInput& in) {
     std::string first = in.lathe && in.dialect == Dialect::fanuc ? "" : "G90 ";
     if (in.dialect == Dialect::linuxcnc && !st.arc_incremental) first += "G90.1 ";  // not in the modal blocks
     if (in.dialect == Dialect::linuxcnc && in.lathe) first += st.diameter ? "G7 " : "G8 ";
-    double safe = std::max(before.highest.at(st.work_offset), in.lathe ? at.x : at.z);
     double depth = in.lathe ? at.x : at.z;
     std::vector<std::string> out;
     if (in.lathe) {
