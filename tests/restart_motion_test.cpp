@@ -9,6 +9,7 @@
 #include <set>
 #include <vector>
 
+#include "tape/decode.hpp"
 #include "tape/error.hpp"
 #include "tape/motion.hpp"
 #include "tape/restart.hpp"
@@ -193,13 +194,16 @@ TEST(RestartMotion, RefusedWhereThePlaceIsNotKnown) {
     EXPECT_NE(why.find("no feed (F)"), std::string::npos) << why;
 }
 
-// The property over the project's own programs: the tests' example and the sample tapes' texts (the
-// tapes' decoded programs, those with decimal points).
+// The property over the project's own programs: the issue's example, the sample tapes, two lathes.
 TEST(RestartMotion, SameMovesFromTheBlockOnInTheSamples) {
     Tally t;
     check_program("issue example", issue_example, tape::Dialect::fanuc, t);
-    for (const char* name : {"circle-examples.txt", "gost-20999-format-example.txt", "koi7-comment.txt"})
-        check_program(name, read_text(sample_path(name)), tape::Dialect::gost, t);
+    // The sample tapes whose programs write decimal points, decoded (the 16К20Ф3 tape's do not).
+    for (const char* name : {"circle-examples.iso.ptp", "gost-20999-format-example.iso.ptp", "koi7-comment.iso.ptp"}) {
+        auto decoded = tape::decode(read_frames(sample_path(name)), tape::DecodeOptions{});
+        ASSERT_TRUE(decoded.ok()) << name;
+        check_program(name, decoded.text, tape::Dialect::gost, t);
+    }
     // Lathes: a Fanuc lathe in diameters, a LinuxCNC lathe in G7 with an arc.
     check_program("fanuc lathe",
                   "%\nO10\nN10 G21 G18 G00 X50. Z5.\nN20 G01 X20. F0.2\nN30 Z-30.\nN40 X40.\nN50 M30\n%\n",
