@@ -72,7 +72,7 @@ void Machine::answer_restart(Transport& line, const Request& request) {
     RestartPlan plan;
     try {
         auto bytes = read_file(found.path);
-        plan = plan_restart(std::string(bytes.begin(), bytes.end()), request.block, s_.dialect);
+        plan = plan_restart(std::string(bytes.begin(), bytes.end()), request.block, s_.dialect, s_.lathe);
     } catch (const Error& e) {
         say_unknown(line, "no restart of " + name + " at " + request.block + " sent: " + e.what(),
                     "NO RESTART OF " + name + " AT " + request.block);

@@ -124,11 +124,13 @@ void more_machine_key(const std::string& key, const Value& v, MachineSettings& m
         m.max_punch_out = static_cast<std::uint64_t>(v.whole(1024, std::int64_t{1} << 32));
     } else if (key == "answer_unknown") {
         m.answer_unknown = v.flag();
+    } else if (key == "lathe") {
+        m.lathe = v.flag();
     } else {
         bad(line_of(v.node), v.what.substr(0, v.what.rfind(':')) + ": unknown key '" + key +
                                  "' (known: name, device, code, parity, leader, trailer, crlf, percent, dialect, "
                                  "rate, delay, block_delay, flow, wait_xon, xon_timeout, xon, xoff, burst, "
-                                 "receive_timeout, max_punch_out, answer_unknown)");
+                                 "receive_timeout, max_punch_out, answer_unknown, lathe)");
     }
 }
 
