@@ -14,7 +14,7 @@ namespace {
 using namespace std::chrono_literals;
 
 const std::string program_1234 =
-    "%\nO1234 (BRACKET)\nN10 G21 G17 G90\nN20 T1 M06\nN30 S1200 M03\nN40 G00 X10. Y10.\nN50 G01 Z-1. F100.\n"
+    "%\nO1234 (BRACKET)\nN10 G21 G17 G90\nN20 T1 M06\nN30 S1200 M03\nN40 G00 X10. Y10. Z5.\nN50 G01 Z-1. F100.\n"
     "N60 X20.\nN70 M30\n%\n";
 
 // A long program: n blocks.
@@ -328,10 +328,26 @@ TEST(DncService, RestartAfterAToolBreak) {
     run.write_config();
     ASSERT_TRUE(run.start()) << run.log();
     run.controls[0]->punch("%\n(RESTART=O1234,N50)\n%\n");
-    EXPECT_EQ(from_percent(run.controls[0]->receive_text(500ms, 10s)),
-              "%\nO1234 (BRACKET)\n(RESTART AT N50)\nG21 G17 G90\nT1 M06\nS1200 M03\nG00\nN50 G01 Z-1. F100.\n"
-              "N60 X20.\nN70 M30\n%\n");
+    EXPECT_EQ(
+        from_percent(run.controls[0]->receive_text(500ms, 10s)),
+        "%\nO1234 (BRACKET)\n(RESTART AT N50)\nG21 G17 G90\nT1 M06\nS1200 M03\nG00\nG90 G00 Z5.\nG00 X10. Y10.\nG00\n"
+        "N50 G01 Z-1. F100.\n"
+        "N60 X20.\nN70 M30\n%\n");
     ASSERT_TRUE(run.wait_log("sent O1234 from N50", 5s)) << run.log();
+}
+
+// On a machine said to be a lathe, the approach goes X clear (the largest X reached by rapid), Z, then X.
+TEST(DncService, RestartOnALathe) {
+    DncRun run(1);
+    DNC_OR_SKIP(run);
+    run.add_program("O10.nc", "%\nO10\nN10 G21 G18 G00 X50. Z5.\nN20 G01 X20. F0.2\nN30 Z-30.\nN40 X40.\nN50 M30\n%\n");
+    run.write_config("dialect = \"fanuc\"\nlathe = true");
+    ASSERT_TRUE(run.start()) << run.log();
+    run.controls[0]->punch("%\n(RESTART=O10,N40)\n%\n");
+    EXPECT_EQ(from_percent(run.controls[0]->receive_text(500ms, 10s)),
+              "%\nO10\n(RESTART AT N40)\nG21 G18\nG01 F0.2\nG00 X50.\nG00 Z-30.\nG01 X20. F0.2\nG01 F0.2\nN40 X40.\n"
+              "N50 M30\n%\n");
+    ASSERT_TRUE(run.wait_log("sent O10 from N40", 5s)) << run.log();
 }
 
 }  // namespace

@@ -23,26 +23,31 @@ std::string refusal(const std::string& text, const std::string& block) {
 TEST(Restart, ModalStateRebuiltAsBlocks) {
     const std::string text =
         "%\nO1000 (POCKET)\nN10 G20 G18 G91 G95 G55\nN20 G21 G17 G90 G94 G54\nN30 T3 M06\nN40 G97 S2500 M04\n"
-        "N45 M07 M08\nN50 G43 H3 Z5.\nN60 G41 D13 G01 X0 F300.\nN70 G02 X10. Y10. R10.\nN80 X20. M09\nN90 M30\n%\n";
+        "N45 M07 M08\nN50 G43 H3 G00 X-10. Y0 Z5.\nN60 G41 D13 G01 X0 F300.\nN70 G02 X10. Y10. R10.\nN75 G40 G01 X12.\n"
+        "N80 X20. M09\nN90 M30\n%\n";
     tape::RestartPlan p = tape::plan_restart(text, "N80");
     EXPECT_EQ(p.start, "%\nO1000 (POCKET)\n");
     EXPECT_EQ(p.marker, "(RESTART AT N80)");
     EXPECT_EQ(p.modal, (std::vector<std::string>{"G21 G17 G90 G94 G54", "T3 M06", "G97 S2500 M04", "M07 M08", "G43 H3",
-                                                 "G41 D13", "G02 F300."}));
+                                                 "G40", "G01 F300."}));
+    // Then the tool to where N80 starts (it never went below the height N50 took it to) and G01 again.
+    EXPECT_EQ(p.approach, (std::vector<std::string>{"G90 G00 Z5.", "G00 X12. Y10.", "G01 F300."}));
     EXPECT_EQ(p.rest, "N80 X20. M09\nN90 M30\n%\n");
-    EXPECT_EQ(p.line, 11u);
+    EXPECT_EQ(p.line, 12u);
     EXPECT_EQ(p.text(), p.header() + p.rest);
 }
 
 TEST(Restart, GostProgramWithItsOwnGroups) {
-    const std::string text = "%\nN001 G71 G17 G90\nN002 T01 S800 M13\nN003 G00 X10 Y10\nN004 G01 X20 F150\nN005 M02\n";
+    const std::string text =
+        "%\nN001 G71 G17 G90\nN002 T01 S800 M13\nN003 G00 X10. Y10. Z5.\nN004 G01 X20 F150\nN005 M02\n";
     tape::RestartPlan p = tape::plan_restart(text, "N004", tape::Dialect::gost);
     EXPECT_EQ(p.modal, (std::vector<std::string>{"G71 G17 G90", "T01", "S800 M03", "M08", "G00"}));
+    EXPECT_EQ(p.approach, (std::vector<std::string>{"G90 G00 Z5.", "G00 X10. Y10.", "G00"}));
     EXPECT_EQ(p.block, "N004");
 }
 
 TEST(Restart, MacroAssignmentsCarriedInOrder) {
-    const std::string text = "%\nO1\n#1=5.\n#2=[#1*2]\nN10 G90 G00 X#1\nN20 G01 Y#2 F100.\nN30 M30\n%\n";
+    const std::string text = "%\nO1\n#1=5.\n#2=[#1*2]\nN10 G90 G00 X0 Y0 Z5.\nN20 G01 Y#2 F100.\nN30 M30\n%\n";
     tape::RestartPlan p = tape::plan_restart(text, "N20");
     ASSERT_GE(p.modal.size(), 2u);
     EXPECT_EQ(p.modal[0], "#1=5.");

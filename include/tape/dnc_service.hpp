@@ -41,6 +41,7 @@ struct MachineSettings {
     std::chrono::milliseconds receive_timeout{10000};  ///< a punch-out quiet this long has ended
     std::uint64_t max_punch_out = 16u << 20;           ///< bytes; longer is a flood, kept as FAILED
     bool answer_unknown = false;                       ///< answer an unknown name with a short comment program
+    bool lathe = false;  ///< a lathe: a restart's approach goes X clear, then Z, then X (tape/restart.hpp)
 
     /// Equal settings: a reload leaves such a machine's transfer alone.
     bool same_settings(const MachineSettings& other) const;

@@ -77,14 +77,15 @@ void Machine::answer_restart(Transport& line, const Request& request) {
     }
     RestartPlan plan;
     try {
-        plan = plan_restart(read_program(found.path), request.block, s_.dialect);
+        plan = plan_restart(read_program(found.path), request.block, s_.dialect, s_.lathe);
     } catch (const Error& e) {
         say_unknown(line, "no restart of " + name + " at " + request.block + " sent: " + e.what(),
                     "NO RESTART OF " + name + " AT " + request.block);
         return;
     }
     send_text(line, plan.text(), name + " from " + plan.block,
-              found.path + ", " + std::to_string(plan.modal.size()) + " block(s) of modal state rebuilt");
+              found.path + ", " + std::to_string(plan.modal.size()) + " block(s) of modal state rebuilt, " +
+                  std::to_string(plan.approach.size()) + " block(s) of approach");
 }
 
 void Machine::say_unknown(Transport& line, const std::string& message, const std::string& comment) {

@@ -18,7 +18,7 @@ bool MachineSettings::same_settings(const MachineSettings& other) const {
     auto key = [](const MachineSettings& m) {
         return std::tie(m.name, m.device, m.code, m.parity, m.leader, m.trailer, m.crlf, m.percent, m.dialect, m.rate,
                         m.block_delay, m.flow, m.wait_xon, m.xon_timeout, m.xon, m.xoff, m.burst, m.receive_timeout,
-                        m.max_punch_out, m.answer_unknown);
+                        m.max_punch_out, m.answer_unknown, m.lathe);
     };
     return key(a) == key(b);
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "motion/restart_approach.hpp"
 #include "tape/error.hpp"
 #include "tape/program.hpp"
 #include "tape/restart.hpp"
@@ -435,6 +436,7 @@ void end_line(std::string& s) {
 std::string RestartPlan::header() const {
     std::string out = start + marker + line_end;
     for (const auto& b : modal) out += b + line_end;
+    for (const auto& b : approach) out += b + line_end;
     return out;
 }
 
@@ -444,7 +446,29 @@ std::string RestartPlan::text() const {
     return out;
 }
 
-RestartPlan plan_restart(std::string_view text, std::string_view block, Dialect dialect) {
+namespace {
+
+// The approach (src/motion/restart_approach.cpp, the interpreter's layer: only it knows where the tool
+// goes), then the distance mode and motion mode of the block again: the approach left G90 and G00/G01.
+std::vector<std::string> approach(const Program& p, std::size_t index, Dialect dialect, bool lathe, const Walk& walk,
+                                  const Block& target) {
+    const auto& s = walk.state();
+    if (!s.cutter.empty() && !s.cutter.starts_with("G40") && !s.cutter.starts_with("G040"))
+        refuse(target.where, "cutter compensation (" + s.cutter +
+                                 ") is in force: the tool stands off the programmed path; restart where it starts");
+    ApproachInput in{&p, index, dialect, lathe, s.feed, s.feed_mode == "G93"};
+    auto out = restart_approach(in);
+    std::string again;
+    if (s.distance == "G91") join(again, s.distance);
+    join(again, s.motion);
+    join(again, s.feed);
+    if (!again.empty()) out.push_back(again);
+    return out;
+}
+
+}  // namespace
+
+RestartPlan plan_restart(std::string_view text, std::string_view block, Dialect dialect, bool lathe) {
     LoadOptions lo;
     lo.dialect = dialect == Dialect::automatic ? guess_dialect(text).dialect : dialect;
     LoadedTape tape = load(std::string(text), {}, lo);
@@ -465,6 +489,7 @@ RestartPlan plan_restart(std::string_view text, std::string_view block, Dialect 
     plan.modal = walk.assignments();
     auto state = walk.state().blocks();
     plan.modal.insert(plan.modal.end(), state.begin(), state.end());
+    plan.approach = approach(p, found.index, lo.dialect, lathe, walk, target);
     plan.rest = rest_of_program(tape, p, target);
     // The blocks made up here end as the program's own lines do: a CR LF program stays CR LF.
     auto lf = plan.rest.find('\n');

@@ -19,11 +19,11 @@ struct FeedArgs {
     double xon_timeout = 0;
     std::string flow, xon = "0x11", xoff = "0x13";
     std::string from_block;  // restart after a tool break
-    bool show = false;
+    bool show = false, lathe = false;
     std::string machine;
 };
 
-// --machine: the profile's code, dialect, flow, DC1 wait and reader speed where the command line gave none.
+// --machine: the profile's code, dialect, flow, DC1 wait, reader speed and lathe where the command line gave none.
 void machine_line(FeedArgs& a) {
     auto m = machine_or_fail(a.machine);
     if (!m) return;
@@ -33,6 +33,7 @@ void machine_line(FeedArgs& a) {
     if (a.flow.empty() && l.flow)
         a.flow = *l.flow == tape::Flow::xonxoff ? "xonxoff" : *l.flow == tape::Flow::rtscts ? "rtscts" : "none";
     if (l.dc_codes) a.wait_xon = true;
+    if (m->kind == tape::MachineKind::lathe) a.lathe = true;  // a restart's approach: X clear, then Z
     if (a.rate == 0 && a.delay_ms == 0) a.rate = l.reader_frames_per_second;
 }
 
@@ -60,7 +61,7 @@ void run(FeedArgs& a) {
     // program or tape is read as it is sent.
     std::optional<SendInput> restart;
     if (!a.from_block.empty()) {
-        auto frames = restart_frames(a.input, a.profile, a.from_block, a.show);
+        auto frames = restart_frames(a.input, a.profile, a.from_block, a.show, a.lathe);
         if (a.show) return;
         restart = frames_in_memory(std::move(frames), display_name(a.input));
     }
@@ -101,9 +102,11 @@ void add_feed(CLI::App& app) {
         ->capture_default_str();
     sub->add_option("--from-block", a->from_block,
                     "Restart after a tool break: the program's start, the modal state at block N (G groups, F, S, "
-                    "T, spindle and coolant) rebuilt as blocks, then N to the end; refused, saying why, where it "
-                    "cannot be rebuilt safely")
+                    "T, spindle and coolant) rebuilt as blocks, a safe approach to where N starts (retract, across, "
+                    "down at the feed), then N to the end; refused, saying why, where it cannot be rebuilt safely")
         ->type_name("N");
+    sub->add_flag("--lathe", a->lathe,
+                  "With --from-block: the program is a lathe's (the approach goes X clear, then Z, then X)");
     sub->add_flag("--show", a->show, "With --from-block: print the restart's header on stdout, send nothing");
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
     sub->add_flag("--force", a->force, "Replace an existing file: device");

@@ -32,19 +32,20 @@ std::string program_text(const std::string& path, const FeedProfile& p) {
 }  // namespace
 
 std::vector<tape::Frame> restart_frames(const std::string& path, const FeedProfile& p, const std::string& block,
-                                        bool show) {
+                                        bool show, bool lathe) {
     std::string name = display_name(path);
     tape::RestartPlan plan;
     try {
         plan = tape::plan_restart(program_text(path, p), block,
-                                  tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic));
+                                  tape::parse_dialect(p.dialect).value_or(tape::Dialect::automatic), lathe);
     } catch (const tape::Error& e) {
         fail(name, tape::Errc::usage, std::string("cannot restart at ") + block + ": " + e.what());
     }
     if (globals().verbosity >= 0)
         say(name, "restart at " + plan.block + " (line " + std::to_string(plan.line) + "), " +
                       std::to_string(plan.skipped_blocks) + " block(s) before it not sent, " +
-                      std::to_string(plan.modal.size()) + " block(s) of modal state rebuilt");
+                      std::to_string(plan.modal.size()) + " block(s) of modal state rebuilt, " +
+                      std::to_string(plan.approach.size()) + " block(s) of approach");
     if (show) {
         std::cout << plan.header();
         return {};

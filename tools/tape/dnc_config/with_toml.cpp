@@ -131,12 +131,14 @@ void more_machine_key(const std::string& key, const Value& v, MachineSettings& m
         m.max_punch_out = static_cast<std::uint64_t>(v.whole(1024, std::int64_t{1} << 32));
     } else if (key == "answer_unknown") {
         m.answer_unknown = v.flag();
+    } else if (key == "lathe") {
+        m.lathe = v.flag();
     } else {
         bad(line_of(v.node),
             v.what.substr(0, v.what.rfind(':')) + ": unknown key '" + key +
                 "' (known: name, machine, device, code, parity, leader, trailer, crlf, percent, dialect, "
                 "rate, delay, block_delay, flow, wait_xon, xon_timeout, xon, xoff, burst, "
-                "receive_timeout, max_punch_out, answer_unknown)");
+                "receive_timeout, max_punch_out, answer_unknown, lathe)");
     }
 }
 
@@ -173,7 +175,8 @@ void machine_key(const std::string& key, const Value& v, MachineSettings& m) {
     }
 }
 
-// machine = "NAME": the profile's line settings (code, parity, dialect, flow, DC1 wait, reader speed), which
+// machine = "NAME": the profile's line settings (code, parity, dialect, flow, DC1 wait, reader speed) and
+// whether it is a lathe (a restart's approach), which
 // the [[machine]]'s own keys then override.
 void profile_settings(const Value& v, MachineSettings& m) {
     tape::MachineProfile p;
@@ -190,6 +193,7 @@ void profile_settings(const Value& v, MachineSettings& m) {
     if (l.flow) m.flow = *l.flow;
     m.wait_xon = l.dc_codes;
     if (l.reader_frames_per_second > 0) m.rate = l.reader_frames_per_second;
+    m.lathe = p.kind == tape::MachineKind::lathe;
 }
 
 MachineSettings read_machine(const toml::table& t, std::size_t index) {
