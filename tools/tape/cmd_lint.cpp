@@ -111,9 +111,8 @@ void run(const LintArgs& a) {
     if (machine && spec)
         fail("", tape::Errc::usage, "--spec and --machine: the machine's profile has its format; give one");
     if (machine && a.source.dialect == "auto") in.load.dialect = machine->dialect;
-    tape::LintVisitor linter(
-        tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict, machine ? &*machine : nullptr,
-                         a.arc_tolerance});
+    tape::LintVisitor linter(tape::LintOptions{spec ? &*spec : nullptr, globals().max_errors, a.strict,
+                                               machine ? &*machine : nullptr, a.arc_tolerance});
     load_program(in, linter, true);
     std::vector<tape::Finding> findings = linter.findings();
     std::uint64_t unlisted = 0;
