@@ -55,11 +55,19 @@ void MotionMachine::check_arc(int u, int v) {
         return;
     }
     if (!arc_off(r1, r2)) return;
-    if (opt_.lathe_unknown && st.plane == Plane::zx && v == 0) {
-        // X may be a lathe's diameter: the same words with X halved, I still a radius.
-        double half_s = mv_.start.x / 2, half_e = mv_.end.x / 2, i = mv_.centre.x - mv_.start.x;
-        double rd2 = std::hypot(mv_.end.z - mv_.centre.z, half_e - (half_s + i));
-        if (!arc_off(r1, rd2)) return;
+    // X may be a lathe's diameter: the same words with X halved, I still a radius.
+    auto fits_as_diameter = [&](const Point& c) {
+        double half_s = mv_.start.x / 2, half_e = mv_.end.x / 2, i = c.x - mv_.start.x;
+        double rd1 = std::hypot(mv_.start.z - c.z, i), rd2 = std::hypot(mv_.end.z - c.z, half_e - (half_s + i));
+        return !arc_off(rd1, rd2);
+    };
+    bool lathe_plane = opt_.lathe_unknown && st.plane == Plane::zx && v == 0;
+    if (lathe_plane && fits_as_diameter(mv_.centre)) return;
+    if (iso_centre_) {  // a ГОСТ arc whose I may be along X, as ISO 6983 has it
+        const Point& c = *iso_centre_;
+        if (!arc_off(std::hypot(mv_.start.z - c.z, mv_.start.x - c.x), std::hypot(mv_.end.z - c.z, mv_.end.x - c.x)))
+            return;
+        if (lathe_plane && fits_as_diameter(c)) return;
     }
     std::string tolerance = fixed(opt_.arc_tolerance_mm) + " mm";
     if (opt_.arc_tolerance_relative > 0)

@@ -138,6 +138,13 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
     bool closed = std::hypot(eu - su, ev - sv) < 1e-9;
     int p = w_.ok('P') && dialect_ == Dialect::linuxcnc ? static_cast<int>(std::clamp(w_.get('P'), 1.0, 1e6)) : 1;
     mv_.turns = p - 1 + (closed && !by_r ? 1 : 0);
+    iso_centre_.reset();
+    if (dialect_ == Dialect::gost && st.plane == Plane::zx && !by_r && st.arc_incremental && ax.cu == 'I' &&
+        !w_.has('J') && w_.ok('I')) {
+        iso_centre_ = mv_.centre;
+        iso_centre_->z = pos.z;
+        iso_centre_->x = pos.x + w_.get('I') * s;
+    }
     if (ends_known && !by_r && checkable_arc(plane_bits, ax.cu, ax.cv)) check_arc(ax.u, ax.v);
     emit();
     pos = end;

@@ -3,6 +3,7 @@
 // arcs.cpp and cycles.cpp make the moves of arcs and canned cycles.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "motion/words.hpp"
@@ -87,6 +88,9 @@ private:
     void arc(const Point& end, unsigned end_known);
     // arc_check.cpp
     void check_arc(int u, int v);
+    /// A ГОСТ arc in Z-X with I and no K: the seeds' controller reads I along Z, ISO 6983 along X. The
+    /// centre of the ISO reading, for the arc check to find an arc off its circle only when both are.
+    std::optional<Point> iso_centre_{};
     bool checkable_arc(unsigned plane_bits, char cu, char cv) const;
     bool arc_off(double r1, double r2) const;
     // cycles.cpp
