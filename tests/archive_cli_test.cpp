@@ -186,6 +186,27 @@ TEST(ArchiveCli, AddKeepsTheFirstRestorationAndRecordsBoth) {
     EXPECT_NE(r.err.find("the same images (2)"), std::string::npos) << r.err;
 }
 
+// --machine: the reads are restored with the profile, which the bag keeps, so that add and verify restore
+// with the same one.
+TEST(ArchiveCli, TheMachinesProfileIsKeptAndUsedAgain) {
+    TwoReads t;
+    std::string bag = t.dir.file("bag");
+    Outcome r = tape_run({"archive", "create", bag, "--read", t.r1, "--machine", "16k20f3s5"}, t.dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::string kept = read_text(bag + "/data/machine.toml");
+    EXPECT_NE(kept.find("Н22-1М"), std::string::npos) << "not the 16К20Ф3С5's profile: " << kept.substr(0, 200);
+    EXPECT_NE(read_text(bag + "/bag-info.txt").find("Tape-Machine: 16k20f3s5 (data/machine.toml)"), std::string::npos);
+    EXPECT_EQ(sh("cd " + bag + " && sha256sum -c --strict manifest-sha256.txt"), 0);
+    ASSERT_EQ(tape_run({"archive", "add", bag, "--read", t.r2}, t.dir).status, 0);
+    r = tape_run({"archive", "verify", bag}, t.dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("the same images (2)"), std::string::npos) << r.err;
+    // A profile that does not read leaves no bag.
+    r = tape_run({"archive", "create", t.dir.file("none"), "--read", t.r1, "--machine", "no-such-machine"}, t.dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_FALSE(fs::exists(t.dir.file("none")));
+}
+
 TEST(ArchiveCli, IndexListsEveryBag) {
     TwoReads t;
     fs::create_directory(t.dir.file("bags"));

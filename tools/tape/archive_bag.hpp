@@ -2,15 +2,17 @@
 // read added, a bag verified (archive_verify.cpp), a folder of bags indexed (archive_index.cpp).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "tape/archive.hpp"
+#include "tape/machine.hpp"
 
 namespace cli {
 
 struct ArchiveCreateArgs {
-    std::string bag, label;
+    std::string bag, label, machine;
     std::vector<std::string> reads, scans, photos, meta;
     bool force = false;
 };
@@ -45,8 +47,18 @@ struct RestorationSummary {
 /// Restores the reads at paths (named in the bag by names, relative to data/) and adds the restoration's
 /// files to the bag, each name with suffix ("" or "-2"): restoredS.ptp, its report restoredS.ptp.restore.json
 /// and restoredS.html, contentsS/, formatS.txt, tapeS.svg.
+/// machine: the profile the reads are restored with (--machine), or nullptr.
 RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suffix,
-                                   const std::vector<std::string>& paths, const std::vector<std::string>& names);
+                                   const std::vector<std::string>& paths, const std::vector<std::string>& names,
+                                   const tape::MachineProfile* machine);
+
+/// Where a bag keeps the machine profile its reads were restored with: a copy, so that restoring them
+/// again years later does not depend on the profile tape then bundles.
+inline constexpr const char* bag_machine_file = "machine.toml";
+/// The profile of a bag (data/machine.toml), or nullopt when it was made without --machine.
+std::optional<tape::MachineProfile> bag_machine(const std::string& bag);
+/// The text of the profile --machine names (bundled, a user's own or a path), to keep in a bag.
+std::string machine_profile_text(const tape::MachineProfile& profile);
 
 /// The restorations a bag holds, from its payload: ("restored.ptp", reads named relative to data/), in order.
 struct BagRestoration {

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "archive_bag.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/run.hpp"
 
@@ -81,14 +82,17 @@ void archive_create(const ArchiveCreateArgs& a) {
     copy_in(*bag, a.reads, read_names);
     copy_in(*bag, a.scans, scan_names);
     copy_in(*bag, a.photos, photo_names);
+    std::optional<tape::MachineProfile> machine = machine_or_fail(a.machine);
+    if (machine) bag->add(bag_machine_file, machine_profile_text(*machine));
     std::vector<std::string> paths = a.reads, names = read_names;
     paths.insert(paths.end(), a.scans.begin(), a.scans.end());
     names.insert(names.end(), scan_names.begin(), scan_names.end());
-    RestorationSummary r = add_restoration(*bag, "", paths, names);
+    RestorationSummary r = add_restoration(*bag, "", paths, names, machine ? &*machine : nullptr);
     std::vector<tape::BagInfoEntry> info;
     if (!tape::bag_info_value(meta, "External-Identifier"))
         info.push_back({"External-Identifier", std::filesystem::path(a.bag).lexically_normal().filename().string()});
     if (!a.label.empty()) info.push_back({"Tape-Label", a.label});
+    if (machine) info.push_back({"Tape-Machine", machine->name + " (data/" + bag_machine_file + ")"});
     info.insert(info.end(), meta.begin(), meta.end());
     info.push_back({"Bag-Software-Agent", std::string("tape ") + TAPE_VERSION});
     info.push_back({"Tape-Command", command_line()});
@@ -126,7 +130,8 @@ void archive_add(const std::string& path, const std::vector<std::string>& reads,
     copy_in(*bag, reads, read_names);
     copy_in(*bag, scans, scan_names);
     std::string suffix = "-" + std::to_string(before.size() + 1);
-    RestorationSummary r = add_restoration(*bag, suffix, paths, names);
+    std::optional<tape::MachineProfile> machine = bag_machine(path);  // as the bag was made
+    RestorationSummary r = add_restoration(*bag, suffix, paths, names, machine ? &*machine : nullptr);
     std::vector<tape::BagInfoEntry> info = bag->previous_info();
     std::erase_if(info, [](const tape::BagInfoEntry& e) { return e.label == "Bagging-Date"; });
     info.push_back({"Tape-Command", command_line()});

@@ -7,6 +7,7 @@
 
 #include "archive_bag.hpp"
 #include "archive_contents.hpp"
+#include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/outputs.hpp"
 #include "restore_html.hpp"
@@ -66,13 +67,16 @@ std::string RestorationSummary::words() const {
 }
 
 RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suffix,
-                                   const std::vector<std::string>& paths, const std::vector<std::string>& names) {
+                                   const std::vector<std::string>& paths, const std::vector<std::string>& names,
+                                   const tape::MachineProfile* machine) {
     ReadsAndDoubts in = read_tapes_or_pictures(paths);
     RestoreReportInput report;
     report.code = code_for_reads("auto", "", in.reads, report.code_text);
     report.names = names;
     describe_reads(in, report);
-    tape::RestoreResult result = run_restore(RestoreChoices{}, in, report);
+    RestoreChoices choices;
+    choices.machine = machine;
+    tape::RestoreResult result = run_restore(choices, in, report);
     report.result = &result;
     say_about_reads(report, result);
     RestorationSummary s;
@@ -109,6 +113,24 @@ RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suff
     s.unchecked = result.unchecked;
     s.code_misfit = result.code_misfit;
     return s;
+}
+
+std::optional<tape::MachineProfile> bag_machine(const std::string& bag) {
+    std::string path = bag + "/data/" + bag_machine_file;
+    if (!tape::path_exists(path)) return std::nullopt;
+    return machine_or_fail(path, path);
+}
+
+std::string machine_profile_text(const tape::MachineProfile& profile) {
+    if (profile.file == "built-in")
+        for (const auto& m : tape::bundled_machines())
+            if (m.name == profile.name) return std::string(m.text);
+    try {
+        auto bytes = tape::read_file(profile.file);
+        return std::string(bytes.begin(), bytes.end());
+    } catch (const tape::Error& e) {
+        fail(profile.file, e);
+    }
 }
 
 std::vector<BagRestoration> bag_restorations(const std::string& bag) {

@@ -26,13 +26,15 @@ std::string difference(const std::string& a, const std::string& b) {
 }
 
 // Restores the reads again as when the bag was made; false when the image is not the one held.
-bool same_restoration(const std::string& bag, const BagRestoration& r) {
+bool same_restoration(const std::string& bag, const BagRestoration& r, const tape::MachineProfile* machine) {
     std::vector<std::string> paths;
     for (const auto& n : r.reads) paths.push_back(bag + "/data/" + n);
     ReadsAndDoubts in = read_tapes_or_pictures(paths);
     RestoreReportInput report;
     report.code = code_for_reads("auto", "", in.reads, report.code_text);
-    tape::RestoreResult result = run_restore(RestoreChoices{}, in, report);
+    RestoreChoices choices;
+    choices.machine = machine;  // the profile the bag keeps, as when it was made
+    tape::RestoreResult result = run_restore(choices, in, report);
     tape::ImageWriteOptions wo;
     if (report.code) wo.annotate = &*report.code;
     std::string again = image_text(output_format("", r.image), result.frames, wo, r.image);
@@ -64,8 +66,9 @@ void archive_verify(const std::string& bag, bool fast) {
                        " bytes, every " + algorithms + " checksum right";
     if (fast) return say(bag, done + " (--fast: the restorations were not made again)");
     std::vector<BagRestoration> rs = bag_restorations(bag);
+    std::optional<tape::MachineProfile> machine = bag_machine(bag);
     bool same = true;
-    for (const auto& r : rs) same = same_restoration(bag, r) && same;
+    for (const auto& r : rs) same = same_restoration(bag, r, machine ? &*machine : nullptr) && same;
     if (!same) {
         say(bag, "checksums right, but a restoration is not what its reads give (see above)");
         throw Exit{bad_data};

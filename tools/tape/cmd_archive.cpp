@@ -2,6 +2,7 @@
 // scans and photos, the restored image with its report, what it holds, checksums — and verified years
 // later. The steps are in archive_*.cpp; this file holds the options.
 #include "archive_bag.hpp"
+#include "cli/machines.hpp"
 #include "commands.hpp"
 
 namespace cli {
@@ -22,6 +23,9 @@ void add_archive_create(CLI::App* archive) {
     sub->add_option("--label", a->label, "The tape's label as written on it (bag-info.txt Tape-Label)");
     sub->add_option("--meta", a->meta,
                     "KEY=VALUE for bag-info.txt (Source-Organization=..., External-Identifier=..., Contact-Name=...)");
+    add_machine_option(sub, a->machine,
+                       "the reads are restored with its word formats and code tables; the profile is kept in "
+                       "the bag (data/machine.toml), so that add and verify restore as create did");
     sub->add_flag("--force", a->force, "Replace an existing bag (the new one takes its place whole)");
     sub->callback([a] { archive_create(*a); });
 }
