@@ -49,6 +49,7 @@ sanitize_build() {
 }
 sanitize_tests() {
   ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1 \
+    LSAN_OPTIONS=suppressions="$PWD/tests/lsan.supp":print_suppressions=0 \
     UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs" -LE rp2040
 }
