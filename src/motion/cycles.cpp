@@ -71,41 +71,7 @@ void MotionMachine::drill_cycle(const Point& end, unsigned end_known, unsigned n
                 at.x += step.x, at.y += step.y;
             leg(MoveKind::rapid, at, k);
         }
-        at.z = r_level;
-        leg(MoveKind::rapid, at, (known & ~axis_z) | zbit);
-        double q_mm = std::fabs(cycle_q_);
-        bool pecks = (cycle_ == 83 || cycle_ == 73) && q_mm > 0 && (r_level - bottom) / q_mm < 10000;
-        for (double depth = r_level; pecks && depth - q_mm > bottom;) {
-            depth -= q_mm;
-            at.z = depth;
-            leg(MoveKind::linear, at, known);
-            if (cycle_ == 83) {
-                at.z = r_level;
-                leg(MoveKind::rapid, at, known);
-                at.z = depth;
-                leg(MoveKind::rapid, at, known);
-            }
-        }
-        at.z = bottom;
-        leg(MoveKind::linear, at, known);
-        if (cycle_ == 82 || cycle_ == 89 || cycle_ == 88) {
-            begin(MoveKind::dwell);
-            mv_.depth = 1;
-            double s = cycle_p_ / (dialect_ == Dialect::fanuc ? 1000 : 1);
-            mv_.seconds = std::isfinite(s) && s > 0 ? s : 0;
-            emit();
-        }
-        bool feed_out = cycle_ == 84 || cycle_ == 74 || cycle_ == 85 || cycle_ == 89;
-        double top = st.retract_to_r ? r_level : initial_z_;
-        unsigned top_known = st.retract_to_r ? zbit : (initial_known_ ? unsigned(axis_z) : 0u);
-        if (feed_out) {
-            at.z = r_level;
-            leg(MoveKind::linear, at, (known & ~axis_z) | zbit);
-        }
-        if (!feed_out || top != r_level) {
-            at.z = top;
-            leg(MoveKind::rapid, at, (known & ~axis_z) | top_known);
-        }
+        drill_hole(at, r_level, bottom, zbit);
     }
 }
 
@@ -134,6 +100,45 @@ void MotionMachine::lathe_cycle(int code, const Point& end, unsigned end_known) 
         leg(code == 92 ? MoveKind::rapid : cut, c, known);
     }
     leg(MoveKind::rapid, s, known);
+}
+
+// One hole of a drilling cycle, the tool over it: down to R, pecks, the bottom, a dwell, back up.
+void MotionMachine::drill_hole(Point at, double r_level, double bottom, unsigned zbit) {
+    at.z = r_level;
+    leg(MoveKind::rapid, at, (known & ~axis_z) | zbit);
+    double q_mm = std::fabs(cycle_q_);
+    bool pecks = (cycle_ == 83 || cycle_ == 73) && q_mm > 0 && (r_level - bottom) / q_mm < 10000;
+    for (double depth = r_level; pecks && depth - q_mm > bottom;) {
+        depth -= q_mm;
+        at.z = depth;
+        leg(MoveKind::linear, at, known);
+        if (cycle_ == 83) {
+            at.z = r_level;
+            leg(MoveKind::rapid, at, known);
+            at.z = depth;
+            leg(MoveKind::rapid, at, known);
+        }
+    }
+    at.z = bottom;
+    leg(MoveKind::linear, at, known);
+    if (cycle_ == 82 || cycle_ == 89 || cycle_ == 88) {
+        begin(MoveKind::dwell);
+        mv_.depth = 1;
+        double s = cycle_p_ / (dialect_ == Dialect::fanuc ? 1000 : 1);
+        mv_.seconds = std::isfinite(s) && s > 0 ? s : 0;
+        emit();
+    }
+    bool feed_out = cycle_ == 84 || cycle_ == 74 || cycle_ == 85 || cycle_ == 89;
+    double top = st.retract_to_r ? r_level : initial_z_;
+    unsigned top_known = st.retract_to_r ? zbit : (initial_known_ ? unsigned(axis_z) : 0u);
+    if (feed_out) {
+        at.z = r_level;
+        leg(MoveKind::linear, at, (known & ~axis_z) | zbit);
+    }
+    if (!feed_out || top != r_level) {
+        at.z = top;
+        leg(MoveKind::rapid, at, (known & ~axis_z) | top_known);
+    }
 }
 
 }  // namespace tape

@@ -95,6 +95,7 @@ private:
     bool arc_off(double r1, double r2) const;
     // cycles.cpp
     void drill_cycle(const Point& end, unsigned end_known, unsigned named);
+    void drill_hole(Point at, double r_level, double bottom, unsigned zbit);
     void lathe_cycle(int code, const Point& end, unsigned end_known);
     void leg(MoveKind kind, const Point& to, unsigned to_known);
     bool cycle_value(char letter, double& value);
