@@ -105,20 +105,7 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
             emit();
             return;
         }
-        double ar = std::fabs(r);
-        // X may be a lathe's diameter (lint, not knowing the machine): the chord with X halved.
-        double half_d = ax.v == 0 ? std::hypot(eu - su, (ev - sv) / 2) / 2 : half;
-        bool short_either = !(opt_.lathe_unknown && st.plane == Plane::zx && half_d - ar <= opt_.arc_tolerance_mm);
-        if (half - ar > opt_.arc_tolerance_mm && short_either && checkable_arc(plane_bits, 'R', 'R'))
-            finding("arc-radius-short", "R" + mm(r) + " is shorter than half the chord (" + mm(half) +
-                                            " mm): no arc of that radius reaches the end point (the control alarms)");
-        if (half > ar) ar = half;
-        double h = std::sqrt(std::max(0.0, ar * ar - half * half));
-        // Right of the chord for a clockwise arc of up to a half turn; R < 0 takes the other side.
-        double side = (cw == (r > 0)) ? -1 : 1;
-        double tu = (eu - su) / (2 * half), tv = (ev - sv) / (2 * half);
-        cu = (su + eu) / 2 - tv * h * side;
-        cv = (sv + ev) / 2 + tu * h * side;
+        centre_by_r(r, half, su, sv, eu, ev, ax.v == 0, cw, plane_bits, cu, cv);
     } else {
         double iu = w_.ok(ax.cu) ? w_.get(ax.cu) * s : 0, iv = w_.ok(ax.cv) ? w_.get(ax.cv) * s : 0;
         bool incremental = st.arc_incremental;
@@ -149,6 +136,27 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
     emit();
     pos = end;
     known = end_known;
+}
+
+// The centre of an R arc from start (su, sv) to end (eu, ev), half the chord apart: on the right of the
+// chord for a clockwise arc of up to a half turn, the other side for a negative R. An R shorter than half
+// the chord is a finding, and the arc is drawn as the half circle.
+void MotionMachine::centre_by_r(double r, double half, double su, double sv, double eu, double ev, bool v_is_x, bool cw,
+                                unsigned plane_bits, double& cu, double& cv) {
+    double ar = std::fabs(r);
+    // X may be a lathe's diameter (lint, not knowing the machine): the chord with X halved.
+    double half_d = v_is_x ? std::hypot(eu - su, (ev - sv) / 2) / 2 : half;
+    bool short_either = !(opt_.lathe_unknown && st.plane == Plane::zx && half_d - ar <= opt_.arc_tolerance_mm);
+    if (half - ar > opt_.arc_tolerance_mm && short_either && checkable_arc(plane_bits, 'R', 'R'))
+        finding("arc-radius-short", "R" + mm(r) + " is shorter than half the chord (" + mm(half) +
+                                        " mm): no arc of that radius reaches the end point (the control alarms)");
+    if (half > ar) ar = half;
+    double h = std::sqrt(std::max(0.0, ar * ar - half * half));
+    // Right of the chord for a clockwise arc of up to a half turn; R < 0 takes the other side.
+    double side = (cw == (r > 0)) ? -1 : 1;
+    double tu = (eu - su) / (2 * half), tv = (ev - sv) / (2 * half);
+    cu = (su + eu) / 2 - tv * h * side;
+    cv = (sv + ev) / 2 + tu * h * side;
 }
 
 }  // namespace tape

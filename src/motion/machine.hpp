@@ -86,6 +86,8 @@ private:
     void motion_block();
     // arcs.cpp
     void arc(const Point& end, unsigned end_known);
+    void centre_by_r(double r, double half, double su, double sv, double eu, double ev, bool v_is_x, bool cw,
+                     unsigned plane_bits, double& cu, double& cv);
     // arc_check.cpp
     void check_arc(int u, int v);
     /// A ГОСТ arc in Z-X with I and no K: the seeds' controller reads I along Z, ISO 6983 along X. The
