@@ -74,6 +74,7 @@ private:
     // modal.cpp
     bool g_codes();
     void apply_g(int code, motion::GKind kind);
+    bool set_mode(int code, motion::GKind kind);  ///< plain modal state; false for codes that move
     void values();
     void events_before();
     void events_after();

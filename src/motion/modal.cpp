@@ -218,7 +218,46 @@ bool MotionMachine::g_codes() {
     return false;
 }
 
+// The plain modal state a G code sets (plane, units, distance modes, work offset, feed and speed modes,
+// the cycles' return level); false for the codes that move or start something.
+bool MotionMachine::set_mode(int c, GKind k) {
+    switch (k) {
+        case GKind::plane:
+            plane_set_ = true;
+            st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
+            return true;
+        case GKind::units:
+            st.inch = c == 200 || c == 700;
+            return true;
+        case GKind::distance:
+            st.incremental = c == 910;
+            return true;
+        case GKind::arc_distance:
+            st.arc_incremental = c == 911;
+            return true;
+        case GKind::diameter:
+            st.diameter = c == 70;
+            return true;
+        case GKind::work_offset:
+            if (c / 10 != st.work_offset) known = 0;  // the other offset's values are the control's
+            st.work_offset = c / 10;
+            return true;
+        case GKind::feed_mode:
+            st.feed_per_rev = c == 950 || (fanuc_lathe_ && c == 990);
+            return true;
+        case GKind::speed_mode:
+            st.constant_surface = c == 960;
+            return true;
+        case GKind::cycle_return:
+            st.retract_to_r = c == 990;
+            return true;
+        default:
+            return false;
+    }
+}
+
 void MotionMachine::apply_g(int c, GKind k) {
+    if (set_mode(c, k)) return;
     switch (k) {
         case GKind::motion:
             group01_ = c / 10;
@@ -241,35 +280,6 @@ void MotionMachine::apply_g(int c, GKind k) {
             return;
         case GKind::transform_off:
             transform_.clear();
-            return;
-        case GKind::plane:
-            plane_set_ = true;
-            st.plane = c == 170 ? Plane::xy : c == 180 ? Plane::zx : Plane::yz;
-            return;
-        case GKind::units:
-            st.inch = c == 200 || c == 700;
-            return;
-        case GKind::distance:
-            st.incremental = c == 910;
-            return;
-        case GKind::arc_distance:
-            st.arc_incremental = c == 911;
-            return;
-        case GKind::diameter:
-            st.diameter = c == 70;
-            return;
-        case GKind::work_offset:
-            if (c / 10 != st.work_offset) known = 0;  // the other offset's values are the control's
-            st.work_offset = c / 10;
-            return;
-        case GKind::feed_mode:
-            st.feed_per_rev = c == 950 || (fanuc_lathe_ && c == 990);
-            return;
-        case GKind::speed_mode:
-            st.constant_surface = c == 960;
-            return;
-        case GKind::cycle_return:
-            st.retract_to_r = c == 990;
             return;
         case GKind::lathe_cycle:
             lathe_cycle_ = c / 10;
