@@ -1,5 +1,7 @@
 // G and M codes: which each is for the interpreter (per dialect; a lathe reads some Fanuc codes as its
 // own), and the modal state and events they make.
+#include <array>
+#include <initializer_list>
 #include <string>
 
 #include "motion/machine.hpp"
@@ -40,101 +42,44 @@ GKind fanuc_lathe(int c) {
     }
 }
 
-GKind common(int c) {
-    switch (c) {
-        case 0:
-        case 10:
-        case 20:
-        case 30:
-            return GKind::motion;
-        case 40:
-            return GKind::dwell;
-        case 90:
-        case 400:
-        case 410:
-        case 420:
-        case 430:
-        case 440:
-        case 490:
-        case 610:
-        case 640:
-        case 670:
-            // exact stop, compensation, path mode, a macro call cancelled
-            return GKind::ignore;
-        case 170:
-        case 180:
-        case 190:
-            return GKind::plane;
-        case 280:
-        case 300:
-            return GKind::reference;
-        case 530:
-            return GKind::machine;
-        case 540:
-        case 550:
-        case 560:
-        case 570:
-        case 580:
-        case 590:
-            return GKind::work_offset;
-        case 800:
-            return GKind::cycle_cancel;
-        case 810:
-        case 820:
-        case 830:
-        case 840:
-        case 850:
-        case 860:
-        case 880:
-        case 890:
-            return GKind::cycle;
-        case 900:
-        case 910:
-            return GKind::distance;
-        case 920:
-            return GKind::set_coords;
-        case 930:
-        case 940:
-        case 950:
-            return GKind::feed_mode;
-        case 960:
-        case 970:
-            return GKind::speed_mode;
-        case 980:
-        case 990:
-            return GKind::cycle_return;
-        case 100:
-            return GKind::data_setting;
-        case 50:
-        case 51:
-        case 52:
-        case 60:
-        case 310:
-        case 381:
-        case 382:
-        case 383:
-        case 384:
-        case 385:
-        case 650:
-        case 660:
-        case 661:
-        case 120:
-        case 130:
-        case 870:
-            return GKind::not_drawn;
-        case 160:
-        case 680:
-        case 510:
-        case 511:
-            return GKind::transform;
-        case 150:
-        case 690:
-        case 501:
-            return GKind::transform_off;
-        default:
-            return GKind::unknown;
-    }
+// The G codes every dialect reads alike (×10: G38.2 is 382), by what they do. Exact stop, compensation,
+// path modes and a macro call cancelled (ignore) change nothing the interpreter draws.
+struct CommonCodes {
+    GKind kind;
+    std::initializer_list<int> codes;
+};
+constexpr CommonCodes common_codes[] = {
+    {GKind::motion, {0, 10, 20, 30}},
+    {GKind::dwell, {40}},
+    {GKind::ignore, {90, 400, 410, 420, 430, 440, 490, 610, 640, 670}},
+    {GKind::plane, {170, 180, 190}},
+    {GKind::reference, {280, 300}},
+    {GKind::machine, {530}},
+    {GKind::work_offset, {540, 550, 560, 570, 580, 590}},
+    {GKind::cycle_cancel, {800}},
+    {GKind::cycle, {810, 820, 830, 840, 850, 860, 880, 890}},
+    {GKind::distance, {900, 910}},
+    {GKind::set_coords, {920}},
+    {GKind::feed_mode, {930, 940, 950}},
+    {GKind::speed_mode, {960, 970}},
+    {GKind::cycle_return, {980, 990}},
+    {GKind::data_setting, {100}},
+    {GKind::not_drawn, {50, 51, 52, 60, 310, 381, 382, 383, 384, 385, 650, 660, 661, 120, 130, 870}},
+    {GKind::transform, {160, 680, 510, 511}},
+    {GKind::transform_off, {150, 690, 501}},
+};
+
+// common_codes as a table by code: one look-up a G word, on lint's path too.
+constexpr std::array<GKind, 1000> common_table() {
+    std::array<GKind, 1000> t{};
+    t.fill(GKind::unknown);
+    for (const auto& row : common_codes)
+        for (int c : row.codes) t[static_cast<std::size_t>(c)] = row.kind;
+    return t;
 }
+constexpr std::array<GKind, 1000> common_kinds = common_table();
+
+GKind common(int c) { return c >= 0 && c < 1000 ? common_kinds[static_cast<std::size_t>(c)] : GKind::unknown; }
 
 }  // namespace
 
