@@ -15,6 +15,36 @@ bool millimetres_for_pulses(const MachineProfile* m, const Word& w) {
     return a && a->mm_per_pulse > 0;
 }
 
+// A word as the controller format writes it, or nullopt with a finding where it cannot be written (nothing
+// is dropped unsaid). name: Fanuc's O1234 block, the program's name, kept as written.
+struct WrittenWord {
+    std::string text;
+    bool name = false;
+};
+std::optional<WrittenWord> written_word(const Word& w, const Block& b, const Program& p, const FormatSpec& spec,
+                                        const ReformatOptions& o, std::vector<Diagnostic>& findings) {
+    if (p.numbered_by_block && w.address != 'N' && p.number && w.text == *p.number) return WrittenWord{w.text, true};
+    if (w.macro || !w.known) {
+        findings.push_back(program_finding(
+            "spec-word", w.where, b.ordinal,
+            w.text + (w.macro ? ": a macro value has no digits for the controller format"
+                              : ": not a word of the program, so not one the controller format can hold")));
+        return std::nullopt;
+    }
+    if (millimetres_for_pulses(o.machine, w)) {
+        findings.push_back(program_finding("spec-word", w.where, b.ordinal,
+                                           w.text + ": " + o.machine->title + " counts " + std::string(1, w.address) +
+                                               " in pulses; converting millimetres to pulses is not done"));
+        return std::nullopt;
+    }
+    try {
+        return WrittenWord{format_word(w, spec, o.from, o.strip_zeros)};
+    } catch (const Error& e) {
+        findings.push_back(program_finding("spec-word", w.where, b.ordinal, e.what()));
+        return std::nullopt;
+    }
+}
+
 }  // namespace
 
 std::string reformat(const LoadedTape& tape, const ReformatOptions& o, std::vector<Diagnostic>& findings) {
@@ -41,29 +71,8 @@ std::string reformat(const LoadedTape& tape, const ReformatOptions& o, std::vect
                     program_finding("spec-skip", b.where, b.ordinal, "the controller format has no '/' block skip"));
             std::string line = b.skip ? "/" : "";
             auto put = [&](const Word& w) {
-                if (p.numbered_by_block && w.address != 'N' && p.number && w.text == *p.number) {
-                    line += (line.empty() ? "" : sep) + w.text;  // Fanuc's O1234: the program's name, kept
-                    return;
-                }
-                if (w.macro || !w.known) {  // nothing is dropped: what cannot be written is an error
-                    findings.push_back(program_finding(
-                        "spec-word", w.where, b.ordinal,
-                        w.text + (w.macro ? ": a macro value has no digits for the controller format"
-                                          : ": not a word of the program, so not one the controller format can hold")));
-                    return;
-                }
-                if (millimetres_for_pulses(o.machine, w)) {
-                    findings.push_back(program_finding("spec-word", w.where, b.ordinal,
-                                                       w.text + ": " + o.machine->title + " counts " +
-                                                           std::string(1, w.address) +
-                                                           " in pulses; converting millimetres to pulses is not done"));
-                    return;
-                }
-                try {
-                    line += (line.empty() || line == "/" ? "" : sep) + format_word(w, spec, o.from, o.strip_zeros);
-                } catch (const Error& e) {
-                    findings.push_back(program_finding("spec-word", w.where, b.ordinal, e.what()));
-                }
+                if (auto t = written_word(w, b, p, spec, o, findings))
+                    line += (line.empty() || (line == "/" && !t->name) ? "" : sep) + t->text;
             };
             if (b.number) put(*b.number);
             for (const auto& w : b.words) put(w);
