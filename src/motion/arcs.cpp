@@ -51,11 +51,10 @@ std::string mm(double v) {
 
 }  // namespace
 
-void MotionMachine::arc(const Point& end, unsigned end_known) {
-    Axes ax = plane_axes(st.plane, dialect_, w_);
-    bool cw = group01_ == 2;
-    bool by_r = w_.has('R') && !(w_.has(ax.cu) || w_.has(ax.cv)) ? true : w_.has('R') && dialect_ != Dialect::linuxcnc;
-    for (char c : {by_r ? 'R' : ax.cu, by_r ? 'R' : ax.cv}) {
+// Whether the block gives the arc a centre the interpreter can read (cu, cv: its centre words); where not,
+// the block is named as not simulated and the tool is taken to its end point, as far as that is known.
+bool MotionMachine::arc_defined(bool by_r, char cu, char cv, const Point& end, unsigned end_known) {
+    for (char c : {by_r ? 'R' : cu, by_r ? 'R' : cv}) {
         if (!w_.has(c) || w_.ok(c)) continue;
         const Word& word = *w_.word_of(c);
         std::string why = w_.at(c) == ValueState::macro ? " is a macro value, known only when the program runs"
@@ -66,17 +65,25 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
         mv_.end = end;
         pos = end;
         known = end_known;
-        return;
+        return false;
     }
-    if (!by_r && !w_.has(ax.cu) && !w_.has(ax.cv)) {
+    if (!by_r && !w_.has(cu) && !w_.has(cv)) {
         // No centre and no radius (lint's arc-center): the control stops; nothing to draw.
-        not_simulated("G0" + std::to_string(group01_) + " with no centre (" + ax.cu + ", " + ax.cv +
+        not_simulated("G0" + std::to_string(group01_) + " with no centre (" + cu + ", " + cv +
                           ") and no R: the control stops here",
                       0);
         pos = end;
         known = end_known;
-        return;
+        return false;
     }
+    return true;
+}
+
+void MotionMachine::arc(const Point& end, unsigned end_known) {
+    Axes ax = plane_axes(st.plane, dialect_, w_);
+    bool cw = group01_ == 2;
+    bool by_r = w_.has('R') && !(w_.has(ax.cu) || w_.has(ax.cv)) ? true : w_.has('R') && dialect_ != Dialect::linuxcnc;
+    if (!arc_defined(by_r, ax.cu, ax.cv, end, end_known)) return;
     begin(MoveKind::arc);
     mv_.end = end;
     mv_.end_known = end_known;

@@ -87,6 +87,7 @@ private:
     void motion_block();
     // arcs.cpp
     void arc(const Point& end, unsigned end_known);
+    bool arc_defined(bool by_r, char cu, char cv, const Point& end, unsigned end_known);
     void centre_by_r(double r, double half, double su, double sv, double eu, double ev, bool v_is_x, bool cw,
                      unsigned plane_bits, double& cu, double& cv);
     // arc_check.cpp
