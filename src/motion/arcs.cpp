@@ -103,13 +103,7 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
         }
         double half = std::hypot(eu - su, ev - sv) / 2;
         if (half < 1e-9) {
-            finding("arc-full-circle-r",
-                    "G0" + std::to_string(group01_) + " by R" + mm(r) +
-                        " ends where it starts: a full circle by R has no one centre (the control alarms); give "
-                        "it by I, J, K");
-            begin(MoveKind::not_simulated);
-            mv_.note = "a full circle by R: its centre is not known";
-            emit();
+            full_circle_by_r(r);
             return;
         }
         centre_by_r(r, half, su, sv, eu, ev, ax.v == 0, cw, plane_bits, cu, cv);
@@ -132,17 +126,33 @@ void MotionMachine::arc(const Point& end, unsigned end_known) {
     bool closed = std::hypot(eu - su, ev - sv) < 1e-9;
     int p = w_.ok('P') && dialect_ == Dialect::linuxcnc ? static_cast<int>(std::clamp(w_.get('P'), 1.0, 1e6)) : 1;
     mv_.turns = p - 1 + (closed && !by_r ? 1 : 0);
-    iso_centre_.reset();
-    if (dialect_ == Dialect::gost && st.plane == Plane::zx && !by_r && st.arc_incremental && ax.cu == 'I' &&
-        !w_.has('J') && w_.ok('I')) {
-        iso_centre_ = mv_.centre;
-        iso_centre_->z = pos.z;
-        iso_centre_->x = pos.x + w_.get('I') * s;
-    }
+    note_iso_centre(by_r, ax.cu);
     if (ends_known && !by_r && checkable_arc(plane_bits, ax.cu, ax.cv)) check_arc(ax.u, ax.v);
     emit();
     pos = end;
     known = end_known;
+}
+
+// G02/G03 by R ending where it starts: every circle through the point has that radius.
+void MotionMachine::full_circle_by_r(double r) {
+    finding("arc-full-circle-r", "G0" + std::to_string(group01_) + " by R" + mm(r) +
+                                     " ends where it starts: a full circle by R has no one centre (the control "
+                                     "alarms); give it by I, J, K");
+    begin(MoveKind::not_simulated);
+    mv_.note = "a full circle by R: its centre is not known";
+    emit();
+}
+
+// A ГОСТ Z-X arc centred by I alone (cu_word 'I'): the centre of the ISO 6983 reading, I along X, kept
+// for the arc check beside the seeds' reading in mv_.centre.
+void MotionMachine::note_iso_centre(bool by_r, char cu_word) {
+    iso_centre_.reset();
+    if (dialect_ != Dialect::gost || st.plane != Plane::zx || by_r || !st.arc_incremental || cu_word != 'I' ||
+        w_.has('J') || !w_.ok('I'))
+        return;
+    iso_centre_ = mv_.centre;
+    iso_centre_->z = pos.z;
+    iso_centre_->x = pos.x + w_.get('I') * scale();
 }
 
 // The centre of an R arc from start (su, sv) to end (eu, ev), half the chord apart: on the right of the

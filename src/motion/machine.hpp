@@ -90,6 +90,8 @@ private:
     bool arc_defined(bool by_r, char cu, char cv, const Point& end, unsigned end_known);
     void centre_by_r(double r, double half, double su, double sv, double eu, double ev, bool v_is_x, bool cw,
                      unsigned plane_bits, double& cu, double& cv);
+    void full_circle_by_r(double r);
+    void note_iso_centre(bool by_r, char cu_word);
     // arc_check.cpp
     void check_arc(int u, int v);
     /// A ГОСТ arc in Z-X with I and no K: the seeds' controller reads I along Z, ISO 6983 along X. The
