@@ -91,6 +91,65 @@ void BM_AdapterCdcLostPacketReported(benchmark::State& state) {
 }
 BENCHMARK(BM_AdapterCdcLostPacketReported)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
 
+namespace emulate_stop {
+
+using clock = std::chrono::steady_clock;
+
+// Reads what the emulator sends until quiet for quiet_ms: the number of bytes and when the last came.
+std::size_t drain(int master, int quiet_ms, clock::time_point& last) {
+    std::uint8_t buf[4096];
+    std::size_t n = 0;
+    for (;;) {
+        pollfd p{master, POLLIN, 0};
+        if (::poll(&p, 1, quiet_ms) <= 0) return n;
+        ssize_t got = ::read(master, buf, sizeof buf);
+        if (got <= 0) return n;
+        n += static_cast<std::size_t>(got);
+        last = clock::now();
+    }
+}
+
+// Reads what comes for the given time: the number of bytes.
+std::size_t read_for(int master, std::chrono::microseconds span) {
+    std::uint8_t buf[4096];
+    std::size_t running = 0;
+    auto until = clock::now() + span;
+    while (clock::now() < until) {
+        pollfd p{master, POLLIN, 0};
+        if (::poll(&p, 1, 1) > 0) {
+            ssize_t got = ::read(master, buf, sizeof buf);
+            if (got > 0) running += static_cast<std::size_t>(got);
+        }
+    }
+    return running;
+}
+
+struct Figures {
+    std::vector<double> after, arrived, stop_us;
+};
+
+// One DC1 ... DC3: frames flow for a random 20 to 60 ms (the controller's buffer filling), then DC3 and
+// what still comes. False when the pseudo-terminal fails.
+bool one_stop(int master, std::mt19937& rng, Figures& f) {
+    std::uint8_t dc1 = tape::dc1, dc3 = tape::dc3;
+    bool ok = ::write(master, &dc1, 1) == 1;
+    std::size_t running = read_for(master, std::chrono::microseconds(20000 + rng() % 40000));
+    // Frames the emulator wrote before DC3 may still wait in the pseudo-terminal (the controller's
+    // side was not scheduled): those waiting just before DC3 is written are not charged to the stop.
+    int waiting = 0;
+    ::ioctl(master, FIONREAD, &waiting);
+    auto sent_dc3 = clock::now();
+    ok = ok && ::write(master, &dc3, 1) == 1 && running > 0;
+    clock::time_point last = sent_dc3;
+    std::size_t n = drain(master, 50, last);
+    f.arrived.push_back(static_cast<double>(n));
+    f.after.push_back(static_cast<double>(n) - std::min<double>(waiting, static_cast<double>(n)));
+    f.stop_us.push_back(n ? std::chrono::duration<double, std::micro>(last - sent_dc3).count() : 0.0);
+    return ok;
+}
+
+}  // namespace emulate_stop
+
 void BM_EmulateStopOnDc3(benchmark::State& state) {
     const double rate = 1500;
     const int stops = static_cast<int>(state.range(0));
@@ -101,61 +160,20 @@ void BM_EmulateStopOnDc3(benchmark::State& state) {
             state.SkipWithError("openpty failed");
             return;
         }
-        const int master = emulator.master;
         std::mt19937 rng(7);
-        std::vector<double> after, arrived, stop_us;
-        std::uint8_t buf[4096];
-        using clock = std::chrono::steady_clock;
-        // Reads what the emulator sends until quiet for quiet_ms: the number of bytes and when the last came.
-        auto drain = [&](int quiet_ms, clock::time_point& last) {
-            std::size_t n = 0;
-            for (;;) {
-                pollfd p{master, POLLIN, 0};
-                if (::poll(&p, 1, quiet_ms) <= 0) return n;
-                ssize_t got = ::read(master, buf, sizeof buf);
-                if (got <= 0) return n;
-                n += static_cast<std::size_t>(got);
-                last = clock::now();
-            }
-        };
+        emulate_stop::Figures f;
         bool ok = true;
-        for (int i = 0; i < stops && ok; ++i) {
-            std::uint8_t dc1 = tape::dc1, dc3 = tape::dc3;
-            ok = ::write(master, &dc1, 1) == 1;
-            // Frames flow for a random 20 to 60 ms (the controller's buffer filling), read as they come.
-            auto until = clock::now() + std::chrono::microseconds(20000 + rng() % 40000);
-            clock::time_point last{};
-            std::size_t running = 0;
-            while (clock::now() < until) {
-                pollfd p{master, POLLIN, 0};
-                if (::poll(&p, 1, 1) > 0) {
-                    ssize_t got = ::read(master, buf, sizeof buf);
-                    if (got > 0) running += static_cast<std::size_t>(got);
-                }
-            }
-            // Frames the emulator wrote before DC3 may still wait in the pseudo-terminal (the controller's
-            // side was not scheduled): those waiting just before DC3 is written are not charged to the stop.
-            int waiting = 0;
-            ::ioctl(master, FIONREAD, &waiting);
-            auto sent_dc3 = clock::now();
-            ok = ok && ::write(master, &dc3, 1) == 1 && running > 0;
-            last = sent_dc3;
-            std::size_t n = drain(50, last);
-            arrived.push_back(static_cast<double>(n));
-            double sent_after = static_cast<double>(n) - std::min<double>(waiting, static_cast<double>(n));
-            after.push_back(sent_after);
-            stop_us.push_back(n ? std::chrono::duration<double, std::micro>(last - sent_dc3).count() : 0.0);
-        }
+        for (int i = 0; i < stops && ok; ++i) ok = emulate_stop::one_stop(emulator.master, rng, f);
         if (!ok) {
             state.SkipWithError("the pseudo-terminal failed");
             return;
         }
-        state.counters["stops"] = static_cast<double>(after.size());
+        state.counters["stops"] = static_cast<double>(f.after.size());
         state.counters["stops_over_1_frame"] =
-            static_cast<double>(std::count_if(after.begin(), after.end(), [](double n) { return n > 1; }));
-        distribution(state, "frames_after_dc3", after);
-        distribution(state, "frames_arrived_after_dc3", arrived);
-        distribution(state, "last_frame_us", stop_us);
+            static_cast<double>(std::count_if(f.after.begin(), f.after.end(), [](double n) { return n > 1; }));
+        distribution(state, "frames_after_dc3", f.after);
+        distribution(state, "frames_arrived_after_dc3", f.arrived);
+        distribution(state, "last_frame_us", f.stop_us);
     }
 }
 BENCHMARK(BM_EmulateStopOnDc3)->Arg(300)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);

@@ -227,6 +227,49 @@ struct Adapter::Impl {
         device = "adapter:" + path + "?serial=" + o.serial;
     }
 
+    // The hidraw node with its handlers, and the records of the HID device above it and its interface.
+    std::string hid_device(const std::string& intf, int hidraw) {
+        std::string rec;
+        devnode = "/dev/hidraw" + std::to_string(hidraw);
+        g_signal_connect(handler, "handle-ioctl",
+                         G_CALLBACK(+[](UMockdevIoctlBase*, UMockdevIoctlClient* c, gpointer self) -> gboolean {
+                             return static_cast<Impl*>(self)->hid_ioctl(c);
+                         }),
+                         this);
+        g_signal_connect(handler, "handle-read",
+                         G_CALLBACK(+[](UMockdevIoctlBase*, UMockdevIoctlClient* c, gpointer self) -> gboolean {
+                             return static_cast<Impl*>(self)->hid_read(c);
+                         }),
+                         this);
+        g_signal_connect(handler, "handle-write",
+                         G_CALLBACK(+[](UMockdevIoctlBase*, UMockdevIoctlClient* c, gpointer self) -> gboolean {
+                             return static_cast<Impl*>(self)->hid_write(c);
+                         }),
+                         this);
+        std::string hid = intf + "/0003:1209:0001." + std::to_string(1000 + hidraw);
+        std::string raw = "hidraw" + std::to_string(hidraw);
+        rec += "P: " + hid + "/hidraw/" + raw + "\nN: " + raw + "\nE: SUBSYSTEM=hidraw\nE: DEVNAME=" + devnode +
+               "\nA: dev=241:" + std::to_string(hidraw) + "\\n\nL: device=../../../" + hid.substr(hid.rfind('/') + 1) +
+               "\n\n";
+        rec += "P: " + hid + "\nE: SUBSYSTEM=hid\nE: DRIVER=hid-generic\nE: HID_ID=0003:00001209:00000001\n" +
+               "E: HID_NAME=tape project tape adapter\nE: HID_UNIQ=" + o.serial +
+               "\nH: report_descriptor=" + hex(report_descriptor, sizeof report_descriptor) + "\n\n";
+        rec += "P: " + intf +
+               "\nE: SUBSYSTEM=usb\nE: DEVTYPE=usb_interface\nE: DRIVER=usbhid\nA: bInterfaceNumber=00\\n\n"
+               "A: bInterfaceClass=03\\n\n\n";
+        return rec;
+    }
+
+    // The USB device record itself: bus numbers, ids, strings and descriptors as sysfs shows them.
+    std::string usb_device_record(const std::string& usb, const char* bus_dev, int devnum) const {
+        return "P: " + usb + "\nN: " + bus_dev + "\nE: SUBSYSTEM=usb\nE: DEVTYPE=usb_device\nE: DRIVER=usb\n" +
+               "E: BUSNUM=001\nE: DEVNUM=" + std::string(bus_dev + 12) + "\nE: DEVNAME=/dev/" + bus_dev +
+               "\nA: busnum=1\\n\nA: devnum=" + std::to_string(devnum) +
+               "\\n\nA: speed=12\\n\nA: bConfigurationValue=1\\n\nA: idVendor=1209\\n\nA: idProduct=0001\\n\n" +
+               "A: manufacturer=tape project\\n\nA: product=tape adapter\\n\nA: serial=" + o.serial +
+               "\\n\nA: bcdDevice=0100\\n\nH: descriptors=" + descriptors(o.link) + "\n";
+    }
+
     void add_usb_device() {
         auto [devnum, hidraw] = testbed().numbers();
         char bus_dev[32];
@@ -247,43 +290,12 @@ struct Adapter::Impl {
                              }),
                              this);
         } else {
-            devnode = "/dev/hidraw" + std::to_string(hidraw);
-            g_signal_connect(handler, "handle-ioctl",
-                             G_CALLBACK(+[](UMockdevIoctlBase*, UMockdevIoctlClient* c, gpointer self) -> gboolean {
-                                 return static_cast<Impl*>(self)->hid_ioctl(c);
-                             }),
-                             this);
-            g_signal_connect(handler, "handle-read",
-                             G_CALLBACK(+[](UMockdevIoctlBase*, UMockdevIoctlClient* c, gpointer self) -> gboolean {
-                                 return static_cast<Impl*>(self)->hid_read(c);
-                             }),
-                             this);
-            g_signal_connect(handler, "handle-write",
-                             G_CALLBACK(+[](UMockdevIoctlBase*, UMockdevIoctlClient* c, gpointer self) -> gboolean {
-                                 return static_cast<Impl*>(self)->hid_write(c);
-                             }),
-                             this);
-            std::string hid = intf + "/0003:1209:0001." + std::to_string(1000 + hidraw);
-            std::string raw = "hidraw" + std::to_string(hidraw);
-            rec += "P: " + hid + "/hidraw/" + raw + "\nN: " + raw + "\nE: SUBSYSTEM=hidraw\nE: DEVNAME=" + devnode +
-                   "\nA: dev=241:" + std::to_string(hidraw) + "\\n\nL: device=../../../" +
-                   hid.substr(hid.rfind('/') + 1) + "\n\n";
-            rec += "P: " + hid + "\nE: SUBSYSTEM=hid\nE: DRIVER=hid-generic\nE: HID_ID=0003:00001209:00000001\n" +
-                   "E: HID_NAME=tape project tape adapter\nE: HID_UNIQ=" + o.serial +
-                   "\nH: report_descriptor=" + hex(report_descriptor, sizeof report_descriptor) + "\n\n";
-            rec += "P: " + intf +
-                   "\nE: SUBSYSTEM=usb\nE: DEVTYPE=usb_interface\nE: DRIVER=usbhid\nA: bInterfaceNumber=00\\n\n"
-                   "A: bInterfaceClass=03\\n\n\n";
+            rec += hid_device(intf, hidraw);
         }
         GError* error = nullptr;
         if (!umockdev_testbed_attach_ioctl(testbed().bed, devnode.c_str(), handler, &error))
             throw std::runtime_error(std::string("umockdev: ") + (error ? error->message : "cannot attach"));
-        rec += "P: " + usb + "\nN: " + bus_dev + "\nE: SUBSYSTEM=usb\nE: DEVTYPE=usb_device\nE: DRIVER=usb\n" +
-               "E: BUSNUM=001\nE: DEVNUM=" + std::string(bus_dev + 12) + "\nE: DEVNAME=/dev/" + bus_dev +
-               "\nA: busnum=1\\n\nA: devnum=" + std::to_string(devnum) +
-               "\\n\nA: speed=12\\n\nA: bConfigurationValue=1\\n\nA: idVendor=1209\\n\nA: idProduct=0001\\n\n" +
-               "A: manufacturer=tape project\\n\nA: product=tape adapter\\n\nA: serial=" + o.serial +
-               "\\n\nA: bcdDevice=0100\\n\nH: descriptors=" + descriptors(o.link) + "\n";
+        rec += usb_device_record(usb, bus_dev, devnum);
         if (!umockdev_testbed_add_from_string(testbed().bed, rec.c_str(), &error))
             throw std::runtime_error(std::string("umockdev: ") + (error ? error->message : "cannot add"));
         if (o.link == Link::hid) {
@@ -462,43 +474,51 @@ struct Adapter::Impl {
             case USBDEVFS_SUBMITURB:
                 return submit(client, arg);
             case USBDEVFS_REAPURB:
-            case USBDEVFS_REAPURBNDELAY: {
-                if (done.empty() && !gone) reaped.wait_for(l, reap_wait);
-                if (done.empty()) {
-                    umockdev_ioctl_client_complete(client, -1, gone ? ENODEV : EAGAIN);
-                    return true;
-                }
-                Urb u = done.front();
-                done.pop_front();
-                UMockdevIoctlData* where = umockdev_ioctl_data_resolve(arg, 0, sizeof(void*), nullptr);
-                umockdev_ioctl_data_set_ptr(where, 0, u.urb);
-                umockdev_ioctl_client_complete(client, 0, 0);
-                g_object_unref(where);
-                g_object_unref(u.urb);
-                return true;
-            }
-            case USBDEVFS_DISCARDURB: {
-                void* which = *reinterpret_cast<void**>(arg->data);
-                for (auto it = waiting.begin(); it != waiting.end(); ++it) {
-                    if (reinterpret_cast<void*>(it->urb->client_addr) != which) continue;
-                    auto* urb = reinterpret_cast<usbdevfs_urb*>(it->urb->data);
-                    urb->status = -ENOENT;
-                    urb->actual_length = 0;
-                    done.push_back(*it);
-                    waiting.erase(it);
-                    reaped.notify_all();
-                    umockdev_ioctl_client_complete(client, 0, 0);
-                    return true;
-                }
-                umockdev_ioctl_client_complete(client, -1, EINVAL);  // done already: the host reaps it
-                return true;
-            }
+            case USBDEVFS_REAPURBNDELAY:
+                return reap(client, arg, l);
+            case USBDEVFS_DISCARDURB:
+                return discard(client, arg);
             default:
                 l.unlock();
                 note("usbfs ioctl " + std::to_string(request));
                 umockdev_ioctl_client_complete(client, -1, ENOTTY);
                 return true;
         }
+    }
+
+    // Called with m held (l): the oldest finished URB, waiting a while for one.
+    bool reap(UMockdevIoctlClient* client, UMockdevIoctlData* arg, std::unique_lock<std::mutex>& l) {
+        if (done.empty() && !gone) reaped.wait_for(l, reap_wait);
+        if (done.empty()) {
+            umockdev_ioctl_client_complete(client, -1, gone ? ENODEV : EAGAIN);
+            return true;
+        }
+        Urb u = done.front();
+        done.pop_front();
+        UMockdevIoctlData* where = umockdev_ioctl_data_resolve(arg, 0, sizeof(void*), nullptr);
+        umockdev_ioctl_data_set_ptr(where, 0, u.urb);
+        umockdev_ioctl_client_complete(client, 0, 0);
+        g_object_unref(where);
+        g_object_unref(u.urb);
+        return true;
+    }
+
+    // Called with m held: a URB the host gives up on, finished as cancelled if it still waits.
+    bool discard(UMockdevIoctlClient* client, UMockdevIoctlData* arg) {
+        void* which = *reinterpret_cast<void**>(arg->data);
+        for (auto it = waiting.begin(); it != waiting.end(); ++it) {
+            if (reinterpret_cast<void*>(it->urb->client_addr) != which) continue;
+            auto* urb = reinterpret_cast<usbdevfs_urb*>(it->urb->data);
+            urb->status = -ENOENT;
+            urb->actual_length = 0;
+            done.push_back(*it);
+            waiting.erase(it);
+            reaped.notify_all();
+            umockdev_ioctl_client_complete(client, 0, 0);
+            return true;
+        }
+        umockdev_ioctl_client_complete(client, -1, EINVAL);  // done already: the host reaps it
+        return true;
     }
 
     // Called with m held.
