@@ -18,6 +18,7 @@ namespace tape {
 namespace lint_detail {
 class BlockTargets;
 class ArcChecks;
+class TravelChecks;
 }  // namespace lint_detail
 struct MachineProfile;
 class MachineFormat;
@@ -111,6 +112,7 @@ private:
     std::vector<Open> open_;
     std::unique_ptr<lint_detail::BlockTargets> targets_;  // Fanuc: the blocks its GOTOs, cycles and calls name
     std::unique_ptr<lint_detail::ArcChecks> arcs_;        // the interpreter, for arcs on their circles
+    std::unique_ptr<lint_detail::TravelChecks> travel_;   // with a machine's travel: the interpreter again
     std::unique_ptr<MachineFormat> machine_format_;       // with a machine: the word format block by block
 };
 

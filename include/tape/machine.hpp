@@ -49,8 +49,9 @@ struct FormatMode {
 /// A row of the feed code table: a feed word's first digit as the control reads it.
 struct FeedCode {
     int first_digit = 0;
-    std::string meaning;
-    double factor = 1;  ///< the feed the machine runs at is the rest of the word times this; 0: rapid
+    std::string meaning;     ///< in English
+    std::string meaning_ru;  ///< as the Russian documentation names it, or ""
+    double factor = 1;       ///< the feed the machine runs at is the rest of the word times this; 0: rapid
     std::string source;
 };
 

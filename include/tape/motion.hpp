@@ -15,6 +15,8 @@
 
 namespace tape {
 
+struct MachineProfile;
+
 /// A point of the tool in the program's work coordinates, always in millimetres (an inch program's
 /// values are converted, so programs in either unit compare). On a lathe x is the radius: a program
 /// written in diameters has its X halved.
@@ -128,6 +130,11 @@ struct MotionOptions {
 /// is an error; its inch limit, 0.0028 in, is not used: the millimetre rule stands for both); Fanuc,
 /// 0.02 mm (parameter No. 3410 is set per machine: give yours).
 MotionOptions motion_options(Dialect dialect);
+
+/// The options for machine m's programs read in dialect d: the dialect's, with the machine's kind (a
+/// lathe, X in diameters), its word format (when it has one) and its arc tolerance (when it gives one).
+/// The options point into m: m must outlive them.
+MotionOptions motion_options(const MachineProfile& m, Dialect d);
 
 /// The interpreter fed by the loader (ProgramLoader, load_each): blocks in, moves out, in bounded memory
 /// (subprograms on the tape are kept to be followed, nothing else).

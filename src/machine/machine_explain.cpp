@@ -35,7 +35,7 @@ std::string feed(const MachineProfile& p, const Word& w, Say say) {
     if (d.size() < 2) return "";
     const FeedCode* c = p.find_feed_code(d[0] - '0');
     if (!c) return w.text + say(": mode ", ": режим ") + d.substr(0, 1) + say(" is not in the table", " не из таблицы");
-    std::string out = w.text + " " + c->meaning;
+    std::string out = w.text + " " + (say.russian && !c->meaning_ru.empty() ? c->meaning_ru : c->meaning);
     if (c->factor > 0) return out + ": " + number(std::stod(d.substr(1)) * c->factor) + mm_per_min(say);
     std::string rates;
     for (const auto& [axis, rate] : p.rapid_mm_per_min)

@@ -121,12 +121,13 @@ void Reader::feed(const Fields& top) {
     if (rows.empty()) f.fail("code", "a feed code table needs its rows ([[feed.code]])");
     for (std::size_t i = 0; i < rows.size(); ++i) {
         Fields r(*rows[i], "feed.code[" + std::to_string(i + 1) + "]", file, f.source());
-        r.only({"first_digit", "meaning", "factor"});
+        r.only({"first_digit", "meaning", "meaning_ru", "factor"});
         FeedCode c;
         c.first_digit = static_cast<int>(r.whole("first_digit", 0, 9).value_or(-1));
         if (c.first_digit < 0) r.fail("first_digit", "is required (0 to 9)");
         if (p.find_feed_code(c.first_digit)) r.fail("first_digit", std::to_string(c.first_digit) + " is given twice");
         c.meaning = r.required_text("meaning");
+        c.meaning_ru = r.text("meaning_ru").value_or("");
         c.factor = r.number("factor", 0, 1000).value_or(1);
         c.source = r.source();
         p.feed_codes.push_back(std::move(c));

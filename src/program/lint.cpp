@@ -9,6 +9,7 @@
 
 #include "program/block_targets.hpp"
 #include "program/lint_arcs.hpp"
+#include "program/lint_travel.hpp"
 #include "tape/code_tables.hpp"
 #include "tape/functions.hpp"
 #include "tape/machine_checks.hpp"
@@ -93,16 +94,34 @@ bool has_g(const Block& b, std::initializer_list<long long> codes) {
     return false;
 }
 
-// note: with a machine, what its format mode adds to a word's finding ("G10 in effect: long dimensions").
-void spec_checks(Add out, const FormatSpec& s, const Block& b, bool points, const MachineFormat* note = nullptr) {
+// A G or M code written with a point that the dialect's table has (Fanuc's G54.1, G12.1, LinuxCNC's
+// G33.1): the §9 notation cannot write such a code, and whether the control has it is the code table's
+// question (unknown-code), not a point where the format has none.
+bool dotted_code(const Word& w, Dialect dialect, std::optional<Dialect> close) {
+    if ((w.address != 'G' && w.address != 'M') || !w.has_point()) return false;
+    std::string value = code_value(std::string_view(w.text).substr(1));
+    return !value.empty() && (code_known(dialect, w.address, value) || (close && code_known(*close, w.address, value)));
+}
+
+// The words of block b against format s, in the dialect read. note: with a machine, what its format mode
+// adds to a word's finding ("G10 in effect: long dimensions").
+struct SpecContext {
+    bool points = false;  // the program writes explicit points somewhere
+    Dialect dialect = Dialect::gost;
+    std::optional<Dialect> close{};
+    const MachineFormat* note = nullptr;
+};
+void spec_checks(Add out, const FormatSpec& s, const Block& b, const SpecContext& c) {
     if (b.main && !s.main_block)
         add(out, "spec-main", b.where, b.ordinal, "the controller format has no ':' main blocks");
     if (b.skip && !s.block_skip)
         add(out, "spec-skip", b.where, b.ordinal, "the controller format has no '/' block skip");
     auto check = [&](const Word& w) {
         if (w.macro || !w.known) return;  // a macro value has no digits to count; a flagged word was reported
-        for (auto& [rule, message] : check_word(w, s, points))
-            add(out, rule, w.where, b.ordinal, note && rule == "spec-digits" ? message + note->note(w) : message);
+        for (auto& [rule, message] : check_word(w, s, c.points)) {
+            if (rule == "spec-point" && dotted_code(w, c.dialect, c.close)) continue;
+            add(out, rule, w.where, b.ordinal, c.note && rule == "spec-digits" ? message + c.note->note(w) : message);
+        }
     };
     if (b.number) check(*b.number);
     for (const auto& w : b.words) check(w);
@@ -217,6 +236,11 @@ void LintVisitor::dialect(const DialectChoice& choice) {
         arcs_ = std::make_unique<lint_detail::ArcChecks>(dialect_, options_, [this](Finding f) {
             if (!quiet_) keep(std::move(f));
         });
+    travel_.reset();
+    if (!close_ && options_.machine && lint_detail::TravelChecks::applies(*options_.machine))
+        travel_ = std::make_unique<lint_detail::TravelChecks>(*options_.machine, dialect_, [this](Finding f) {
+            if (!quiet_) keep(std::move(f));
+        });
 }
 
 void LintVisitor::program_start(const Program& header) {
@@ -233,6 +257,7 @@ void LintVisitor::program_start(const Program& header) {
     no_feed_.reset();
     open_.clear();
     if (arcs_) arcs_->start(header);
+    if (travel_) travel_->start(header);
 }
 
 void LintVisitor::block(const Block& b) {
@@ -251,6 +276,7 @@ void LintVisitor::block(const Block& b) {
     if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, "99");
     word_checks(sink_, b, dialect_, close_);
     if (arcs_) arcs_->next(b);
+    if (travel_) travel_->next(b);
     code_checks(sink_, b, dialect_, close_, unknown_codes_);
     motion_checks(b);
     flow_checks(b);
@@ -418,7 +444,7 @@ void LintVisitor::close_program() {
     if (options_.machine)
         machine_program_checks();
     else
-        for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, program_points_);
+        for (const auto& b : held_) spec_checks(sink_, *options_.spec, b, {program_points_, dialect_, close_});
     held_.clear();
 }
 
@@ -428,7 +454,8 @@ void LintVisitor::machine_program_checks() {
     machine_format_->program_start();
     for (const auto& b : held_) {
         const FormatSpec& s = machine_format_->block(b);
-        if (!m.format.words.empty()) spec_checks(sink_, s, b, program_points_, machine_format_.get());
+        if (!m.format.words.empty())
+            spec_checks(sink_, s, b, {program_points_, dialect_, close_, machine_format_.get()});
         machine_checks(m, b, sink_);
     }
 }

@@ -133,6 +133,10 @@ constexpr std::array table = std::to_array<Rule>({
      "the control rejects the word"},
     {"machine-speed-code", E, all, "the machine's profile: its spindle speed code table",
      "a speed code outside the machine's complete speed table", "the control rejects the word"},
+    {"machine-travel", E, all, "the machine's profile: the travel of its axes (min_mm, max_mm)",
+     "two end points of an axis farther apart than the axis travels, with nothing between them that moves the "
+     "program's zero or the tool (work offsets, coordinate settings, tool and compensation words)",
+     "wherever the program's zero stands, one of them is outside the travel: the control stops at its limit"},
     {"spec-word", E, all, "ГОСТ 20999-83 §9", "tape format: a word that cannot be written in the controller format",
      "the value does not fit the digits the controller reads"},
     // The codec's bad frames, which lint lists among the findings of a damaged tape read with -k.

@@ -24,7 +24,8 @@ struct EmulateArgs {
     bool code_given = false, parity_given = false;
 };
 
-// --machine: the profile's reader speed, code, parity and flow where the command line gave none.
+// --machine: the profile's reader speed, code and parity where the command line gave none, its serial line
+// (baud, bits, stop bits, flow) where the device string gave none.
 void machine_line(EmulateArgs& a) {
     auto m = machine_or_fail(a.machine);
     if (!m) return;
@@ -33,9 +34,9 @@ void machine_line(EmulateArgs& a) {
         return std::find(a.serial_only.begin(), a.serial_only.end(), option) != a.serial_only.end();
     };
     if (!given("--rate") && l.reader_frames_per_second > 0) a.rate = l.reader_frames_per_second;
-    if (!given("--flow") && l.flow == tape::Flow::rtscts) a.flow = "rtscts";
+    a.device = with_machine_line(a.device, l);  // --flow, when given, still overrides the line's flow
     if (!a.code_given && l.code) a.code = std::string(tape::code_name(*l.code));
-    if (!a.parity_given && l.parity) a.parity = std::string(tape::parity_name(*l.parity));
+    if (!a.parity_given && l.parity && a.code == "iso") a.parity = std::string(tape::parity_name(*l.parity));
 }
 
 // Through a USB tape adapter wired to the control's reader input: the control's own lines start, stop,
@@ -121,7 +122,9 @@ void add_emulate(CLI::App& app) {
                     "Device string, e.g. serial:/dev/ttyUSB0?baud=9600, or a USB tape adapter wired to the control's "
                     "reader input: adapter:/dev/ttyACM0, usb:1209:0001, hid:1209:0001")
         ->required();
-    add_machine_option(sub, a->machine, "its reader speed, code, parity and flow where these options are not given");
+    add_machine_option(sub, a->machine,
+                       "its reader speed, code and parity where these options are not given, its baud rate, data "
+                       "bits, stop bits and flow control where the serial: device string gives none");
     sub->add_option("--rate", a->rate, "Reader speed in frames per second (ФС-1501: 1500)")
         ->check(real_number(min_rate, max_rate))
         ->capture_default_str();

@@ -21,17 +21,20 @@ struct FeedArgs {
     std::string from_block;  // restart after a tool break
     bool show = false, lathe = false;
     std::string machine;
+    bool parity_given = false;
 };
 
-// --machine: the profile's code, dialect, flow, DC1 wait, reader speed and lathe where the command line gave none.
+// --machine: the profile's code, parity, dialect, serial line (baud, bits, stop bits, flow), DC1 wait, reader
+// speed and lathe where the command line and the device string gave none.
 void machine_line(FeedArgs& a) {
     auto m = machine_or_fail(a.machine);
     if (!m) return;
     const tape::MachineLine& l = m->line;
     if (a.profile.choice.code == "auto" && l.code) a.profile.choice.code = std::string(tape::code_name(*l.code));
+    if (!a.parity_given && l.parity && (a.profile.choice.code == "iso" || a.profile.choice.code == "auto"))
+        a.profile.choice.parity = std::string(tape::parity_name(*l.parity));
     if (a.profile.dialect == "auto") a.profile.dialect = std::string(tape::dialect_name(m->dialect));
-    if (a.flow.empty() && l.flow)
-        a.flow = *l.flow == tape::Flow::xonxoff ? "xonxoff" : *l.flow == tape::Flow::rtscts ? "rtscts" : "none";
+    a.device = with_machine_line(a.device, l);
     if (l.dc_codes) a.wait_xon = true;
     if (m->kind == tape::MachineKind::lathe) a.lathe = true;  // a restart's approach: X clear, then Z
     if (a.rate == 0 && a.delay_ms == 0) a.rate = l.reader_frames_per_second;
@@ -91,7 +94,8 @@ void add_feed(CLI::App& app) {
     sub->add_option("--flow", a->flow, "Override the device's flow control: xonxoff, rtscts or none")
         ->check(CLI::IsMember({"xonxoff", "rtscts", "none"}));
     add_machine_option(sub, a->machine,
-                       "its code, dialect, flow control, DC1 wait and reader speed where these options are not given");
+                       "its code, parity, dialect, DC1 wait and reader speed where these options are not given, its "
+                       "baud rate, data bits, stop bits and flow control where the serial: device string gives none");
     sub->add_flag("--wait-xon", a->wait_xon, "Send nothing before the controller's first DC1 (XON)");
     sub->add_option("--xon-timeout", a->xon_timeout,
                     "With --wait-xon: give up after SECONDS (default 0: wait until Ctrl-C)")
@@ -110,7 +114,10 @@ void add_feed(CLI::App& app) {
     sub->add_flag("--show", a->show, "With --from-block: print the restart's header on stdout, send nothing");
     sub->add_flag("--progress", a->progress, "Show progress even when stderr is not a terminal");
     sub->add_flag("--force", a->force, "Replace an existing file: device");
-    sub->callback([a] { run(*a); });
+    sub->callback([a, sub] {
+        a->parity_given = sub->count("--parity") > 0;
+        run(*a);
+    });
 }
 
 }  // namespace cli

@@ -32,10 +32,13 @@ void list() {
     write_output("-", out, false, false);
 }
 
-// "  key: value  [source]": every value with where it comes from.
-std::string row(const std::string& key, const std::string& value, const std::string& source) {
-    return "  " + padded(key + ":", 22) + value +
-           (source.empty() ? "" : "\n  " + std::string(22, ' ') + "source: " + source) + "\n";
+// "  key: value  [source]": every value with where it comes from, and the Russian documentation's name
+// for it under it where the profile has one.
+std::string row(const std::string& key, const std::string& value, const std::string& source,
+                const std::string& russian = "") {
+    std::string under = "\n  " + std::string(22, ' ');
+    return "  " + padded(key + ":", 22) + value + (russian.empty() ? "" : under + "ru: " + russian) +
+           (source.empty() ? "" : under + "source: " + source) + "\n";
 }
 
 std::string source_of(const tape::MachineProfile& p, const std::string& key) {
@@ -61,11 +64,11 @@ std::string codes_part(const tape::MachineProfile& p) {
     for (const auto& c : p.codes) {
         std::string code = std::string(1, c.address) + (c.code < 10 ? "0" : "") + std::to_string(c.code);
         std::string more = c.group.empty() ? "" : " [" + c.group + (c.mode.empty() ? "" : ", " + c.mode) + "]";
-        out += row(code, c.meaning + more, c.source);
+        out += row(code, c.meaning + more, c.source, c.meaning_ru);
     }
     for (const auto& f : p.feed_codes)
         out += row(std::string(1, p.feed_table_address) + " first digit " + std::to_string(f.first_digit),
-                   f.meaning + (f.factor > 0 ? ", x" + num(f.factor) : ""), f.source);
+                   f.meaning + (f.factor > 0 ? ", x" + num(f.factor) : ""), f.source, f.meaning_ru);
     for (const auto& s : p.speed_codes)
         out += row("S code " + std::to_string(s.code), num(s.rpm) + " rev/min", s.source);
     if (!p.speed_codes.empty() && !p.speed_table_complete)

@@ -55,19 +55,9 @@ tape::MotionOptions motion_options(const ProgramSource& source, const MotionArgs
     tape::Dialect dialect = load_options(source).dialect;
     const tape::MachineProfile* machine = motion_machine(args);
     if (machine && source.dialect == "auto") dialect = machine->dialect;
-    tape::MotionOptions o = tape::motion_options(dialect);  // the arc tolerance of the dialect's controls
-    o.spec = spec ? &*spec : nullptr;
-    o.lathe = args.lathe;
-    if (machine) {
-        o.lathe = machine->kind == tape::MachineKind::lathe;
-        o.diameter = machine->diameter_programming;
-        if (!machine->format.words.empty()) o.spec = &machine->format;
-        if (machine->arc_tolerance_mm > 0 || machine->arc_tolerance_relative > 0) {
-            o.arc_tolerance_mm = machine->arc_tolerance_mm;
-            o.arc_tolerance_relative = machine->arc_tolerance_relative;
-            o.arc_tolerance_linuxcnc = false;
-        }
-    }
+    tape::MotionOptions o = machine ? tape::motion_options(*machine, dialect) : tape::motion_options(dialect);
+    if (!o.spec && spec) o.spec = &*spec;  // a machine without a word format: --spec's
+    if (!machine) o.lathe = args.lathe;
     return o;
 }
 
