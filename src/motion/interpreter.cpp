@@ -15,7 +15,10 @@ Interpreter::~Interpreter() = default;
 void Interpreter::dialect(const DialectChoice& choice) { machine_->dialect(choice.dialect); }
 void Interpreter::program_start(const Program& header) { machine_->program_start(header); }
 void Interpreter::block(const Block& block) { machine_->block(block); }
-void Interpreter::end(const Location& where) { (void)where; }
+void Interpreter::end(const Location& where) {
+    (void)where;
+    machine_->end();
+}
 
 Point Interpreter::position() const { return machine_->pos; }
 unsigned Interpreter::known() const { return machine_->known; }

@@ -47,15 +47,29 @@ void MotionMachine::reset() {
     plane_set_ = false;
     scaled_ = 0;
     initial_known_ = cycle_r_ok_ = cycle_z_ok_ = false;
+    lathe_ = {};
+    lathe_named_ = 0;
 }
 
 void MotionMachine::program_start(const Program& header) {
+    end();
     reset();
     out_.program_start(header);
 }
 
 void MotionMachine::block(const Block& b) {
     block_ = &b;
+    bool contour = lathe_.open && contour_before(b);  // a lathe cycle's P-Q contour (lathe_cycles.cpp)
+    one_block(b);
+    if (contour) contour_after(b);
+}
+
+void MotionMachine::end() {
+    if (lathe_.open) contour_lost(true);
+    block_ = nullptr;
+}
+
+void MotionMachine::one_block(const Block& b) {
     if (statements(b)) return;
     if (b.skip && opt_.block_skip) return;
     if (b.damaged) {
@@ -145,6 +159,7 @@ void MotionMachine::begin(MoveKind kind) {
 
 void MotionMachine::emit() {
     mv_.known = mv_.known & mv_.end_known;
+    if (lathe_.open && lathe_.open->drawing && contour_move()) return;
     if (!opt_.findings_only) out_.move(mv_);
 }
 
