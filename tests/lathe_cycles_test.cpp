@@ -1,6 +1,8 @@
 // A Fanuc lathe's cycles in the interpreter (src/motion/lathe_cycles.cpp, cycles.cpp): G71/G70 drawn as
 // their P-Q contour, G76 and G92 threads as passes, with the points worked by hand in each test; real
 // Haas lathe programs from ../shared/data.
+#include "motion/lathe_cycles.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "motion/lathe_cycles.hpp"
 #include "tape/motion.hpp"
 #include "test_util.hpp"
 
@@ -177,6 +178,21 @@ TEST(LatheCycles, G92ThreadPasses) {
         expect_move(p[4 + 4 * i], R, 15, 5);
     }
     expect_move(p[13], R, 50, 100, 0);
+}
+
+// ",C1." (chamfer) and ",R2." (rounding): the corner is not drawn, and the block says so; the moves go
+// to the sharp corner, and the tool's place after the next block is known.
+TEST(LatheCycles, CornerWordsSaid) {
+    auto c = lathe("O0001\nG00 X10. Z0\nG01 X20. ,C1. F0.2\nG01 Z-10. ,R2.\nX30.\nM30\n");
+    auto ns = c.unsimulated();
+    ASSERT_EQ(ns.size(), 2u);
+    EXPECT_EQ(ns[0].where.line, 3u);
+    EXPECT_NE(ns[0].note.find("chamfer"), std::string::npos) << ns[0].note;
+    EXPECT_EQ(ns[1].where.line, 4u);
+    auto p = c.paths();
+    ASSERT_EQ(p.size(), 4u);
+    expect_move(p[3], L, 15, -10, 0);
+    EXPECT_EQ(p[3].known & (tape::axis_x | tape::axis_z), unsigned(tape::axis_x | tape::axis_z));
 }
 
 std::string outside(const std::string& name) {

@@ -23,6 +23,7 @@ void Interpreter::end(const Location& where) {
 Point Interpreter::position() const { return machine_->pos; }
 unsigned Interpreter::known() const { return machine_->known; }
 const ModalState& Interpreter::state() const { return machine_->st; }
+std::string Interpreter::open_cycle() const { return machine_->open_cycle(); }
 
 void interpret_each(std::string_view text, std::span<const std::uint64_t> frame_of, MotionVisitor& out,
                     const MotionOptions& options) {

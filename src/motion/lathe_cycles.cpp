@@ -69,8 +69,7 @@ void MotionMachine::repetitive_cycle() {
 bool MotionMachine::lathe_word(char letter, double& value, bool increment) {
     if (!w_.has(letter)) return true;
     if (!w_.ok(letter)) {
-        not_simulated(g_name(once_) + "'s " + w_.word_of(letter)->text +
-                          " cannot be read: the cycle is not simulated",
+        not_simulated(g_name(once_) + "'s " + w_.word_of(letter)->text + " cannot be read: the cycle is not simulated",
                       all_axes);
         return false;
     }
@@ -197,7 +196,7 @@ void MotionMachine::contour_lost(bool ended) {
     lathe_.open.reset();
     if (ended) block_ = nullptr;
     std::string first = "block N" + std::to_string(o.p) + ", the contour's first";
-    std::string why = !ended    ? first + ", is not the block after it"
+    std::string why = !ended      ? first + ", is not the block after it"
                       : o.drawing ? "the program ends before block N" + std::to_string(o.q) + ", the contour's last"
                                   : "the program ends before " + first;
     begin(MoveKind::not_simulated);

@@ -20,15 +20,15 @@ struct Contour {
 
 /// A G70-G73 whose contour blocks are still to come (waiting) or being drawn.
 struct OpenContour {
-    int code = 0;                 ///< 70..73
-    long long p = -1, q = -1;     ///< the sequence numbers of the contour's first and last blocks
-    Point start{};                ///< where the tool stood at the cycle: it returns there
-    unsigned start_known = 0;     ///< AxisBit
-    Point shift{};                ///< a roughing cycle's finishing allowance: the contour drawn where it leaves it
-    Point at{};                   ///< the drawn contour's last point
-    ModalState state{};           ///< the modal state at the cycle, back in force after it
-    int group01 = -1;             ///< the motion mode at the cycle
-    std::uint64_t block = 0;      ///< the cycle's block, where what goes wrong is said
+    int code = 0;              ///< 70..73
+    long long p = -1, q = -1;  ///< the sequence numbers of the contour's first and last blocks
+    Point start{};             ///< where the tool stood at the cycle: it returns there
+    unsigned start_known = 0;  ///< AxisBit
+    Point shift{};             ///< a roughing cycle's finishing allowance: the contour drawn where it leaves it
+    Point at{};                ///< the drawn contour's last point
+    ModalState state{};        ///< the modal state at the cycle, back in force after it
+    int group01 = -1;          ///< the motion mode at the cycle
+    std::uint64_t block = 0;   ///< the cycle's block, where what goes wrong is said
     Location where{};
     std::string name;  ///< "G71 P10 Q20", as the machinist reads it
     bool drawing = false, first = true;

@@ -135,6 +135,7 @@ void MotionMachine::run(const Block& b) {
     values();
     events_before();
     motion_block();
+    corner_words(b);  // ",C" and ",R": not drawn, said (corners.cpp)
     events_after();
 }
 

@@ -59,6 +59,7 @@ public:
     void program_start(const Program& header);
     void block(const Block& b);
     void end();  ///< the text has ended
+    std::string open_cycle() const { return lathe_.open ? lathe_.open->name : std::string(); }
 
     Point pos{};
     unsigned known = 0;
@@ -89,6 +90,8 @@ private:
     void coordinates(motion::GKind kind, const Point& end, unsigned end_known, unsigned named);
     void reference(motion::GKind kind, const Point& end, unsigned end_known, unsigned named);
     void motion_block();
+    // corners.cpp
+    void corner_words(const Block& b);
     // arcs.cpp
     void arc(const Point& end, unsigned end_known);
     bool arc_defined(bool by_r, char cu, char cv, const Point& end, unsigned end_known);
