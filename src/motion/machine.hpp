@@ -39,7 +39,7 @@ enum class GKind : std::uint8_t {
     data_setting,  // G10
     lathe_cycle,   // Fanuc lathe G90/G92/G94 single cycles
     repetitive,    // Fanuc lathe G70-G73 (the P-Q contour) and G76 (a thread in passes): lathe_cycles.cpp
-    not_drawn,     // known, but its moves are not simulated (multiple repetitive cycles, probing, splines)
+    not_drawn,     // known, but its moves are not simulated (lathe G74/G75 pecking and grooving, probing, splines)
     transform,     // polar coordinates, rotation, scaling, mirror: every move after it is not simulated
     transform_off,
 };
