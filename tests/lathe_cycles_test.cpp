@@ -180,19 +180,41 @@ TEST(LatheCycles, G92ThreadPasses) {
     expect_move(p[13], R, 50, 100, 0);
 }
 
-// ",C1." (chamfer) and ",R2." (rounding): the corner is not drawn, and the block says so; the moves go
-// to the sharp corner, and the tool's place after the next block is known.
-TEST(LatheCycles, CornerWordsSaid) {
+// ",C1." (chamfer) and ",R2." (rounding) between G01 moves, X as a radius: from X5 Z0 to X10 Z0, ,C1. cuts
+// it 1 short (X9) and chamfers to 1 along the next move (X10 Z-1); down to Z-10, ,R2. turns 90° to +X:
+// the tangent points 2·tan(45°) = 2 from the corner (X10 Z-8, X12 Z-10), the centre X12 Z-8, clockwise
+// seen from +Y (going -Z then +X turns right with Z across and X up).
+TEST(LatheCycles, CornerWordsDrawn) {
     auto c = lathe("O0001\nG00 X10. Z0\nG01 X20. ,C1. F0.2\nG01 Z-10. ,R2.\nX30.\nM30\n");
-    auto ns = c.unsimulated();
+    EXPECT_TRUE(c.unsimulated().empty());
+    auto p = c.paths();
+    ASSERT_EQ(p.size(), 6u);
+    expect_move(p[1], L, 9, 0, 0);
+    expect_move(p[2], L, 10, -1, 0);
+    EXPECT_EQ(p[2].where.line, 3u);
+    EXPECT_NEAR(p[3].start.z, -1, 1e-9);
+    expect_move(p[3], L, 10, -8, 0);
+    expect_move(p[4], MoveKind::arc, 12, -10, 0);
+    EXPECT_EQ(p[4].where.line, 4u);
+    EXPECT_NEAR(p[4].centre.x, 12, 1e-9);
+    EXPECT_NEAR(p[4].centre.z, -8, 1e-9);
+    EXPECT_TRUE(p[4].clockwise);
+    EXPECT_NEAR(p[4].radius, 2, 1e-9);
+    EXPECT_NEAR(p[4].sweep(), std::acos(-1.0) / 2, 1e-9);
+    EXPECT_NEAR(p[5].start.x, 12, 1e-9);
+    expect_move(p[5], L, 15, -10, 0);
+    // A chamfer as long as its move takes all of it: the chamfer starts where the move did.
+    auto whole = lathe("O0001\nG00 X10. Z0\nG01 Z-2. ,C2. F0.2\nX20.\nM30\n").paths();
+    ASSERT_EQ(whole.size(), 3u);
+    EXPECT_NEAR(whole[1].start.z, 0, 1e-9);
+    expect_move(whole[1], L, 7, -2, 0);
+    expect_move(whole[2], L, 10, -2, 0);
+    // A corner that cannot be drawn (the next move a rapid; no move after it): said at its block.
+    auto ns = lathe("O0001\nG00 X10. Z0\nG01 X20. ,C1. F0.2\nG00 Z-10.\nG01 X30. ,R1.\n").unsimulated();
     ASSERT_EQ(ns.size(), 2u);
     EXPECT_EQ(ns[0].where.line, 3u);
     EXPECT_NE(ns[0].note.find("chamfer"), std::string::npos) << ns[0].note;
-    EXPECT_EQ(ns[1].where.line, 4u);
-    auto p = c.paths();
-    ASSERT_EQ(p.size(), 4u);
-    expect_move(p[3], L, 15, -10, 0);
-    EXPECT_EQ(p[3].known & (tape::axis_x | tape::axis_z), unsigned(tape::axis_x | tape::axis_z));
+    EXPECT_EQ(ns[1].where.line, 5u);
 }
 
 std::string outside(const std::string& name) {

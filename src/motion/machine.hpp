@@ -91,7 +91,11 @@ private:
     void reference(motion::GKind kind, const Point& end, unsigned end_known, unsigned named);
     void motion_block();
     // corners.cpp
-    void corner_words(const Block& b);
+    void corner_begin(const Block& b);
+    void corner_end();
+    bool corner_move();  ///< emit()'s hook: true when it took the move (held till the next one)
+    bool corner_join(const Move& held, Move& next);
+    void corner_note(const Move& at, const std::string& why);
     // arcs.cpp
     void arc(const Point& end, unsigned end_known);
     bool arc_defined(bool by_r, char cu, char cv, const Point& end, unsigned end_known);
@@ -139,6 +143,9 @@ private:
     motion::LatheCycles lathe_{};  // G70-G73's contours, G76's first block
     Point lathe_end_{};            // G90/G92/G94's X and Z, kept for the blocks that give one of them
     unsigned lathe_end_known_ = 0, lathe_named_ = 0;
+    const Word* corner_word_ = nullptr;  // ",C"/",R" of the block being run
+    std::optional<Move> corner_held_{};  // a G01 with a corner, held till the next move shows the corner
+    std::string corner_text_;
     bool program_points_ = false;
     int sub_depth_ = 0;  // inside LinuxCNC o-sub definitions: not run where written
     bool tool_changed_ = false, end_seen_ = false;

@@ -159,6 +159,16 @@ void check_contours(const ApproachInput& in, const Interpreter& run, const Block
     }
 }
 
+// A corner word (",C", ",R") on the block before: the block starts at the corner's end, not at the sharp
+// corner the approach would go to.
+void check_corner(const ApproachInput& in, const Block& target) {
+    if (in.index == 0) return;
+    for (const auto& w : in.program->blocks[in.index - 1].words)
+        if (w.address == ',')
+            refuse(target.where, "the block before " + target.number_text() + " ends in a corner (" + w.text +
+                                     "): " + target.number_text() + " starts where the corner ends, not rebuilt");
+}
+
 }  // namespace
 
 std::vector<std::string> restart_approach(const ApproachInput& in) {
@@ -175,6 +185,7 @@ std::vector<std::string> restart_approach(const ApproachInput& in) {
     check_known(in, run, before, target);
     check_transform(in, target);
     check_contours(in, run, target);
+    check_corner(in, target);
 
     const ModalState st = run.state();
     const Point at = run.position();
