@@ -154,6 +154,8 @@ public:
     Point position() const;
     unsigned known() const;
     const ModalState& state() const;
+    /// The lathe cycle whose P-Q contour is awaited or being drawn ("G71 P40 Q70"), or empty.
+    std::string open_cycle() const;
 
 private:
     std::unique_ptr<class MotionMachine> machine_;

@@ -95,6 +95,7 @@ void MotionMachine::motion_block() {
         emit();
         return;
     }
+    if (once_ >= 0 && once_kind_ == GKind::repetitive) return repetitive_cycle();  // U, W, P, Q: the cycle's own
     Point end;
     unsigned end_known, named;
     if (once_ >= 0 && once_kind_ == GKind::data_setting) {
@@ -110,7 +111,7 @@ void MotionMachine::motion_block() {
                       named);
         return;
     }
-    if (lathe_cycle_ >= 0 && named) return lathe_cycle(lathe_cycle_, end, end_known);
+    if (lathe_cycle_ >= 0 && named) return lathe_cycle(lathe_cycle_, end, end_known, named);
     if (cycle_ >= 0 && (named || w_.has('R') || w_.has('Z'))) return drill_cycle(end, end_known, named);
     if (!named) return;
     switch (group01_) {

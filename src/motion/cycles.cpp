@@ -75,8 +75,16 @@ void MotionMachine::drill_cycle(const Point& end, unsigned end_known, unsigned n
     }
 }
 
-void MotionMachine::lathe_cycle(int code, const Point& end, unsigned end_known) {
+void MotionMachine::lathe_cycle(int code, Point end, unsigned end_known, unsigned named) {
     unsigned xz = axis_x | axis_z;
+    // The cycle's X and Z are kept from block to block: "G92 X.. Z.. F..", then "X.." for the next pass.
+    if (!(named & axis_x) && (lathe_named_ & axis_x))
+        end.x = lathe_end_.x, end_known = (end_known & ~axis_x) | (lathe_end_known_ & axis_x);
+    if (!(named & axis_z) && (lathe_named_ & axis_z))
+        end.z = lathe_end_.z, end_known = (end_known & ~axis_z) | (lathe_end_known_ & axis_z);
+    lathe_end_ = end;
+    lathe_end_known_ = end_known;
+    lathe_named_ |= named;
     if ((known & xz) != xz || (end_known & xz) != xz) {
         not_simulated("G" + std::to_string(code) + " from a place not known: the cycle is not simulated", xz);
         return;

@@ -15,11 +15,15 @@ Interpreter::~Interpreter() = default;
 void Interpreter::dialect(const DialectChoice& choice) { machine_->dialect(choice.dialect); }
 void Interpreter::program_start(const Program& header) { machine_->program_start(header); }
 void Interpreter::block(const Block& block) { machine_->block(block); }
-void Interpreter::end(const Location& where) { (void)where; }
+void Interpreter::end(const Location& where) {
+    (void)where;
+    machine_->end();
+}
 
 Point Interpreter::position() const { return machine_->pos; }
 unsigned Interpreter::known() const { return machine_->known; }
 const ModalState& Interpreter::state() const { return machine_->st; }
+std::string Interpreter::open_cycle() const { return machine_->open_cycle(); }
 
 void interpret_each(std::string_view text, std::span<const std::uint64_t> frame_of, MotionVisitor& out,
                     const MotionOptions& options) {

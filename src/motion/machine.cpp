@@ -47,15 +47,37 @@ void MotionMachine::reset() {
     plane_set_ = false;
     scaled_ = 0;
     initial_known_ = cycle_r_ok_ = cycle_z_ok_ = false;
+    lathe_ = {};
+    lathe_named_ = 0;
+    corner_word_ = nullptr;
+    corner_held_.reset();
 }
 
 void MotionMachine::program_start(const Program& header) {
+    end();
     reset();
     out_.program_start(header);
 }
 
 void MotionMachine::block(const Block& b) {
     block_ = &b;
+    bool contour = lathe_.open && contour_before(b);  // a lathe cycle's P-Q contour (lathe_cycles.cpp)
+    one_block(b);
+    if (contour) contour_after(b);
+}
+
+void MotionMachine::end() {
+    block_ = nullptr;    // the last block is gone: what is said here carries its own block
+    if (corner_held_) {  // no move after the corner: the control stops
+        Move held = std::move(*corner_held_);
+        corner_held_.reset();
+        if (!opt_.findings_only) out_.move(held);
+        corner_note(held, "no move after it");
+    }
+    if (lathe_.open) contour_lost(true);
+}
+
+void MotionMachine::one_block(const Block& b) {
     if (statements(b)) return;
     if (b.skip && opt_.block_skip) return;
     if (b.damaged) {
@@ -120,7 +142,9 @@ void MotionMachine::run(const Block& b) {
     }
     values();
     events_before();
+    corner_begin(b);  // ",C" and ",R" (corners.cpp)
     motion_block();
+    corner_end();
     events_after();
 }
 
@@ -145,6 +169,8 @@ void MotionMachine::begin(MoveKind kind) {
 
 void MotionMachine::emit() {
     mv_.known = mv_.known & mv_.end_known;
+    if (lathe_.open && lathe_.open->drawing && contour_move()) return;
+    if ((corner_word_ || corner_held_) && corner_move()) return;
     if (!opt_.findings_only) out_.move(mv_);
 }
 

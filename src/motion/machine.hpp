@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "motion/lathe_cycles.hpp"
 #include "motion/words.hpp"
 #include "tape/motion.hpp"
 
@@ -37,7 +38,8 @@ enum class GKind : std::uint8_t {
     machine,       // G53: a move in machine coordinates, this block only
     data_setting,  // G10
     lathe_cycle,   // Fanuc lathe G90/G92/G94 single cycles
-    not_drawn,     // known, but its moves are not simulated (multiple repetitive cycles, probing, splines)
+    repetitive,    // Fanuc lathe G70-G73 (the P-Q contour) and G76 (a thread in passes): lathe_cycles.cpp
+    not_drawn,     // known, but its moves are not simulated (lathe G74/G75 pecking and grooving, probing, splines)
     transform,     // polar coordinates, rotation, scaling, mirror: every move after it is not simulated
     transform_off,
 };
@@ -56,6 +58,8 @@ public:
     void dialect(Dialect d);
     void program_start(const Program& header);
     void block(const Block& b);
+    void end();  ///< the text has ended
+    std::string open_cycle() const { return lathe_.open ? lathe_.open->name : std::string(); }
 
     Point pos{};
     unsigned known = 0;
@@ -64,6 +68,7 @@ public:
 private:
     // machine.cpp
     void reset();
+    void one_block(const Block& b);
     bool statements(const Block& b);
     void run(const Block& b);
     void begin(MoveKind kind);
@@ -85,6 +90,12 @@ private:
     void coordinates(motion::GKind kind, const Point& end, unsigned end_known, unsigned named);
     void reference(motion::GKind kind, const Point& end, unsigned end_known, unsigned named);
     void motion_block();
+    // corners.cpp
+    void corner_begin(const Block& b);
+    void corner_end();
+    bool corner_move();  ///< emit()'s hook: true when it took the move (held till the next one)
+    bool corner_join(const Move& held, Move& next);
+    void corner_note(const Move& at, const std::string& why);
     // arcs.cpp
     void arc(const Point& end, unsigned end_known);
     bool arc_defined(bool by_r, char cu, char cv, const Point& end, unsigned end_known);
@@ -102,9 +113,21 @@ private:
     // cycles.cpp
     void drill_cycle(const Point& end, unsigned end_known, unsigned named);
     void drill_hole(Point at, double r_level, double bottom, unsigned zbit);
-    void lathe_cycle(int code, const Point& end, unsigned end_known);
+    void lathe_cycle(int code, Point end, unsigned end_known, unsigned named);
     void leg(MoveKind kind, const Point& to, unsigned to_known);
     bool cycle_value(char letter, double& value);
+    // lathe_cycles.cpp
+    void repetitive_cycle();
+    void contour_cycle();
+    void contour_replay(const motion::Contour& c);
+    bool contour_before(const Block& b);  ///< true: b is a block of the contour being drawn
+    void contour_after(const Block& b);
+    bool contour_move();  ///< emit()'s hook while a contour is drawn: true when it took the move
+    void contour_lost(bool ended);
+    void thread_cycle();
+    void thread_passes(const Point& end, unsigned end_known, const std::vector<double>& depths, double height,
+                       double taper);
+    bool lathe_word(char letter, double& value, bool increment);
 
     MotionVisitor& out_;
     MotionOptions opt_;
@@ -118,7 +141,13 @@ private:
     int cycle_ = -1;    // the canned cycle in force, -1 none
     int once_ = -1;     // a one-block G code with its own axis words (G28, G53, G92, G10, G52, G04)
     motion::GKind once_kind_ = motion::GKind::ignore;
-    int lathe_cycle_ = -1;  // Fanuc lathe G90/G92/G94 in force
+    int lathe_cycle_ = -1;         // Fanuc lathe G90/G92/G94 in force
+    motion::LatheCycles lathe_{};  // G70-G73's contours, G76's first block
+    Point lathe_end_{};            // G90/G92/G94's X and Z, kept for the blocks that give one of them
+    unsigned lathe_end_known_ = 0, lathe_named_ = 0;
+    const Word* corner_word_ = nullptr;  // ",C"/",R" of the block being run
+    std::optional<Move> corner_held_{};  // a G01 with a corner, held till the next move shows the corner
+    std::string corner_text_;
     bool program_points_ = false;
     int sub_depth_ = 0;  // inside LinuxCNC o-sub definitions: not run where written
     bool tool_changed_ = false, end_seen_ = false;

@@ -29,10 +29,11 @@ GKind fanuc_lathe(int c) {
         case 710:
         case 720:
         case 730:
+        case 760:
+            return GKind::repetitive;  // finishing, roughing contours, thread in passes
         case 740:
         case 750:
-        case 760:
-            return GKind::not_drawn;
+            return GKind::not_drawn;  // peck drilling and grooving in passes
         case 910:
         case 930:
         case 950:
@@ -228,6 +229,7 @@ void MotionMachine::apply_g(int c, GKind k) {
             return;
         case GKind::lathe_cycle:
             lathe_cycle_ = c / 10;
+            lathe_named_ = 0;
             group01_ = -1;
             return;
         case GKind::ignore:

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <set>
 
 #include "motion/machine.hpp"
 #include "tape/error.hpp"
@@ -133,6 +134,41 @@ void check_transform(const ApproachInput& in, const Block& target) {
                                  std::to_string(in_force->where.line) + ") is in force: it is not rebuilt");
 }
 
+// A lathe cycle's contour (G70-G73 P-Q) is where its blocks stand: a restart inside it, or before a
+// cycle whose contour lies before the block, leaves the control without it.
+void check_contours(const ApproachInput& in, const Interpreter& run, const Block& target) {
+    if (auto open = run.open_cycle(); !open.empty())
+        refuse(target.where, target.number_text() + " is in the contour of " + open +
+                                 ": a restart inside a lathe cycle's contour is not rebuilt");
+    if (!in.lathe || in.dialect != Dialect::fanuc) return;
+    std::set<long long> before;
+    for (std::size_t i = 0; i < in.index; ++i)
+        if (const auto& n = in.program->blocks[i].number; n && n->integer()) before.insert(*n->integer());
+    for (std::size_t i = in.index; i < in.program->blocks.size(); ++i) {
+        const Block& b = in.program->blocks[i];
+        bool cycle = false;
+        for (const auto& w : b.words) {
+            if (w.address == 'G' && !w.macro) {
+                int code = static_cast<int>(std::lround(std::strtod(w.text.c_str() + 1, nullptr) * 10));
+                cycle |= code != 760 && motion::classify(code, in.dialect, true) == motion::GKind::repetitive;
+            }
+            if (cycle && w.address == 'P' && w.integer() && before.contains(*w.integer()))
+                refuse(b.where, w.text + " of this cycle names a block before " + target.number_text() +
+                                    ": the restarted program does not hold its contour");
+        }
+    }
+}
+
+// A corner word (",C", ",R") on the block before: the block starts at the corner's end, not at the sharp
+// corner the approach would go to.
+void check_corner(const ApproachInput& in, const Block& target) {
+    if (in.index == 0) return;
+    for (const auto& w : in.program->blocks[in.index - 1].words)
+        if (w.address == ',')
+            refuse(target.where, "the block before " + target.number_text() + " ends in a corner (" + w.text +
+                                     "): " + target.number_text() + " starts where the corner ends, not rebuilt");
+}
+
 }  // namespace
 
 std::vector<std::string> restart_approach(const ApproachInput& in) {
@@ -148,6 +184,8 @@ std::vector<std::string> restart_approach(const ApproachInput& in) {
     for (std::size_t i = 0; i < in.index; ++i) run.block(p.blocks[i]);
     check_known(in, run, before, target);
     check_transform(in, target);
+    check_contours(in, run, target);
+    check_corner(in, target);
 
     const ModalState st = run.state();
     const Point at = run.position();
