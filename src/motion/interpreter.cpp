@@ -16,6 +16,7 @@ void Interpreter::dialect(const DialectChoice& choice) { machine_->dialect(choic
 void Interpreter::program_start(const Program& header) { machine_->program_start(header); }
 void Interpreter::block(const Block& block) { machine_->block(block); }
 void Interpreter::end(const Location& where) { (void)where; }
+void Interpreter::subprograms(const SubprogramText* text) { machine_->subprograms(text); }
 
 Point Interpreter::position() const { return machine_->pos; }
 unsigned Interpreter::known() const { return machine_->known; }
@@ -23,7 +24,9 @@ const ModalState& Interpreter::state() const { return machine_->st; }
 
 void interpret_each(std::string_view text, std::span<const std::uint64_t> frame_of, MotionVisitor& out,
                     const MotionOptions& options) {
+    SubprogramText subs(text, frame_of);
     Interpreter in(out, options);
+    in.subprograms(&subs);
     LoadOptions lo;
     lo.dialect = options.dialect;
     load_each(text, frame_of, in, lo);
