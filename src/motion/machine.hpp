@@ -113,6 +113,7 @@ private:
     bool call_allowed(const motion::Body& body, const std::string& name, const motion::PendingCall& c);
     void follow();
     void replay(const motion::Body& body);
+    bool over_budget();
     // cycles.cpp
     void drill_cycle(const Point& end, unsigned end_known, unsigned named);
     void drill_hole(Point at, double r_level, double bottom, unsigned zbit);

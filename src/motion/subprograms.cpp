@@ -69,15 +69,20 @@ void MotionMachine::subprograms(const SubprogramText* text) {
     following_ = subs_ && subs_->has_calls() && opt_.follow_subprograms;
 }
 
+// Blocks and repeats run from subprograms are bounded (hostile repeat counts): past the bound nothing
+// more runs, said once.
+bool MotionMachine::over_budget() {
+    if (++calls_.replayed <= CallState::max_replayed) return false;
+    if (!calls_.ended)
+        not_simulated("more than 10 million blocks run from subprograms: the rest are not followed", all_axes);
+    calls_.ended = true;
+    return true;
+}
+
 bool MotionMachine::call_over() const { return calls_.returned || calls_.ended; }
 
 void MotionMachine::called_block(const Block& b) {
-    if (++calls_.replayed > CallState::max_replayed) {
-        if (calls_.replayed == CallState::max_replayed + 1)
-            not_simulated("more than 10 million blocks run from subprograms: the rest are not followed", all_axes);
-        calls_.ended = true;
-        return;
-    }
+    if (over_budget()) return;
     if (!opt_.findings_only) out_.subprogram_block(b);
     block(b);
 }
@@ -146,7 +151,7 @@ bool MotionMachine::call_m(int m) {
     c = PendingCall{.kind = m == 98 ? PendingCall::Kind::program : PendingCall::Kind::local,
                     .number = std::llround(w_.get('P')),
                     .p_digits = static_cast<int>(w_.word_of('P')->digits().size()),
-                    .repeats = w_.ok('L') ? std::llround(w_.get('L')) : 1,
+                    .repeats = w_.ok('L') ? std::llround(std::clamp(w_.get('L'), 0.0, 1e9)) : 1,
                     .repeats_given = w_.ok('L'),
                     .label = written};
     return true;
@@ -251,6 +256,8 @@ void MotionMachine::follow() {
     if (!body || !call_allowed(*body, name, c)) return;
     calls_.stack.push_back({body->from.offset, caller->where.offset, name, false});
     for (long long i = 0; i < c.repeats && !calls_.ended; ++i) {
+        // A repeat counts as a block: an empty body repeated without end stops at the bound too.
+        if (over_budget()) break;
         replay(*body);
         calls_.returned = false;
         block_ = caller;
