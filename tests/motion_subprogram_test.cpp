@@ -174,6 +174,15 @@ TEST(MotionSubprograms, RecursionNamed) {
     EXPECT_EQ(named[0].where.line, 8u);
 }
 
+// A program that calls only itself still runs: its call is named where it recurs.
+TEST(MotionSubprograms, ProgramCallingItselfStillRuns) {
+    auto c = run("%\nO0001\nN10 G90 G00 X0 Y0 Z5.\nN20 M98 P1\nN30 M30\n%\n", Dialect::fanuc);
+    EXPECT_EQ(c.of(MoveKind::rapid).size(), 1u);
+    auto named = c.of(MoveKind::not_simulated);
+    ASSERT_EQ(named.size(), 1u);
+    EXPECT_EQ(named[0].where.line, 4u);
+}
+
 TEST(MotionSubprograms, MissingProgramNamedAtItsBlock) {
     auto c = run("%\nO0001\nN10 G90 G00 X0 Y0 Z5.\nN20 M98 P5001 L3\nN30 G00 X1.\nN40 M30\n%\n", Dialect::fanuc);
     auto named = c.of(MoveKind::not_simulated);

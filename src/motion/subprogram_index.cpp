@@ -104,8 +104,9 @@ private:
         if (!m98) return;
         for (const auto& w : b.words)
             if (w.address == 'P' && w.integer()) {
-                out_.targets_.push_back(*w.integer());
-                if (w.digits().size() > 4) out_.targets_.push_back(*w.integer() % 10000);
+                std::size_t by = out_.programs_.size() - 1;
+                out_.targets_.emplace_back(*w.integer(), by);
+                if (w.digits().size() > 4) out_.targets_.emplace_back(*w.integer() % 10000, by);
             }
     }
 
@@ -145,8 +146,11 @@ const SubprogramIndex::Sub* SubprogramIndex::sub(std::string_view label) const {
     return nullptr;
 }
 
-bool SubprogramIndex::called(long long number) const {
-    return std::binary_search(targets_.begin(), targets_.end(), number);
+bool SubprogramIndex::called(long long number, std::size_t i) const {
+    auto it = std::lower_bound(targets_.begin(), targets_.end(), std::make_pair(number, std::size_t{0}));
+    for (; it != targets_.end() && it->first == number; ++it)
+        if (it->second != i) return true;
+    return false;
 }
 
 SubprogramText::SubprogramText(std::string_view text, std::span<const std::uint64_t> frame_of)

@@ -92,8 +92,9 @@ void MotionMachine::calls_start(const Program& header) {
     calls_.reset();
     if (!following_ || !header.number) return;
     const SubprogramIndex& index = subs_->index(dialect_);
-    const auto& entry = index.program_entry(index.program_at(header.start.offset));
-    calls_.standalone = entry.number && index.called(*entry.number);
+    std::size_t i = index.program_at(header.start.offset);
+    const auto& entry = index.program_entry(i);
+    calls_.standalone = entry.number && index.called(*entry.number, i);
 }
 
 // Blocks that do not run: a called program in text order, what follows M02/M30, and the caller's blocks
@@ -235,14 +236,18 @@ bool MotionMachine::call_allowed(const Body& body, const std::string& name, cons
                       all_axes);
         return false;
     }
-    for (const auto& f : calls_.stack)
-        if (f.body == body.from.offset) {
-            not_simulated(call + " calls " + name +
-                              " while it runs (recursion): without a macro to end it the calls "
-                              "never end; not followed",
-                          all_axes);
-            return false;
-        }
+    // Running: the bodies called, and the program the calling block stands in (a program calling itself).
+    const SubprogramIndex& index = subs_->index(dialect_);
+    bool itself = c.kind == PendingCall::Kind::program &&
+                  index.program_entry(index.program_at(block_->where.offset)).body.from.offset == body.from.offset;
+    for (const auto& f : calls_.stack) itself = itself || f.body == body.from.offset;
+    if (itself) {
+        not_simulated(call + " calls " + name +
+                          " while it runs (recursion): without a macro to end it the calls "
+                          "never end; not followed",
+                      all_axes);
+        return false;
+    }
     return true;
 }
 

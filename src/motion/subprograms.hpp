@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "tape/dialect.hpp"
@@ -58,15 +59,16 @@ public:
     /// The first block N<n> of program i.
     const motion::TextPlace* numbered(std::size_t program, long long n) const;
     const Sub* sub(std::string_view label) const;
-    /// True when some M98 in the text calls program number (a called program does not run on its own).
-    bool called(long long number) const;
+    /// True when an M98 of another program than program i calls program number (a called program does
+    /// not run on its own; one that only calls itself does).
+    bool called(long long number, std::size_t i) const;
 
 private:
     friend class SubprogramIndexer;
     std::vector<Program> programs_;
     std::vector<Numbered> numbered_;  // sorted
     std::vector<Sub> subs_;
-    std::vector<long long> targets_;  // sorted: the program numbers M98 names
+    std::vector<std::pair<long long, std::size_t>> targets_;  // sorted: the program numbers M98 names, by whom
 };
 
 namespace motion {
