@@ -214,6 +214,25 @@ TEST(MotionSubprograms, MovesCarryTheSubprogramBlocksFrames) {
     }
 }
 
+// Fanuc's ';' ends a block: a subprogram written on one line, its blocks' columns counted on from where
+// its body starts on that line.
+TEST(MotionSubprograms, BodyStartingInsideALine) {
+    std::string text = "%\nO0001;N10 G90 G00 X0 Y0 Z5.;N20 M98 P7;N30 M30;\nO7;N1 G91 G01 X2. F50.;N2 M99;\n%\n";
+    auto c = run(text, Dialect::fanuc);
+    tape::LoadOptions lo;
+    lo.dialect = Dialect::fanuc;
+    auto loaded = tape::load(text, {}, lo);
+    ASSERT_EQ(loaded.programs.size(), 2u);
+    const tape::Block& n1 = loaded.programs[1].blocks[1];
+    ASSERT_EQ(n1.number_text(), "N1");
+    auto lines = c.of(MoveKind::linear);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0].where.line, n1.where.line);
+    EXPECT_EQ(lines[0].where.column, n1.where.column);
+    EXPECT_EQ(lines[0].where.offset, n1.where.offset);
+    EXPECT_NEAR(lines[0].end.x, 2, 1e-9);
+}
+
 // Not following (follow_subprograms off): the call is named as before, O1000 runs on its own.
 TEST(MotionSubprograms, NotFollowingNamesTheCall) {
     Collect c;

@@ -1,6 +1,6 @@
 // A block through the interpreter: its statements (jumps and loops are not followed; calls are, in
-// subprograms.cpp), then its words in the order a control runs them: modal codes, F/S/T, the events before motion, the
-// motion, the events after it.
+// subprograms.cpp), then its words in the order a control runs them: modal codes, F/S/T, the events
+// before motion, the motion, the events after it; then the call it made, if any.
 #include "motion/machine.hpp"
 
 #include <utility>
