@@ -102,6 +102,9 @@ public:
     virtual void finding(const Finding& finding) { (void)finding; }
     /// A new program starts (its moves follow); the position is unknown again.
     virtual void program_start(const Program& header) { (void)header; }
+    /// A block of a called subprogram is about to run (its moves follow). The program's own blocks come
+    /// from the loader; these come from the text again, each time the subprogram is called.
+    virtual void subprogram_block(const Block& block) { (void)block; }
 };
 
 /// How a program is interpreted: what the tape does not say about the control.
@@ -112,7 +115,7 @@ struct MotionOptions {
     const FormatSpec* spec = nullptr;   ///< the control's word formats: the implied point of words without one
     double arc_tolerance_mm = 0.001;    ///< an arc's end may be this far off its circle (the seeds' micron)
     double arc_tolerance_relative = 0;  ///< plus this fraction of the radius (LinuxCNC: 0.001)
-    bool follow_subprograms = true;     ///< M98/M97/o-call into a program on the same tape
+    bool follow_subprograms = true;     ///< M98/M97/o-call into a program in the same text (SubprogramText)
     /// LinuxCNC's rule (interp_arc.cc, arc_data_ijk): an arc is off when the radii differ by more than
     /// arc_tolerance_mm AND by more than arc_tolerance_relative of the larger radius, or by more than 100
     /// times arc_tolerance_mm. false: off when they differ by more than the two added.
@@ -136,8 +139,38 @@ MotionOptions motion_options(Dialect dialect);
 /// The options point into m: m must outlive them.
 MotionOptions motion_options(const MachineProfile& m, Dialect d);
 
-/// The interpreter fed by the loader (ProgramLoader, load_each): blocks in, moves out, in bounded memory
-/// (subprograms on the tape are kept to be followed, nothing else).
+class SubprogramIndex;  // src/motion/subprograms.hpp
+
+/// The text a program's subprograms are looked up in when a block calls one (Fanuc/Haas M98 P, Haas
+/// M97 P, LinuxCNC o-call): the whole text being interpreted, kept by reference (text and frame_of must
+/// outlive it). A text that holds a call is indexed once, when first needed, by the offsets of its
+/// programs, o-subs and numbered blocks; a subprogram is loaded again from its offset each time it is
+/// called, so no block is kept.
+class SubprogramText {
+public:
+    explicit SubprogramText(std::string_view text, std::span<const std::uint64_t> frame_of = {});
+    ~SubprogramText();
+    SubprogramText(const SubprogramText&) = delete;
+    SubprogramText& operator=(const SubprogramText&) = delete;
+
+    /// True when the text writes a call (M97, M98, an o-word "call"; comments included): only then is
+    /// it indexed.
+    bool has_calls() const { return has_calls_; }
+    std::string_view text() const { return text_; }
+    std::span<const std::uint64_t> frame_of() const { return frame_of_; }
+    /// The index, built on first use in dialect (the dialect the text is loaded in).
+    const SubprogramIndex& index(Dialect dialect) const;
+
+private:
+    std::string_view text_;
+    std::span<const std::uint64_t> frame_of_;
+    bool has_calls_ = false;
+    mutable std::unique_ptr<SubprogramIndex> index_;
+};
+
+/// The interpreter fed by the loader (ProgramLoader, load_each): blocks in, moves out, in bounded memory.
+/// Subprograms are followed where the text they are in is given (subprograms()); a call to one that is
+/// not there is named as not simulated at its block.
 class Interpreter : public ProgramVisitor {
 public:
     Interpreter(MotionVisitor& out, const MotionOptions& options = {});
@@ -150,6 +183,10 @@ public:
     void block(const Block& block) override;
     void end(const Location& where) override;
 
+    /// The text the loader reads, where called subprograms are looked up (nullptr: calls are not
+    /// followed). It must outlive the interpreter's use.
+    void subprograms(const SubprogramText* text);
+
     /// The tool's place after the last block, and which axes of it are known.
     Point position() const;
     unsigned known() const;
@@ -161,7 +198,8 @@ private:
     std::unique_ptr<class MotionMachine> machine_;
 };
 
-/// Interprets a text (or a decoded tape with frame_of) in one pass: load_each into an Interpreter.
+/// Interprets a text (or a decoded tape with frame_of) in one pass: load_each into an Interpreter, its
+/// subprograms followed in the same text (unless options.follow_subprograms is false).
 void interpret_each(std::string_view text, std::span<const std::uint64_t> frame_of, MotionVisitor& out,
                     const MotionOptions& options = {});
 

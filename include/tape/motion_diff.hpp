@@ -34,6 +34,7 @@ public:
     void move(const Move& move) override;
     /// The block the interpreter is about to be given (its text is kept for the pieces it starts).
     void note_block(const Block& block);
+    void subprogram_block(const Block& block) override { note_block(block); }
     const std::vector<PathPiece>& pieces() const { return pieces_; }
 
 private:

@@ -45,6 +45,8 @@ public:
 
     void move(const Move& move) override;
     void program_start(const Program& header) override;
+    /// A block of a called subprogram: its text kept for its moves (its frames were noted in text order).
+    void subprogram_block(const Block& block) override;
     /// Moves read from any of frames (1-based, any order) are in doubt: drawn in the doubt colour.
     void mark_doubtful(std::vector<std::uint64_t> frames);
     /// The block the interpreter is about to be given: where its frames start (for mark_doubtful), and

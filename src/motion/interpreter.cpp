@@ -19,6 +19,7 @@ void Interpreter::end(const Location& where) {
     (void)where;
     machine_->end();
 }
+void Interpreter::subprograms(const SubprogramText* text) { machine_->subprograms(text); }
 
 Point Interpreter::position() const { return machine_->pos; }
 unsigned Interpreter::known() const { return machine_->known; }
@@ -27,7 +28,9 @@ std::string Interpreter::open_cycle() const { return machine_->open_cycle(); }
 
 void interpret_each(std::string_view text, std::span<const std::uint64_t> frame_of, MotionVisitor& out,
                     const MotionOptions& options) {
+    SubprogramText subs(text, frame_of);
     Interpreter in(out, options);
+    in.subprograms(&subs);
     LoadOptions lo;
     lo.dialect = options.dialect;
     load_each(text, frame_of, in, lo);

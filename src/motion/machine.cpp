@@ -1,6 +1,6 @@
-// A block through the interpreter: its statements (jumps, loops and calls are not followed), then its
-// words in the order a control runs them: modal codes, F/S/T, the events before motion, the motion,
-// the events after it.
+// A block through the interpreter: its statements (jumps and loops are not followed; calls are, in
+// subprograms.cpp), then its words in the order a control runs them: modal codes, F/S/T, the events
+// before motion, the motion, the events after it; then the call it made, if any.
 #include "motion/machine.hpp"
 
 #include <utility>
@@ -56,11 +56,13 @@ void MotionMachine::reset() {
 void MotionMachine::program_start(const Program& header) {
     end();
     reset();
+    calls_start(header);
     out_.program_start(header);
 }
 
 void MotionMachine::block(const Block& b) {
     block_ = &b;
+    if (following_ && call_skips(b)) return;
     bool contour = lathe_.open && contour_before(b);  // a lathe cycle's P-Q contour (lathe_cycles.cpp)
     one_block(b);
     if (contour) contour_after(b);
@@ -78,6 +80,7 @@ void MotionMachine::end() {
 }
 
 void MotionMachine::one_block(const Block& b) {
+    calls_.pending.kind = PendingCall::Kind::none;
     if (statements(b)) return;
     if (b.skip && opt_.block_skip) return;
     if (b.damaged) {
@@ -85,10 +88,11 @@ void MotionMachine::one_block(const Block& b) {
         return;
     }
     run(b);
+    if (calls_.pending.kind != PendingCall::Kind::none) follow();
 }
 
 // LinuxCNC o-words and Fanuc macro statements. True when the block is not run as a block: inside an
-// o-sub definition (it runs when called), or a jump, loop or call whose course the text does not fix.
+// o-sub definition (it runs when called). A jump or loop whose course the text does not fix is named.
 bool MotionMachine::statements(const Block& b) {
     for (const auto& s : b.statements) {
         if (s.kind == Statement::Kind::o_word) {
@@ -98,12 +102,8 @@ bool MotionMachine::statements(const Block& b) {
                 --sub_depth_;
                 return true;
             }
-            if (sub_depth_ > 0) continue;
-            if (s.keyword == "call")
-                not_simulated(
-                    "a subroutine call (" + s.text + ") is not followed: where it leaves the tool is not known",
-                    all_axes);
-            else if (s.keyword != "sub")
+            if (sub_depth_ > 0 || o_word_call(s)) continue;
+            if (s.keyword != "sub")
                 not_simulated("o-word control flow (" + s.text +
                                   ") is not followed: which blocks run, and how often, "
                                   "is decided when the program runs",
@@ -162,7 +162,7 @@ void MotionMachine::begin(MoveKind kind) {
     mv_.block = block_ ? block_->ordinal : 0;
     if (block_) mv_.where = block_->where;
     mv_.last_frame.reset();
-    mv_.depth = 0;
+    mv_.depth = static_cast<int>(calls_.stack.size());
     st.motion = cycle_ >= 0 ? cycle_ : group01_;
     mv_.state = st;
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "motion/lathe_cycles.hpp"
+#include "motion/subprograms.hpp"
 #include "motion/words.hpp"
 #include "tape/motion.hpp"
 
@@ -60,6 +61,11 @@ public:
     void block(const Block& b);
     void end();  ///< the text has ended
     std::string open_cycle() const { return lathe_.open ? lathe_.open->name : std::string(); }
+    /// subprograms.cpp: the text called subprograms are looked up in; a block of a called body; true
+    /// when the body running has returned (the rest of its blocks do not run).
+    void subprograms(const SubprogramText* text);
+    void called_block(const Block& b);
+    bool call_over() const;
 
     Point pos{};
     unsigned known = 0;
@@ -110,6 +116,17 @@ private:
     std::optional<Point> iso_centre_{};
     bool checkable_arc(unsigned plane_bits, char cu, char cv) const;
     bool arc_off(double r1, double r2) const;
+    // subprograms.cpp
+    void calls_start(const Program& header);
+    bool call_skips(const Block& b);
+    bool o_word_call(const Statement& s);
+    bool call_m(int m);
+    void return_to_block();
+    std::optional<motion::Body> call_body(motion::PendingCall& c, std::string& name);
+    bool call_allowed(const motion::Body& body, const std::string& name, const motion::PendingCall& c);
+    void follow();
+    void replay(const motion::Body& body);
+    bool over_budget();
     // cycles.cpp
     void drill_cycle(const Point& end, unsigned end_known, unsigned named);
     void drill_hole(Point at, double r_level, double bottom, unsigned zbit);
@@ -158,6 +175,9 @@ private:
     Point local_{};           // G52's shift from the work offset's zero
     std::string transform_;   // the G code of a coordinate transformation in force ("G68"), or empty
     bool plane_set_ = false;  // the program chose its plane (G17/G18/G19)
+    const SubprogramText* subs_ = nullptr;
+    bool following_ = false;  // subprogram calls are followed in subs_
+    motion::CallState calls_{};
     unsigned scaled_ = 0,
              scaled_start_ = 0;  // axes whose place came from a Fanuc value without a point (least increment)
 };

@@ -277,11 +277,7 @@ void MotionMachine::events_after() {
         if (m == 5) st.spindle = 5, event(MoveKind::spindle, 5);
         if (m == 9) st.coolant = 9, event(MoveKind::coolant, 9);
         if (m == 0 || m == 1) event(MoveKind::stop, m);
-        bool call = (m == 98 || m == 97) && dialect_ != Dialect::linuxcnc;
-        if (call)
-            not_simulated(
-                "a subprogram call (M" + std::to_string(m) + ") is not followed: where it leaves the tool is not known",
-                all_axes);
+        if (call_m(m)) continue;  // M97, M98, M99 in a subprogram (subprograms.cpp)
         if (m == 2 || m == 30 || (m == 99 && dialect_ == Dialect::fanuc)) event(MoveKind::program_end, m);
     }
 }

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "motion/restart_approach.hpp"
+#include "program/restart_calls.hpp"
 #include "tape/error.hpp"
 #include "tape/program.hpp"
 #include "tape/restart.hpp"
@@ -172,6 +173,11 @@ std::vector<std::string> ModalState::blocks() const {
 
 std::string line_text(const Location& where) { return "line " + std::to_string(where.line); }
 
+// A call before the restart block: the interpreter follows it, but the modal blocks are rebuilt from the
+// program's own blocks, so what the subprogram leaves in force would be missing from them.
+constexpr const char* not_rebuilt =
+    ": the modal state the subprogram leaves is not rebuilt from its blocks; restart before the call";
+
 // The blocks before the restart block, in order: the state they leave, and the reasons to refuse.
 class Walk {
 public:
@@ -253,7 +259,7 @@ private:
         if (k == "sub") in_definition_ = s.where;
         if (k == "endsub") in_definition_.reset();
         if (in_definition_ || k == "endsub") return;
-        if (k == "call") refuse(s.where, "a subroutine call (" + s.text + "): the state it leaves is not in this text");
+        if (k == "call") refuse(s.where, "a subroutine call (" + s.text + ")" + not_rebuilt);
         if (k == "return" || k == "break" || k == "continue")
             refuse(s.where, "a jump (" + s.text + ") runs before the restart block");
         bool closes_do =
@@ -362,7 +368,7 @@ private:
             s.flood = true;
         }
         if (dialect_ != Dialect::linuxcnc && (*code == 98 || *code == 198))
-            refuse(w.where, "a subprogram call (" + w.text + "): the state it leaves is not in this text");
+            refuse(w.where, "a subprogram call (" + w.text + ")" + not_rebuilt);
     }
 };
 
@@ -418,13 +424,11 @@ std::string program_start(const LoadedTape& tape, const Program& p, std::size_t 
     return start;
 }
 
-// The restart block and everything to the next program's start.
-std::string rest_of_program(const LoadedTape& tape, const Program& p, const Block& target) {
-    std::uint64_t end = tape.text.size();
-    for (const auto& other : tape.programs)
-        if (other.start.offset > p.start.offset && other.start.offset < end) end = other.start.offset;
-    auto from = target.where.offset;
-    return tape.text.substr(from, end - from);
+// The restart block and everything to the next program's start (to the text's end where the rest
+// calls a program written after it: restart_calls.cpp).
+std::string rest_of_program(const LoadedTape& tape, const Program& p, std::size_t index) {
+    auto from = p.blocks[index].where.offset;
+    return tape.text.substr(from, rest_end(tape, p, index) - from);
 }
 
 void end_line(std::string& s) {
@@ -482,7 +486,7 @@ RestartPlan plan_restart(std::string_view text, std::string_view block, Dialect 
     plan.dialect = lo.dialect;
     plan.block = target.number_text();
     plan.line = target.where.line;
-    plan.start = program_start(tape, p, found.index);
+    plan.start = program_start(tape, p, found.index) + definitions_before(tape, p, found.index);
     bool number_sent = p.numbered_by_block && found.index > 0 && p.number && p.blocks[0].source.starts_with(*p.number);
     plan.skipped_blocks = found.index - (number_sent ? 1 : 0);
     plan.marker = "(RESTART AT " + plan.block + ")";
@@ -490,7 +494,7 @@ RestartPlan plan_restart(std::string_view text, std::string_view block, Dialect 
     auto state = walk.state().blocks();
     plan.modal.insert(plan.modal.end(), state.begin(), state.end());
     plan.approach = approach(p, found.index, lo.dialect, lathe, walk, target);
-    plan.rest = rest_of_program(tape, p, target);
+    plan.rest = rest_of_program(tape, p, found.index);
     // The blocks made up here end as the program's own lines do: a CR LF program stays CR LF.
     auto lf = plan.rest.find('\n');
     if (lf != std::string::npos && lf > 0 && plan.rest[lf - 1] == '\r') plan.line_end = "\r\n";

@@ -79,6 +79,10 @@ void Toolpath::keep(const Move& m) {
 void Toolpath::note_block(const Block& block) {
     if (block.where.frame && (block_frames_.empty() || block_frames_.back().first < block.ordinal))
         block_frames_.emplace_back(block.ordinal, *block.where.frame);
+    subprogram_block(block);
+}
+
+void Toolpath::subprogram_block(const Block& block) {
     if (!keep_blocks_) return;
     source_block_ = block.ordinal;
     source_ = block.source;

@@ -1,5 +1,6 @@
 #include "motion_input.hpp"
 
+#include "cli/inputs.hpp"
 #include "cli/machines.hpp"
 #include "cli/messages.hpp"
 #include "cli/options.hpp"
@@ -29,6 +30,29 @@ private:
     const std::function<void(const tape::Block&)>& on_block_;
     std::vector<std::uint64_t>& bad_;
 };
+
+// The subprograms a block calls are looked up in the whole text, read a first time before the blocks
+// are streamed; it is kept only when it writes a call, and up to this size (a bound on memory).
+constexpr std::size_t max_called_text = 64 << 20;
+
+// The whole of path's text (and frames) as the streaming pass will read it; nullopt for standard input
+// (read once), a text too long to keep, or one that cannot be read (the streaming pass says why).
+std::optional<tape::DecodeResult> text_for_calls(const std::string& path, const ProgramSource& source) {
+    if (path.empty() || path == "-") return std::nullopt;
+    try {
+        tape::InputOptions o = input_options(source.choice, source.format, source.kind);
+        o.decode.positions = true;
+        o.decode.keep_going = true;
+        o.decided_runs = source.decided_runs;
+        tape::Input in(path, o);
+        tape::DecodeResult all;
+        while (in.next_text(all) && all.complete)
+            if (all.text.size() > max_called_text) return std::nullopt;
+        return all;
+    } catch (const tape::Error&) {
+        return std::nullopt;
+    }
+}
 
 }  // namespace
 
@@ -71,7 +95,13 @@ MotionRead read_motion(const std::string& path, const ProgramSource& source, con
     read.from_tape = read.in.from_tape;
     std::optional<tape::FormatSpec> spec;
     if (!args.spec.empty()) spec = parse_spec_or_fail(args.spec);
+    auto whole = text_for_calls(path, reading);
+    std::optional<tape::SubprogramText> subs;
+    if (whole)
+        subs.emplace(whole->text, read.from_tape ? std::span<const std::uint64_t>(whole->frame_of)
+                                                 : std::span<const std::uint64_t>());
     tape::Interpreter interpreter(out, motion_options(source, args, spec));
+    if (subs && subs->has_calls()) interpreter.subprograms(&*subs);
     MotionFeed feed(interpreter, on_block, read.bad_frames);
     load_program(read.in, feed, true);
     return read;
