@@ -232,12 +232,15 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
         if ((w->address == 'G' || w->address == 'M') && !code_known(s_.dialect, w->address, code_value(value)) &&
             !rules.code_used(w->address, code_value(value)))
             out.push_back("unknown-code");
+        if ((w->address == 'G' || w->address == 'M') && s_.machine && rules.machine_codes_trusted())
+            if (machine_lists_code(*s_.machine, *w) == false) out.push_back("machine-code");
         auto shape = shape_of(*w);
         if ((shape && rules.format_broken(w->address == ':' ? 'N' : w->address, *shape)) || rules.form_broken(*w))
             out.push_back("word-format");
         const FormatSpec* spec = first ? rules.block_spec(line_, *first) : s_.spec;
-        if (spec && (!s_.machine || rules.machine_format_trusted(w->address)))
-            for (const auto& [rule, message] : check_word(*w, *spec, rules.points())) out.push_back(std::string(rule));
+        if (spec)
+            for (const auto& [rule, message] : check_word(*w, *spec, rules.points()))
+                if (!s_.machine || rules.machine_rule_trusted(w->address, rule)) out.push_back(std::string(rule));
         if ((w->address == 'N' || w->address == ':') && w->where.line == before_lines_ + 1)
             if (auto expected = rules.expected_number(line_); expected && w->integer() != expected)
                 out.push_back("block-number");
