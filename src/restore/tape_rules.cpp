@@ -192,9 +192,30 @@ void TapeRules::finish(std::string_view text) {
         excused_.insert(finding_key(f, lines[line - 1]));
         with_errors.insert(line);
     }
+    for (std::size_t l = 0; l < lines.size(); ++l)
+        if (!damaged_lines_.count(l + 1)) learn_digit_spacing(lines[l]);
     error_lines_ = with_errors.size();
     lint_.reset();
     learn_step();
+}
+
+// Digits side by side, and digits with only spaces between them, outside ( ) comments.
+void TapeRules::learn_digit_spacing(std::string_view line) {
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    bool comment = false, last_digit = false, spaced = false;
+    for (char c : line) {
+        comment = c == '(' || (comment && c != ')');
+        if (comment || c == ')') {
+            last_digit = false;
+        } else if (c == ' ') {
+            spaced = true;
+            continue;
+        } else {
+            if (digit(c) && last_digit) ++(spaced ? split_digits_ : digit_pairs_);
+            last_digit = digit(c);
+        }
+        spaced = false;
+    }
 }
 
 void TapeRules::learn_block(const Block& b, bool damaged) {

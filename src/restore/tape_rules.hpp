@@ -139,15 +139,21 @@ public:
     /// Where it does not (no known dialect fits: an Okuma or Siemens program read as another), repairs
     /// are not judged by it.
     bool grammar_fits() const { return error_lines_ * 5 <= std::max<std::size_t>(blocks_, 1); }
+    /// The undamaged lines write many numbers of two digits or more (enough_digit_pairs pairs of digits
+    /// side by side, outside comments) and never a space between two digits: a space there breaks how
+    /// the tape writes its words (it may put spaces between a letter, a sign and the digits).
+    bool digits_never_split() const { return digit_pairs_ >= enough_digit_pairs && split_digits_ == 0; }
     /// The program writes explicit points somewhere (for a format spec's checks).
     bool points() const { return points_; }
     static constexpr std::size_t enough_words = 5;
     static constexpr std::size_t enough_blocks = 5;
+    static constexpr std::size_t enough_digit_pairs = 20;
 
 private:
     void learn_block(const Block& b, bool damaged);
     void learn_machine_format(const Word& w, const FormatSpec& spec);
     void learn_step();
+    void learn_digit_spacing(std::string_view line);
     std::optional<long long> local_sequence(std::size_t at) const;
     bool more_digits_than_ever(char address, const WordShape& shape) const;
     static constexpr long long damaged_number = -1, no_number = -2;  // in numbers_
@@ -180,6 +186,7 @@ private:
     std::size_t machine_codes_ = 0;                    // undamaged G and M words the profile lists
     bool foreign_codes_ = false;                       // and some it does not
     bool points_ = false;
+    std::size_t digit_pairs_ = 0, split_digits_ = 0;  // in undamaged lines: digits side by side, and apart
     long long step_ = 0;  // the block numbers' steady step, 0 for none
     std::size_t arcs_checked_ = 0, arcs_open_ = 0;
     std::size_t blocks_ = 0, error_lines_ = 0;
