@@ -187,7 +187,7 @@ private:
     bool foreign_codes_ = false;                       // and some it does not
     bool points_ = false;
     std::size_t digit_pairs_ = 0, split_digits_ = 0;  // in undamaged lines: digits side by side, and apart
-    long long step_ = 0;  // the block numbers' steady step, 0 for none
+    long long step_ = 0;                              // the block numbers' steady step, 0 for none
     std::size_t arcs_checked_ = 0, arcs_open_ = 0;
     std::size_t blocks_ = 0, error_lines_ = 0;
 };
