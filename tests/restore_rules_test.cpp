@@ -247,10 +247,11 @@ TEST(RestoreRules, TheMachinesNotationAndCodesDecideWhatTheSampleTapeKeeps) {
         EXPECT_EQ(r.result.frames[at], tape[at]);
         EXPECT_NE(r.problem->reason.find(rule), std::string::npos) << r.problem->reason;
     };
-    expect_inferred(frame_of(tape, "G58", 1), 0, "machine-code");         // G58 read as G4?, G68, G78 unlisted
+    expect_inferred(frame_of(tape, "G58", 1), 0, "machine-code");         // G68, G08, G48: not in the profile
     expect_inferred(frame_of(tape, "T102"), 2, "spec-address");           // Q, R, P: no address of the machine
-    expect_inferred(frame_of(tape, "M102", 2), 3, "machine-code");        // M1x2: M12, M32, M92 unlisted
+    expect_inferred(frame_of(tape, "M102", 2), 3, "machine-code");        // M192, M182: codes 92, 82 not in it
     expect_inferred(frame_of(tape, "X + 0000000", 5), 4, "word-format");  // "X + 0 00000": no number split
+    expect_inferred(frame_of(tape, "G58\n", 3), 0, "spec-tab");           // LF read as a tab: the format has no HT
     auto digit = one_flip(tape, frame_of(tape, "007500", 3), 1, Dialect::gost, &machine);  // 5 or 7: both fit
     ASSERT_NE(digit.problem, nullptr);
     EXPECT_EQ(digit.problem->status, FrameStatus::unresolved) << digit.problem->reason;

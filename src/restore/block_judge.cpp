@@ -218,6 +218,17 @@ bool BlockJudge::tried_arc(const LoadedTape& t) const {
     return false;
 }
 
+// A decided frame is a tab (HT) where the controller's format has none (no '.' in its notation) and,
+// with a machine, the tape keeps its notation and writes no tab elsewhere.
+bool BlockJudge::tab_off_format(const BlockTry& t) const {
+    const FormatSpec* spec = s_.machine ? &s_.machine->format : s_.spec;
+    if (!spec || spec->tab || (s_.machine && !(s_.rules && s_.rules->machine_rule_trusted('\t', "spec-tab"))))
+        return false;
+    return std::any_of(t.decided.begin(), t.decided.end(), [&](std::size_t at) {
+        return s_.code.kind(t.frames[at]) == FrameKind::character && s_.code.character(t.frames[at]) == '\t';
+    });
+}
+
 // The findings by rule, those the undamaged program has too left out.
 std::map<std::string, int> BlockJudge::by_rule(const std::map<std::string, int>& keys) const {
     std::map<std::string, int> out;
@@ -246,6 +257,7 @@ Breaks BlockJudge::judge(const BlockTry& t) const {
         out.push_back(std::string(arc_closes));
     if (s_.rules) own_rules(tried, places, out);
     if (s_.rules && s_.rules->digits_never_split() && splits_digits(s_.code, t)) out.push_back("word-format");
+    if (tab_off_format(t)) out.push_back("spec-tab");
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;

@@ -149,6 +149,7 @@ void TapeRules::learn_machine_format(const Word& w, const FormatSpec& spec) {
 
 bool TapeRules::machine_rule_trusted(char address, std::string_view rule) const {
     if (rule == "spec-digits") return machine_format_trusted(address);
+    if (rule == "spec-tab" && tabs_) return false;
     return checked_words_ >= enough_words && !broken_rules_.count(rule);
 }
 
@@ -199,11 +200,12 @@ void TapeRules::finish(std::string_view text) {
     learn_step();
 }
 
-// Digits side by side, and digits with only spaces between them, outside ( ) comments.
+// Digits side by side, and digits with only spaces between them, outside ( ) comments; and tabs.
 void TapeRules::learn_digit_spacing(std::string_view line) {
     auto digit = [](char c) { return c >= '0' && c <= '9'; };
     bool comment = false, last_digit = false, spaced = false;
     for (char c : line) {
+        tabs_ |= c == '\t';
         comment = c == '(' || (comment && c != ')');
         if (comment || c == ')') {
             last_digit = false;

@@ -129,7 +129,8 @@ public:
     /// rule of notation (an address the format lacks, a sign on an unsigned address, a point without DS)
     /// holds wherever the tape's undamaged words, enough_words of them or more, never break it at any
     /// address: the tape keeps its machine's notation, and the profile says which addresses and signs
-    /// the machine reads, also for an address the tape has too few words of.
+    /// the machine reads, also for an address the tape has too few words of. "spec-tab" (a tab where the
+    /// format has no HT) holds where, besides, no undamaged line has one.
     bool machine_rule_trusted(char address, std::string_view rule) const;
     /// The G and M codes of the tape's undamaged blocks, enough_words of them or more, are all the
     /// machine's (its profile lists them): only then is a code the profile does not list ruled out (the
@@ -187,6 +188,7 @@ private:
     bool foreign_codes_ = false;                       // and some it does not
     bool points_ = false;
     std::size_t digit_pairs_ = 0, split_digits_ = 0;  // in undamaged lines: digits side by side, and apart
+    bool tabs_ = false;                               // an undamaged line holds a tab (HT)
     long long step_ = 0;                              // the block numbers' steady step, 0 for none
     std::size_t arcs_checked_ = 0, arcs_open_ = 0;
     std::size_t blocks_ = 0, error_lines_ = 0;
