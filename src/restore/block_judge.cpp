@@ -218,11 +218,12 @@ bool BlockJudge::tried_arc(const LoadedTape& t) const {
     return false;
 }
 
-// A decided frame is a tab (HT) where the controller's format has none (no '.' in its notation) and,
-// with a machine, the tape keeps its notation and writes no tab elsewhere.
+// A decided frame is a tab (HT) where the controller's format has none (no '.' in its notation), the
+// tape writes no tab elsewhere and, with a machine, keeps its notation.
 bool BlockJudge::tab_off_format(const BlockTry& t) const {
     const FormatSpec* spec = s_.machine ? &s_.machine->format : s_.spec;
-    if (!spec || spec->tab || (s_.machine && !(s_.rules && s_.rules->machine_rule_trusted('\t', "spec-tab"))))
+    if (!spec || spec->tab || !s_.rules || s_.rules->tabs() ||
+        (s_.machine && !s_.rules->machine_rule_trusted('\t', "spec-tab")))
         return false;
     return std::any_of(t.decided.begin(), t.decided.end(), [&](std::size_t at) {
         return s_.code.kind(t.frames[at]) == FrameKind::character && s_.code.character(t.frames[at]) == '\t';

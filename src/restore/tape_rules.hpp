@@ -144,6 +144,8 @@ public:
     /// side by side, outside comments) and never a space between two digits: a space there breaks how
     /// the tape writes its words (it may put spaces between a letter, a sign and the digits).
     bool digits_never_split() const { return digit_pairs_ >= enough_digit_pairs && split_digits_ == 0; }
+    /// An undamaged line holds a tab (HT).
+    bool tabs() const { return tabs_; }
     /// The program writes explicit points somewhere (for a format spec's checks).
     bool points() const { return points_; }
     static constexpr std::size_t enough_words = 5;
