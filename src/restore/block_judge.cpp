@@ -73,6 +73,28 @@ std::pair<std::size_t, std::size_t> around(const FrameCode& code, std::span<cons
     return {b, std::min(e + 1, image.size())};
 }
 
+// The character nearest to frames[at] in direction dir (+1, -1) that is no space (blank tape and DEL
+// skipped, as a reader skips them), or 0 at the block's end.
+char next_character(const FrameCode& code, std::span<const Frame> frames, std::size_t at, int dir) {
+    for (std::size_t i = at; dir > 0 ? i + 1 < frames.size() : i > 0;) {
+        i = dir > 0 ? i + 1 : i - 1;
+        if (code.kind(frames[i]) != FrameKind::character) continue;
+        char c = code.character(frames[i]);
+        if (c != ' ') return c;
+    }
+    return 0;
+}
+
+// A decided frame is a space between two digits: it splits a number.
+bool splits_digits(const FrameCode& code, const BlockTry& t) {
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    for (std::size_t at : t.decided)
+        if (code.kind(t.frames[at]) == FrameKind::character && code.character(t.frames[at]) == ' ' &&
+            digit(next_character(code, t.frames, at, -1)) && digit(next_character(code, t.frames, at, 1)))
+            return true;
+    return false;
+}
+
 }  // namespace
 
 std::string joined(const Breaks& breaks) {
@@ -176,16 +198,67 @@ std::map<std::string, int> BlockJudge::error_keys(const LoadedTape& t) const {
     return out;
 }
 
+namespace {
+bool is_arc_rule(std::string_view rule) { return rule == "arc-radius" || rule == "arc-radius-short"; }
+}  // namespace
+
+// The try's block moves along an arc: its own G02 or G03, or, with no motion code of its own, the one in
+// effect before it.
+bool BlockJudge::tried_arc(const LoadedTape& t) const {
+    for (const auto& p : t.programs)
+        for (const auto& b : p.blocks) {
+            if (b.where.line != before_lines_ + 1) continue;
+            std::optional<long long> motion;
+            for (const auto& w : b.words)
+                if (w.address == 'G' && w.integer() && *w.integer() >= 0 && *w.integer() <= 3) motion = w.integer();
+            const MotionState* state = s_.rules ? s_.rules->state_before(line_) : nullptr;
+            if (!motion && state && state->motion >= 0) motion = state->motion;
+            return motion == 2 || motion == 3;
+        }
+    return false;
+}
+
+// A decided frame is a tab (HT) where the controller's format has none (no '.' in its notation), the
+// tape writes no tab elsewhere and, with a machine, keeps its notation.
+bool BlockJudge::tab_off_format(const BlockTry& t) const {
+    const FormatSpec* spec = s_.machine ? &s_.machine->format : s_.spec;
+    if (!spec || spec->tab || !s_.rules || s_.rules->tabs() ||
+        (s_.machine && !s_.rules->machine_rule_trusted('\t', "spec-tab")))
+        return false;
+    return std::any_of(t.decided.begin(), t.decided.end(), [&](std::size_t at) {
+        return s_.code.kind(t.frames[at]) == FrameKind::character && s_.code.character(t.frames[at]) == '\t';
+    });
+}
+
+// The findings by rule, those the undamaged program has too left out.
+std::map<std::string, int> BlockJudge::by_rule(const std::map<std::string, int>& keys) const {
+    std::map<std::string, int> out;
+    for (const auto& [key, n] : keys)
+        if (!(s_.rules && s_.rules->excused(key))) out[key.substr(0, key.find(':'))] += n;
+    return out;
+}
+
 Breaks BlockJudge::judge(const BlockTry& t) const {
     Breaks out;
     std::vector<std::pair<std::size_t, std::size_t>> places;
     LoadedTape tried = load_with_context(block_text(s_.code, t.frames, t.decided, &places));
-    for (const auto& [key, n] : error_keys(tried)) {
-        auto base = baseline_.find(key);
-        if (n > (base == baseline_.end() ? 0 : base->second) && !(s_.rules && s_.rules->excused(key)))
-            out.push_back(key.substr(0, key.find(':')));
-    }
+    // By rule, not by key: a key names the character a finding points at, and a finding about the whole
+    // block (an arc off its circle) points at its first character, which the damaged word may be; a try
+    // that puts there the character the baseline has there would escape it.
+    const std::map<std::string, int> found = by_rule(error_keys(tried));
+    std::map<std::string, int> more = found;
+    for (const auto& [rule, n] : by_rule(baseline_)) more[rule] -= n;
+    // Lint's arc rules are the arc rule: they judge only where the tape's own arcs close, and decide only
+    // between tries where some arc closes (a block off its circle as written is closed by chance by a
+    // try that makes it another arc: G90 read as K90, F120 as R120).
+    const bool arcs = s_.rules && s_.rules->arcs_trusted();
+    for (const auto& [rule, n] : more)
+        if (n > 0 && (!is_arc_rule(rule) || arcs)) out.push_back(is_arc_rule(rule) ? "arc" : rule);
+    if (arcs && found.count("arc-radius") + found.count("arc-radius-short") == 0 && tried_arc(tried))
+        out.push_back(std::string(arc_closes));
     if (s_.rules) own_rules(tried, places, out);
+    if (s_.rules && s_.rules->digits_never_split() && splits_digits(s_.code, t)) out.push_back("word-format");
+    if (tab_off_format(t)) out.push_back("spec-tab");
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -232,12 +305,15 @@ void BlockJudge::own_rules(const LoadedTape& t, const std::vector<std::pair<std:
         if ((w->address == 'G' || w->address == 'M') && !code_known(s_.dialect, w->address, code_value(value)) &&
             !rules.code_used(w->address, code_value(value)))
             out.push_back("unknown-code");
+        if ((w->address == 'G' || w->address == 'M') && s_.machine && rules.machine_codes_trusted())
+            if (machine_lists_code(*s_.machine, *w) == false) out.push_back("machine-code");
         auto shape = shape_of(*w);
         if ((shape && rules.format_broken(w->address == ':' ? 'N' : w->address, *shape)) || rules.form_broken(*w))
             out.push_back("word-format");
         const FormatSpec* spec = first ? rules.block_spec(line_, *first) : s_.spec;
-        if (spec && (!s_.machine || rules.machine_format_trusted(w->address)))
-            for (const auto& [rule, message] : check_word(*w, *spec, rules.points())) out.push_back(std::string(rule));
+        if (spec)
+            for (const auto& [rule, message] : check_word(*w, *spec, rules.points()))
+                if (!s_.machine || rules.machine_rule_trusted(w->address, rule)) out.push_back(std::string(rule));
         if ((w->address == 'N' || w->address == ':') && w->where.line == before_lines_ + 1)
             if (auto expected = rules.expected_number(line_); expected && w->integer() != expected)
                 out.push_back("block-number");

@@ -57,6 +57,9 @@ public:
 private:
     LoadedTape load_with_context(const std::string& block_text) const;
     std::map<std::string, int> error_keys(const LoadedTape& t) const;
+    std::map<std::string, int> by_rule(const std::map<std::string, int>& keys) const;
+    bool tried_arc(const LoadedTape& t) const;
+    bool tab_off_format(const BlockTry& t) const;
     void own_rules(const LoadedTape& t, const std::vector<std::pair<std::size_t, std::size_t>>& places,
                    Breaks& out) const;
 

@@ -8,6 +8,7 @@
 
 #include "tape/code_tables.hpp"
 #include "tape/lint.hpp"
+#include "tape/machine.hpp"
 
 namespace tape::detail {
 namespace {
@@ -116,6 +117,42 @@ const FormatSpec* TapeRules::block_spec(std::uint64_t line, const Block& b) cons
 
 TapeRules::~TapeRules() = default;
 
+// How an undamaged word keeps the machine's format: its digit count by address, the rules of notation
+// across the tape.
+std::optional<bool> machine_lists_code(const MachineProfile& p, const Word& w) {
+    std::string d = w.digits();
+    if (w.macro || !w.known || w.sign || w.has_point() || d.empty()) return std::nullopt;
+    if (d.size() > 4) return false;  // no code has that many digits (and std::stoi takes it whole)
+    const WordFormat* f = p.format.find(w.address);
+    bool prefixed = p.prefixed.find(w.address) != std::string::npos && f && !f->dimension &&
+                    static_cast<int>(d.size()) == f->before && d.size() >= 2;
+    if (prefixed && d[0] != '0' && d[0] != '1') return false;
+    return p.find_code(w.address, std::stoi(prefixed ? d.substr(1) : d)) != nullptr;
+}
+
+void TapeRules::learn_machine_format(const Word& w, const FormatSpec& spec) {
+    if (w.address == 'G' || w.address == 'M')
+        if (auto listed = machine_lists_code(*machine_, w)) (*listed ? ++machine_codes_ : foreign_codes_ = true);
+    ++checked_words_;
+    bool digits_kept = true;
+    for (const auto& [rule, message] : check_word(w, spec, points_)) {
+        if (rule == "spec-digits")
+            digits_kept = false;
+        else
+            broken_rules_.emplace(rule);
+    }
+    if (digits_kept)
+        ++fitting_[w.address];
+    else
+        untrusted_.insert(w.address);
+}
+
+bool TapeRules::machine_rule_trusted(char address, std::string_view rule) const {
+    if (rule == "spec-digits") return machine_format_trusted(address);
+    if (rule == "spec-tab" && tabs_) return false;
+    return checked_words_ >= enough_words && !broken_rules_.count(rule);
+}
+
 void TapeRules::program_start(const Program& header) {
     lint_->program_start(header);
     state_ = MotionState{};
@@ -132,12 +169,7 @@ void TapeRules::block(const Block& b) {
         const FormatSpec& spec = format_->block(b);  // a damaged block's codes as read, as advance() takes them
         if (!damaged && !machine_->format.words.empty())
             for (const auto& w : b.words)
-                if (w.known && !w.macro) {
-                    if (check_word(w, spec, points_).empty())
-                        ++fitting_[w.address];
-                    else
-                        untrusted_.insert(w.address);
-                }
+                if (w.known && !w.macro) learn_machine_format(w, spec);
     }
     if (!damaged)
         if (auto closes = arc_agrees(state_, b)) ++arcs_checked_, arcs_open_ += !*closes;
@@ -161,9 +193,31 @@ void TapeRules::finish(std::string_view text) {
         excused_.insert(finding_key(f, lines[line - 1]));
         with_errors.insert(line);
     }
+    for (std::size_t l = 0; l < lines.size(); ++l)
+        if (!damaged_lines_.count(l + 1)) learn_digit_spacing(lines[l]);
     error_lines_ = with_errors.size();
     lint_.reset();
     learn_step();
+}
+
+// Digits side by side, and digits with only spaces between them, outside ( ) comments; and tabs.
+void TapeRules::learn_digit_spacing(std::string_view line) {
+    auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    bool comment = false, last_digit = false, spaced = false;
+    for (char c : line) {
+        tabs_ |= c == '\t';
+        comment = c == '(' || (comment && c != ')');
+        if (comment || c == ')') {
+            last_digit = false;
+        } else if (c == ' ') {
+            spaced = true;
+            continue;
+        } else {
+            if (digit(c) && last_digit) ++(spaced ? split_digits_ : digit_pairs_);
+            last_digit = digit(c);
+        }
+        spaced = false;
+    }
 }
 
 void TapeRules::learn_block(const Block& b, bool damaged) {

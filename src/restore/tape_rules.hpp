@@ -32,6 +32,10 @@ struct WordShape {
     int before = 0, after = -1;
     auto operator<=>(const WordShape&) const = default;
 };
+/// A G or M word is a code the machine's profile lists (an M word of a prefixed M read without its first
+/// digit, 0 or 1: M104 is M04); nullopt for a word that is no code (no whole number).
+std::optional<bool> machine_lists_code(const MachineProfile& p, const Word& w);
+
 /// The shape of a plain word; nullopt for a macro value or a word with no digits.
 std::optional<WordShape> shape_of(const Word& w);
 
@@ -120,18 +124,39 @@ public:
         auto n = fitting_.find(address);
         return !untrusted_.count(address) && n != fitting_.end() && n->second >= enough_words;
     }
+    /// Whether the machine's format rule (check_word's id) holds a repair of a word of the address. Digit
+    /// counts vary by address and mode (the course text's OCR breaks them): as machine_format_trusted. A
+    /// rule of notation (an address the format lacks, a sign on an unsigned address, a point without DS)
+    /// holds wherever the tape's undamaged words, enough_words of them or more, never break it at any
+    /// address: the tape keeps its machine's notation, and the profile says which addresses and signs
+    /// the machine reads, also for an address the tape has too few words of. "spec-tab" (a tab where the
+    /// format has no HT) holds where, besides, no undamaged line has one.
+    bool machine_rule_trusted(char address, std::string_view rule) const;
+    /// The G and M codes of the tape's undamaged blocks, enough_words of them or more, are all the
+    /// machine's (its profile lists them): only then is a code the profile does not list ruled out (the
+    /// profile lists the codes its sources give, and says nowhere that there are no others).
+    bool machine_codes_trusted() const { return machine_codes_ >= enough_words && !foreign_codes_; }
     /// The dialect's grammar fits the undamaged program: lint finds errors in at most one block in five.
     /// Where it does not (no known dialect fits: an Okuma or Siemens program read as another), repairs
     /// are not judged by it.
     bool grammar_fits() const { return error_lines_ * 5 <= std::max<std::size_t>(blocks_, 1); }
+    /// The undamaged lines write many numbers of two digits or more (enough_digit_pairs pairs of digits
+    /// side by side, outside comments) and never a space between two digits: a space there breaks how
+    /// the tape writes its words (it may put spaces between a letter, a sign and the digits).
+    bool digits_never_split() const { return digit_pairs_ >= enough_digit_pairs && split_digits_ == 0; }
+    /// An undamaged line holds a tab (HT).
+    bool tabs() const { return tabs_; }
     /// The program writes explicit points somewhere (for a format spec's checks).
     bool points() const { return points_; }
     static constexpr std::size_t enough_words = 5;
     static constexpr std::size_t enough_blocks = 5;
+    static constexpr std::size_t enough_digit_pairs = 20;
 
 private:
     void learn_block(const Block& b, bool damaged);
+    void learn_machine_format(const Word& w, const FormatSpec& spec);
     void learn_step();
+    void learn_digit_spacing(std::string_view line);
     std::optional<long long> local_sequence(std::size_t at) const;
     bool more_digits_than_ever(char address, const WordShape& shape) const;
     static constexpr long long damaged_number = -1, no_number = -2;  // in numbers_
@@ -157,10 +182,16 @@ private:
     const MachineProfile* machine_;
     std::optional<MachineFormat> format_;                   // with a machine: the mode where the next block begins
     std::map<std::uint64_t, MachineFormat> format_before_;  // and where each damaged line begins
-    std::set<char> untrusted_;             // addresses whose undamaged words break the machine's format
-    std::map<char, std::size_t> fitting_;  // undamaged words that fit it, by address
+    std::set<char> untrusted_;             // addresses whose undamaged words break the machine's digit counts
+    std::map<char, std::size_t> fitting_;  // undamaged words that keep them, by address
+    std::set<std::string, std::less<>> broken_rules_;  // the machine's rules of notation undamaged words break
+    std::size_t checked_words_ = 0;                    // undamaged words held to the machine's format
+    std::size_t machine_codes_ = 0;                    // undamaged G and M words the profile lists
+    bool foreign_codes_ = false;                       // and some it does not
     bool points_ = false;
-    long long step_ = 0;  // the block numbers' steady step, 0 for none
+    std::size_t digit_pairs_ = 0, split_digits_ = 0;  // in undamaged lines: digits side by side, and apart
+    bool tabs_ = false;                               // an undamaged line holds a tab (HT)
+    long long step_ = 0;                              // the block numbers' steady step, 0 for none
     std::size_t arcs_checked_ = 0, arcs_open_ = 0;
     std::size_t blocks_ = 0, error_lines_ = 0;
 };
