@@ -91,12 +91,14 @@ RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suff
     if (!result.frames.empty() && result.frames.size() <= most_drawn_frames)
         report.tape_picture = "tape" + suffix + ".svg";
     bag.add(s.image, report.image_bytes);
+    // Told before the report is beside the image: tape info would read the report's doubts (megabytes of
+    // JSON for a long tape) and say nothing of them.
+    const std::string shown = "data/" + s.image, info = tape_info_text(bag.staging() + "/" + shown, shown);
     bag.add(tape::doubts_file_for(s.image), restore_report_json(report));
     bag.add(html, restore_report_html(report));
     if (!result.frames.empty()) bag.add("tape" + suffix + ".svg", tape_svg(report, html));
     for (const auto& f : tape_contents(result.frames, report.code, "contents" + suffix, s.contents))
         bag.add(f.path, f.bytes);
-    std::string shown = "data/" + s.image;
     std::string format = "The restored tape " + shown + ", from " + std::to_string(names.size()) +
                          " read(s), in the words of tape info.\n" +
                          (s.contents.empty() ? "" : "Contents: " + s.contents + ".\n") +
@@ -104,7 +106,7 @@ RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suff
                               ? "tape" + suffix + ".svg draws its first " + std::to_string(most_drawn_frames) +
                                     " frames of " + std::to_string(result.frames.size()) + ".\n"
                               : "") +
-                         "\n" + tape_info_text(bag.staging() + "/data/" + s.image, shown);
+                         "\n" + info;
     bag.add("format" + suffix + ".txt", format);
     s.reads = names.size();
     s.frames = result.frames.size();
