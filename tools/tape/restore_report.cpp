@@ -92,7 +92,8 @@ void append_problem_json(std::string& s, const tape::RestoreProblem& p) {
     bool written = p.frame && p.status != tape::FrameStatus::missing;
     s += "],\"written\":" + quoted_hex_or_null(written, p.written);
     s += ",\"left_out\":" + quoted_hex_or_null(!p.frame, p.written) + ",\"candidates\":[";
-    for (std::size_t i = 0; i < p.candidates.size(); ++i) s += (i ? "," : "") + quoted_hex_or_null(true, p.candidates[i]);
+    for (std::size_t i = 0; i < p.candidates.size(); ++i)
+        s += (i ? "," : "") + quoted_hex_or_null(true, p.candidates[i]);
     s += std::string("],\"run_length\":") + (p.run_length ? "true" : "false") + ",\"odds\":";
     // The odds of the length written over the next (null: the program's rules decided): with the doubts
     // file, decode -v and lint name each run decided against a read.
