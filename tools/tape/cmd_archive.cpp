@@ -25,7 +25,7 @@ void add_archive_create(CLI::App* archive) {
                     "An adapter to read the tape from (adapter:PATH or usb:...): --times reads, forwards and "
                     "backwards in turn, each kept as it came in data/reads/read-N.ptp");
     sub->add_option("--times", a->times, "How many times --from reads the tape")
-        ->check(CLI::Range(1u, 99u))
+        ->check(whole_number(1, 99))
         ->capture_default_str();
     sub->add_option("--timeout", a->timeout, "A read from --from ends after SECONDS without a frame (0: never)")
         ->check(real_number(0, max_timeout_s))
