@@ -38,8 +38,8 @@ void read_from_device(tape::BagWriter& bag, const std::string& device, const std
     for (std::size_t k = 0; k < names.size(); ++k) {
         // The odd reads go back over the tape the read before went over: each starts where the last ended.
         bool back = k % 2 == 1;
-        std::string line = back ? device + (device.find('?') == std::string::npos ? "?" : "&") + "direction=reverse"
-                                : device;
+        std::string line =
+            back ? device + (device.find('?') == std::string::npos ? "?" : "&") + "direction=reverse" : device;
         say(device, "read " + std::to_string(k + 1) + " of " + std::to_string(names.size()) +
                         (back ? ", backwards to the tape's start" : ", forwards"));
         std::string path = bag.staging() + "/data/" + names[k];

@@ -64,18 +64,18 @@ std::string add_drawings(tape::BagWriter& bag, const RestoreReportInput& report,
                             ? svg + " draws its first " + std::to_string(most_drawn_frames) + " frames of " +
                                   std::to_string(frames.size()) + ".\n"
                             : "";
+    std::vector<std::uint8_t> bytes;
     try {
-        auto bytes = tape_png(frames);
-        bag.add(png, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-        words += png + " pictures " +
-                 (frames.size() > most_pictured_frames ? "its first " + std::to_string(most_pictured_frames) + " frames"
-                                                       : std::string("the tape")) +
-                 " as it looks, in strips of 500 mm at 50 dpi.\n";
-    } catch (const tape::Error& e) {
+        bytes = tape_png(frames);
+    } catch (const tape::Error& e) {  // no picture module: the bag is whole without its picture, and says so
         say("data/" + png, std::string("not drawn: ") + e.what());
-        words += png + " is not drawn: " + e.what() + "\n";
+        return words + png + " is not drawn: " + e.what() + "\n";
     }
-    return words;
+    bag.add(png, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    return words + png + " pictures " +
+           (frames.size() > most_pictured_frames ? "its first " + std::to_string(most_pictured_frames) + " frames"
+                                                 : std::string("the tape")) +
+           " as it looks, in strips of 500 mm at 50 dpi.\n";
 }
 
 std::uint64_t in_doubt_count(const tape::RestoreResult& r) {
