@@ -12,6 +12,7 @@
 #include <fstream>
 #include <thread>
 
+#include "bagit_reader.hpp"
 #include "process_util.hpp"
 #include "tape/adapter.hpp"
 #include "tape/device.hpp"
@@ -617,4 +618,38 @@ TEST(AdapterCdc, AnAdapterWithoutAReaderOrAPunchIsRefusedBeforeAnOutputIsCreated
         EXPECT_EQ(tape.wait(20s), 3) << tape.err();
         EXPECT_NE(tape.err().find("this adapter has no punch"), std::string::npos) << tape.err();
     }
+}
+
+// tape archive create --from: the tape read three times through the adapter, forwards, backwards (turned to
+// the tape's order) and forwards again, each read kept in the bag as it came and restored; a reader that
+// cannot go back leaves no bag.
+TEST(AdapterCdc, ArchiveReadsTheTapeTimesIntoTheBag) {
+    TempDir dir;
+    std::string in = sample_path("16k20f3s5-turning.iso.ptp"), tape_bytes = read_text(in);
+    std::string bag = dir.file("bag");
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in});
+        Process tape({"archive", "create", bag, "--from", sim.device, "--times", "3", "--timeout", "2"}, dir);
+        ASSERT_EQ(tape.wait(60s), 0) << tape.err();
+        for (int k = 1; k <= 3; ++k)
+            EXPECT_EQ(read_text(bag + "/data/reads/read-" + std::to_string(k) + ".ptp"), tape_bytes) << k;
+        EXPECT_EQ(read_text(bag + "/data/restored.ptp"), tape_bytes);
+        EXPECT_NE(tape.err().find("read 2 of 3, backwards"), std::string::npos) << tape.err();
+        EXPECT_NE(tape.err().find("turned to the tape's order"), std::string::npos) << tape.err();
+        bagit_reader::Bag b = bagit_reader::read(bag);
+        EXPECT_TRUE(b.errors.empty()) << ::testing::PrintToString(b.errors);
+        EXPECT_EQ(b.info["Tape-Restoration"].find("restored.ptp from 3 read(s)"), 0u) << b.info["Tape-Restoration"];
+        EXPECT_EQ(std::system(("cd " + bag + " && sha256sum -c --strict manifest-sha256.txt >/dev/null").c_str()), 0);
+    }
+    {
+        SIM_OR_SKIP(sim, dir, {"--reader", in, "--no-reverse"});
+        Process tape({"archive", "create", dir.file("never"), "--from", sim.device, "--timeout", "2"}, dir);
+        EXPECT_EQ(tape.wait(60s), 3) << tape.err();
+        EXPECT_NE(tape.err().find("cannot read backwards"), std::string::npos) << tape.err();
+        EXPECT_FALSE(std::filesystem::exists(dir.file("never")));
+        for (const auto& e : std::filesystem::directory_iterator(dir.path))
+            EXPECT_EQ(e.path().filename().string().find(".never.partial"), std::string::npos) << e.path();
+    }
+    Outcome r = tape_run({"archive", "create", dir.file("serial"), "--from", "serial:/dev/null"}, dir);
+    EXPECT_EQ(r.status, 2) << r.err;
 }

@@ -30,7 +30,8 @@ std::optional<LeaderLabel> find_title(std::span<const Frame> frames) {
     std::vector<std::pair<std::size_t, std::size_t>> glyphs;  // first frame, width
     while (at < frames.size()) {
         std::size_t width = 0;
-        while (at + width < frames.size() && frames[at + width] != blank_frame) ++width;
+        // Counted no further than a glyph can be wide: a text tape's first "glyph" is the whole tape.
+        while (at + width < frames.size() && frames[at + width] != blank_frame && width <= widest_glyph) ++width;
         if (width > widest_glyph) return std::nullopt;
         glyphs.emplace_back(at, width);
         std::size_t gap = 0;

@@ -87,6 +87,8 @@ void claim_output(const std::string& path) {
     files().outputs.push_back(where);
 }
 
+void release_output(const std::string& path) { std::erase(files().outputs, place(path)); }
+
 void check_outputs(std::initializer_list<std::pair<std::string_view, std::string>> outputs) {
     for (auto a = outputs.begin(); a != outputs.end(); ++a)
         for (auto b = a + 1; b != outputs.end(); ++b) {

@@ -18,6 +18,9 @@ void note_input(const std::string& path);
 /// written piece by piece, but not when it is redirected into an input.
 void claim_output(const std::string& path);
 
+/// After OUT is written whole and closed: the run may read it (tape archive restores the reads it made).
+void release_output(const std::string& path);
+
 /// For a run with several outputs, before any is written: refuses (usage, exit 2) two of them that are
 /// the same file. Each is an option's name ("--report") and its path; empty paths are not given.
 void check_outputs(std::initializer_list<std::pair<std::string_view, std::string>> outputs);

@@ -14,10 +14,22 @@ namespace cli {
 struct ArchiveCreateArgs {
     std::string bag, label, machine;
     std::vector<std::string> reads, scans, photos, meta;
+    std::string from;    ///< an adapter the tape is read from, times times, before the reads given
+    unsigned times = 2;  ///< --times
+    double timeout = 5;  ///< --timeout: a read from the adapter ends after this many seconds without a frame
     bool force = false;
 };
 /// Writes the bag; ends the program (exit 1) when the restoration is not complete, after writing it.
 void archive_create(const ArchiveCreateArgs& a);
+
+/// Where --from's reads go under data/: reads/read-1.ptp ... reads/read-TIMES.ptp.
+std::vector<std::string> device_read_names(unsigned times);
+/// Reads the tape from device (an adapter) once for each of names, into the bag's staging folder as it
+/// comes: forwards, then backwards to the tape's start (turned to the tape's order), and so on in turn, as
+/// tape read reads. A device failure, a read backwards that does not reach the tape's start or Ctrl-C ends
+/// the program, and no bag is made.
+void read_from_device(tape::BagWriter& bag, const std::string& device, const std::vector<std::string>& names,
+                      double timeout_s);
 
 /// Adds later reads (tape images) and scans to a bag and restores all its reads again as restored-N.ptp
 /// beside the restorations it has; the bag is replaced whole.

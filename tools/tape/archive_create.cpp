@@ -67,9 +67,11 @@ void commit_bag(tape::BagWriter& bag, const std::string& path, const std::vector
 }  // namespace
 
 void archive_create(const ArchiveCreateArgs& a) {
-    if (a.reads.empty() && a.scans.empty()) fail(a.bag, tape::Errc::usage, "give at least one --read or --scan");
+    if (a.reads.empty() && a.scans.empty() && a.from.empty())
+        fail(a.bag, tape::Errc::usage, "give at least one --read, --scan or --from");
     std::vector<tape::BagInfoEntry> meta = meta_entries(a.meta);
-    std::set<std::string> taken;
+    std::vector<std::string> device_names = a.from.empty() ? std::vector<std::string>{} : device_read_names(a.times);
+    std::set<std::string> taken(device_names.begin(), device_names.end());
     std::vector<std::string> read_names = bag_names(a.reads, "reads", taken);
     std::vector<std::string> scan_names = bag_names(a.scans, "scans", taken);
     std::vector<std::string> photo_names = bag_names(a.photos, "photos", taken);
@@ -79,12 +81,16 @@ void archive_create(const ArchiveCreateArgs& a) {
     } catch (const tape::Error& e) {
         fail(a.bag, e);
     }
+    std::optional<tape::MachineProfile> machine = machine_or_fail(a.machine);
+    if (!a.from.empty()) read_from_device(*bag, a.from, device_names, a.timeout);
     copy_in(*bag, a.reads, read_names);
     copy_in(*bag, a.scans, scan_names);
     copy_in(*bag, a.photos, photo_names);
-    std::optional<tape::MachineProfile> machine = machine_or_fail(a.machine);
     if (machine) bag->add(bag_machine_file, machine_profile_text(*machine));
-    std::vector<std::string> paths = a.reads, names = read_names;
+    std::vector<std::string> paths, names = device_names;
+    for (const auto& n : device_names) paths.push_back(bag->staging() + "/data/" + n);
+    paths.insert(paths.end(), a.reads.begin(), a.reads.end());
+    names.insert(names.end(), read_names.begin(), read_names.end());
     paths.insert(paths.end(), a.scans.begin(), a.scans.end());
     names.insert(names.end(), scan_names.begin(), scan_names.end());
     RestorationSummary r = add_restoration(*bag, "", paths, names, machine ? &*machine : nullptr);

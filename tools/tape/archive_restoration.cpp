@@ -14,8 +14,10 @@
 #include "restore_run.hpp"
 #include "tape/file_io.hpp"
 #include "tape/label.hpp"
+#include "tape/picture.hpp"
 #include "tape/render.hpp"
 #include "tape/restore_doubts.hpp"
+#include "tape/scan.hpp"
 #include "tape_report.hpp"
 
 namespace cli {
@@ -37,6 +39,43 @@ std::string tape_svg(const RestoreReportInput& in, const std::string& html) {
                                html + "#p" + std::to_string(*p.frame)});
     if (auto label = tape::find_label(r.frames)) o.label_first = label->first + 1, o.label_frames = label->frames;
     return tape::render_svg(r.frames, o);
+}
+
+// The start of the tape as it looks, as tape render draws a .png (the picture module's renderer): strips of
+// half a metre one under the other at 50 dpi, a picture of some 1000 by 700 pixels that tape scan reads
+// back strip by strip. Some metres are enough to show the tape; the SVG draws it frame by frame.
+constexpr std::uint64_t most_pictured_frames = 2000;
+
+std::vector<std::uint8_t> tape_png(std::span<const tape::Frame> frames) {
+    if (!tape::scan_available()) throw tape::Error(tape::Errc::io, std::string(tape::scan_unavailable_message()));
+    tape::RasterOptions r{.dpi = 50, .strip_mm = 500};
+    return tape::encode_picture(tape::render_picture(frames.first(std::min(frames.size(), most_pictured_frames)), r),
+                                "png");
+}
+
+// tapeS.svg and tapeS.png; what they draw, in words for formatS.txt.
+std::string add_drawings(tape::BagWriter& bag, const RestoreReportInput& report, const std::string& suffix,
+                         const std::string& html) {
+    const std::vector<tape::Frame>& frames = report.result->frames;
+    if (frames.empty()) return "";
+    const std::string svg = "tape" + suffix + ".svg", png = "tape" + suffix + ".png";
+    bag.add(svg, tape_svg(report, html));
+    std::string words = frames.size() > most_drawn_frames
+                            ? svg + " draws its first " + std::to_string(most_drawn_frames) + " frames of " +
+                                  std::to_string(frames.size()) + ".\n"
+                            : "";
+    std::vector<std::uint8_t> bytes;
+    try {
+        bytes = tape_png(frames);
+    } catch (const tape::Error& e) {  // no picture module: the bag is whole without its picture, and says so
+        say("data/" + png, std::string("not drawn: ") + e.what());
+        return words + png + " is not drawn: " + e.what() + "\n";
+    }
+    bag.add(png, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+    return words + png + " pictures " +
+           (frames.size() > most_pictured_frames ? "its first " + std::to_string(most_pictured_frames) + " frames"
+                                                 : std::string("the tape")) +
+           " as it looks, in strips of 500 mm at 50 dpi.\n";
 }
 
 std::uint64_t in_doubt_count(const tape::RestoreResult& r) {
@@ -91,21 +130,18 @@ RestorationSummary add_restoration(tape::BagWriter& bag, const std::string& suff
     if (!result.frames.empty() && result.frames.size() <= most_drawn_frames)
         report.tape_picture = "tape" + suffix + ".svg";
     bag.add(s.image, report.image_bytes);
+    // Told before the report is beside the image: tape info would read the report's doubts (megabytes of
+    // JSON for a long tape) and say nothing of them.
+    const std::string shown = "data/" + s.image, info = tape_info_text(bag.staging() + "/" + shown, shown);
     bag.add(tape::doubts_file_for(s.image), restore_report_json(report));
     bag.add(html, restore_report_html(report));
-    if (!result.frames.empty()) bag.add("tape" + suffix + ".svg", tape_svg(report, html));
+    std::string drawn = add_drawings(bag, report, suffix, html);
     for (const auto& f : tape_contents(result.frames, report.code, "contents" + suffix, s.contents))
         bag.add(f.path, f.bytes);
-    std::string shown = "data/" + s.image;
-    std::string format = "The restored tape " + shown + ", from " + std::to_string(names.size()) +
-                         " read(s), in the words of tape info.\n" +
-                         (s.contents.empty() ? "" : "Contents: " + s.contents + ".\n") +
-                         (result.frames.size() > most_drawn_frames
-                              ? "tape" + suffix + ".svg draws its first " + std::to_string(most_drawn_frames) +
-                                    " frames of " + std::to_string(result.frames.size()) + ".\n"
-                              : "") +
-                         "\n" + tape_info_text(bag.staging() + "/data/" + s.image, shown);
-    bag.add("format" + suffix + ".txt", format);
+    bag.add("format" + suffix + ".txt", "The restored tape " + shown + ", from " + std::to_string(names.size()) +
+                                            " read(s), in the words of tape info.\n" +
+                                            (s.contents.empty() ? "" : "Contents: " + s.contents + ".\n") + drawn +
+                                            "\n" + info);
     s.reads = names.size();
     s.frames = result.frames.size();
     s.in_doubt = in_doubt_count(result);

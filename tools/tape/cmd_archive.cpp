@@ -3,7 +3,9 @@
 // later. The steps are in archive_*.cpp; this file holds the options.
 #include "archive_bag.hpp"
 #include "cli/machines.hpp"
+#include "cli/numbers.hpp"
 #include "commands.hpp"
+#include "device_options.hpp"
 
 namespace cli {
 
@@ -19,6 +21,15 @@ void add_archive_create(CLI::App* archive) {
     sub->add_option("--read,-r", a->reads, "A read of the tape (a tape image), kept as it came in data/reads/");
     sub->add_option("--scan", a->scans,
                     "A picture of the tape read as tape scan does, kept in data/scans/ and restored with the reads");
+    sub->add_option("--from", a->from,
+                    "An adapter to read the tape from (adapter:PATH or usb:...): --times reads, forwards and "
+                    "backwards in turn, each kept as it came in data/reads/read-N.ptp");
+    sub->add_option("--times", a->times, "How many times --from reads the tape")
+        ->check(whole_number(1, 99))
+        ->capture_default_str();
+    sub->add_option("--timeout", a->timeout, "A read from --from ends after SECONDS without a frame (0: never)")
+        ->check(real_number(0, max_timeout_s))
+        ->capture_default_str();
     sub->add_option("--photo", a->photos, "A photo of the tape, its box or its label, kept in data/photos/");
     sub->add_option("--label", a->label, "The tape's label as written on it (bag-info.txt Tape-Label)");
     sub->add_option("--meta", a->meta,

@@ -71,31 +71,34 @@ std::string problem_text(const RestoreReportInput& in, const tape::RestoreProble
     return s;
 }
 
-nlohmann::ordered_json problem_json(const tape::RestoreProblem& p) {
+std::string quoted_hex_or_null(bool has, tape::Frame f) { return has ? "\"" + tape::frame_hex(f) + "\"" : "null"; }
+
+// One problem as JSON, written straight into s in nlohmann-json's compact layout: a long tape's report
+// lists tens of thousands of voted frames, and a JSON value built for each cost more than the restoration.
+void append_problem_json(std::string& s, const tape::RestoreProblem& p) {
     using nlohmann::ordered_json;
-    ordered_json j;
-    j["status"] = tape::status_name(p.status);
-    j["in_doubt"] = tape::in_doubt(p.status);
-    j["frame"] = p.frame ? ordered_json(*p.frame) : ordered_json(nullptr);
-    j["after"] = p.after;
-    j["line"] = p.line ? ordered_json(*p.line) : ordered_json(nullptr);
-    j["cm"] = p.frame ? ordered_json(cm_value(*p.frame)) : ordered_json(nullptr);
-    j["seen"] = ordered_json::array();
-    for (std::size_t i = 0; i < p.seen.size(); ++i)
-        j["seen"].push_back({{"read", i + 1},
-                             {"covered", static_cast<bool>(p.covered[i])},
-                             {"frame", p.seen[i] ? ordered_json(tape::frame_hex(*p.seen[i])) : ordered_json(nullptr)}});
+    auto number_or_null = [](auto n) { return n ? std::to_string(*n) : std::string("null"); };
+    s += "{\"status\":\"" + std::string(tape::status_name(p.status)) + "\",\"in_doubt\":";
+    s += tape::in_doubt(p.status) ? "true" : "false";
+    s += ",\"frame\":" + number_or_null(p.frame) + ",\"after\":" + std::to_string(p.after);
+    s += ",\"line\":" + number_or_null(p.line) + ",\"cm\":";
+    s += p.frame ? ordered_json(cm_value(*p.frame)).dump() : "null";
+    s += ",\"seen\":[";
+    for (std::size_t i = 0; i < p.seen.size(); ++i) {
+        s += (i ? ",{\"read\":" : "{\"read\":") + std::to_string(i + 1) + ",\"covered\":";
+        s += p.covered[i] ? "true" : "false";
+        s += ",\"frame\":" + quoted_hex_or_null(p.seen[i].has_value(), p.seen[i].value_or(0)) + "}";
+    }
     bool written = p.frame && p.status != tape::FrameStatus::missing;
-    j["written"] = written ? ordered_json(tape::frame_hex(p.written)) : ordered_json(nullptr);
-    j["left_out"] = !p.frame ? ordered_json(tape::frame_hex(p.written)) : ordered_json(nullptr);
-    j["candidates"] = ordered_json::array();
-    for (auto c : p.candidates) j["candidates"].push_back(tape::frame_hex(c));
-    j["run_length"] = p.run_length;
+    s += "],\"written\":" + quoted_hex_or_null(written, p.written);
+    s += ",\"left_out\":" + quoted_hex_or_null(!p.frame, p.written) + ",\"candidates\":[";
+    for (std::size_t i = 0; i < p.candidates.size(); ++i)
+        s += (i ? "," : "") + quoted_hex_or_null(true, p.candidates[i]);
+    s += std::string("],\"run_length\":") + (p.run_length ? "true" : "false") + ",\"odds\":";
     // The odds of the length written over the next (null: the program's rules decided): with the doubts
     // file, decode -v and lint name each run decided against a read.
-    j["odds"] = p.run_length && p.odds > 0 ? ordered_json(std::round(p.odds)) : ordered_json(nullptr);
-    j["reason"] = p.reason;
-    return j;
+    s += p.run_length && p.odds > 0 ? ordered_json(std::round(p.odds)).dump() : "null";
+    s += ",\"reason\":" + ordered_json(p.reason).dump() + "}";
 }
 
 }  // namespace
@@ -235,7 +238,10 @@ std::string restore_report_json(const RestoreReportInput& in) {
     summary["in_doubt_not_written"] = r.contested_unwritten;
     member("summary", summary);
     s += ",\"problems\":[";
-    for (std::size_t i = 0; i < r.problems.size(); ++i) s += (i ? "," : "") + problem_json(r.problems[i]).dump();
+    for (std::size_t i = 0; i < r.problems.size(); ++i) {
+        if (i) s += ",";
+        append_problem_json(s, r.problems[i]);
+    }
     s += "]";
     ordered_json reread = ordered_json::array();
     for (const auto& x : reread_list(r))
