@@ -65,76 +65,113 @@ void add_shared(const Runs& of, const Runs& in, Places& out) {
     }
 }
 
-// Whether a read whose runs are `runs` goes from the run `before` to the run `after` within the margin:
-// it lacks what another read has between them. A run it has many times decides nothing.
-bool goes_on_past(const Runs& runs, std::uint64_t before, std::uint64_t after) {
-    constexpr std::ptrdiff_t most_repeats = 8;
-    auto where = [&](std::uint64_t h) {
-        return std::make_pair(std::lower_bound(runs.begin(), runs.end(), std::make_pair(h, INT32_MIN)),
-                              std::upper_bound(runs.begin(), runs.end(), std::make_pair(h, INT32_MAX)));
-    };
-    auto [b0, b1] = where(before);
-    auto [a0, a1] = where(after);
+// Where read s has run h (its runs sorted by hash, then place).
+std::pair<Runs::const_iterator, Runs::const_iterator> places_of(const Runs& runs, std::uint64_t h) {
+    return {std::lower_bound(runs.begin(), runs.end(), std::make_pair(h, INT32_MIN)),
+            std::upper_bound(runs.begin(), runs.end(), std::make_pair(h, INT32_MAX))};
+}
+
+// A run a read has more often than this says nothing of where it is (a line repeated, a run of spaces).
+constexpr std::ptrdiff_t most_repeats = 8;
+
+// From `at` (a run read r shares with read s), stepping by `step` through `with` (at most 64 times), the
+// first run s has at most `most` times, or the last one looked at.
+Places::const_iterator rare_from(const Runs& runs, const Places& with, Places::const_iterator at, int step,
+                                 std::ptrdiff_t most) {
+    for (int n = 0; n < 64; ++n) {
+        auto [first, end] = places_of(runs, at->second);
+        if (end - first <= most || (step < 0 ? at == with.begin() : at + 1 == with.end())) break;
+        at += step;
+    }
+    return at;
+}
+
+// Whether a read whose runs are `runs` goes from the run `before` to the run `after` within `most`
+// frames. A run it has many times decides nothing.
+bool goes_on_past(const Runs& runs, std::uint64_t before, std::uint64_t after, std::size_t most) {
+    auto [b0, b1] = places_of(runs, before);
+    auto [a0, a1] = places_of(runs, after);
     if (b1 - b0 > most_repeats || a1 - a0 > most_repeats) return false;
     for (auto b = b0; b != b1; ++b)
         for (auto a = a0; a != a1; ++a)
-            if (a->second > b->second && static_cast<std::size_t>(a->second - b->second) <= margin) return true;
+            if (a->second > b->second && static_cast<std::size_t>(a->second - b->second) <= most) return true;
     return false;
+}
+
+// Whether read s (its runs; with: those read r shares with it, by place in r) lacks what r has between
+// its places p and q: from the last run it shares with r before that stretch to the first after it, s
+// has no more frames than r has there outside the stretch, and the margin. Each read is asked about its
+// own runs: damage in one read does not hide a stretch another read lacks.
+bool lacks(const Runs& runs, const Places& with, std::int32_t p, std::int32_t q) {
+    auto after = std::lower_bound(with.begin(), with.end(), std::make_pair(q, std::uint64_t{0}));
+    if (after == with.end() || after == with.begin()) return false;
+    auto before = rare_from(runs, with, std::prev(after), -1, most_repeats);  // at p or before
+    after = rare_from(runs, with, after, 1, most_repeats);
+    const auto outside = static_cast<std::size_t>((p - before->first) + (after->first - q));
+    return goes_on_past(runs, before->second, after->second, outside + margin);
 }
 
 using Stretch = std::pair<std::size_t, std::size_t>;  // [from, to) of a read
 
 // The frames read r has before the first run it shares with the others (start) or after the last, where
-// every other read has that run once, and past it no more than its blank end and the margin: a reader
-// that ran on over other tape. All but the margin and what the others have there.
+// every other read has its own first (last) run shared with r once, and past it no more than its blank
+// end, the margin and what r has between the two: a reader that ran on over other tape. All but the
+// margin and what the others have there.
 std::optional<Stretch> unmatched_end(std::size_t r, const CutReads& in, const std::vector<Runs>& runs,
-                                     const Places& shared, std::size_t k, bool start) {
+                                     const std::vector<Places>& with, const Places& shared, std::size_t k, bool start) {
     if (shared.empty()) return std::nullopt;
-    const auto [place, hash] = start ? shared.front() : shared.back();
-    std::size_t others = 0;  // the most frames another read has past the run
+    const auto place = static_cast<std::size_t>((start ? shared.front() : shared.back()).first);
+    std::size_t others = 0;  // the most frames another read has past r's first (last) shared run
     for (std::size_t s = 0; s < runs.size(); ++s) {
         if (s == r) continue;
-        auto at = std::lower_bound(runs[s].begin(), runs[s].end(), std::make_pair(hash, INT32_MIN));
-        if (at == runs[s].end() || at->first != hash || (at + 1 != runs[s].end() && (at + 1)->first == hash))
-            return std::nullopt;
-        const auto there = static_cast<std::size_t>(at->second);
-        const std::size_t past = start ? there : in.reads[s].size() - there - k;
+        if (with[s].empty()) return std::nullopt;
+        const auto [mine, hash] =
+            *rare_from(runs[s], with[s], start ? with[s].begin() : std::prev(with[s].end()), start ? 1 : -1, 1);
+        auto [at, end] = places_of(runs[s], hash);
+        if (end - at != 1) return std::nullopt;
+        const auto there = static_cast<std::size_t>(at->second), between = start ? mine - place : place - mine;
+        std::size_t past = start ? there : in.reads[s].size() - there - k;
+        past = past > between ? past - between : 0;
         if (past > blank_at(in.reads[s], start) + margin) return std::nullopt;
         others = std::max(others, past);
     }
-    const std::size_t size = in.reads[r].size(), mine = start ? static_cast<std::size_t>(place) : size - place - k;
+    const std::size_t size = in.reads[r].size(), mine = start ? place : size - place - k;
     if (mine < others + 2 * margin) return std::nullopt;
     const std::size_t cut = mine - others - margin;
     return start ? Stretch(0, cut) : Stretch(size - cut, size);
 }
 
 // The stretches of read r to leave out, in order: at its ends (unmatched_end), and between two runs it
-// shares with the others, farther apart than two margins and as much again, where every other read goes
-// on from one to the other within the margin. k: the runs' length.
+// shares with the others, farther apart than two margins and as much again, that every other read
+// lacks. k: the runs' length.
 std::vector<Stretch> unmatched_in(std::size_t r, const CutReads& in, const std::vector<Runs>& runs, std::size_t k) {
+    std::vector<Places> with(runs.size());
     Places shared;
-    for (std::size_t s = 0; s < runs.size(); ++s)
-        if (s != r) add_shared(runs[r], runs[s], shared);
+    for (std::size_t s = 0; s < runs.size(); ++s) {
+        if (s == r) continue;
+        add_shared(runs[r], runs[s], with[s]);
+        std::sort(with[s].begin(), with[s].end());
+        shared.insert(shared.end(), with[s].begin(), with[s].end());
+    }
     std::sort(shared.begin(), shared.end());
     shared.erase(std::unique(shared.begin(), shared.end()), shared.end());
     std::vector<Stretch> out;
-    if (auto cut = unmatched_end(r, in, runs, shared, k, true)) out.push_back(*cut);
+    if (auto cut = unmatched_end(r, in, runs, with, shared, k, true)) out.push_back(*cut);
     for (std::size_t i = 1; i < shared.size(); ++i) {
-        const auto [p, before] = shared[i - 1];
-        const auto [q, after] = shared[i];
+        const std::int32_t p = shared[i - 1].first, q = shared[i].first;
         if (static_cast<std::size_t>(q - p) < k + 3 * margin) continue;
         bool others_lack = true;
         for (std::size_t s = 0; s < runs.size() && others_lack; ++s)
-            others_lack = s == r || goes_on_past(runs[s], before, after);
-        if (others_lack) out.emplace_back(static_cast<std::size_t>(p) + k + margin, static_cast<std::size_t>(q) - margin);
+            others_lack = s == r || lacks(runs[s], with[s], p, q);
+        if (others_lack)
+            out.emplace_back(static_cast<std::size_t>(p) + k + margin, static_cast<std::size_t>(q) - margin);
     }
-    if (auto cut = unmatched_end(r, in, runs, shared, k, false)) out.push_back(*cut);
+    if (auto cut = unmatched_end(r, in, runs, with, shared, k, false)) out.push_back(*cut);
     return out;
 }
 
 // Read r without the stretches cut (in order), kept in out, its doubts moved.
-void cut_stretches(std::size_t r, const std::vector<Stretch>& cuts, CutReads& out,
-                   std::vector<FrameDoubts>& doubts) {
+void cut_stretches(std::size_t r, const std::vector<Stretch>& cuts, CutReads& out, std::vector<FrameDoubts>& doubts) {
     const std::span<const Frame> read = out.reads[r];
     std::vector<Frame> frames;
     std::size_t from = 0, size = read.size();
