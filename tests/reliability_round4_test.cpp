@@ -313,3 +313,65 @@ TEST(Round4Restore, ALongBlankLeaderOnlyOneReadHasIsNotAligned) {
     EXPECT_LE(r.count(FrameStatus::extra), 1000U + 1U);  // the margin's blank frames, not 400 000
     EXPECT_TRUE(r.complete());
 }
+
+// A program of `blocks` numbered blocks, as tape, and a read of it with `junk` frames of punched junk
+// (random frames: no run of them is in the program) after its middle frame (a splice of other tape) or
+// after its last (a reader that ran on over something else).
+struct JunkRead {
+    std::vector<Frame> tape, read;
+    JunkRead(int blocks, std::size_t junk, bool at_end = false) {
+        std::string program = "%\n";
+        for (int i = 1; i <= blocks; ++i)
+            program += "N" + std::to_string(i) + " G01 X" + std::to_string(i) + ".5 Y-" + std::to_string(i) + "\n";
+        tape = encode(program + "M02\n%\n", EncodeOptions{});
+        read = tape;
+        std::uint32_t x = 12345;  // a fixed sequence: the same junk every run
+        std::vector<Frame> frames(junk);
+        for (auto& f : frames) {
+            x = x * 1103515245U + 12345U;
+            f = static_cast<Frame>(x >> 24 ? x >> 24 : 0xFF);  // punched: never blank tape
+        }
+        read.insert(read.begin() + static_cast<std::ptrdiff_t>(at_end ? tape.size() : tape.size() / 2), frames.begin(),
+                    frames.end());
+    }
+};
+
+// 11. A long stretch only one of three reads has is not aligned frame by frame: all but a margin at each
+// side is left out before aligning, counted as frames only a minority has, and the restoration is the
+// tape's. Each frame aligned would be a column voted and listed (about 1.4 KB each).
+TEST(Round4Restore, ALongStretchOnlyOneReadHasIsLeftOutBeforeAligning) {
+    JunkRead j(400, 300'000);
+    std::vector<std::span<const Frame>> reads{j.tape, j.read, j.tape};
+    RestoreResult r = restore(reads, RestoreOptions{.code = FrameCode::iso()});
+    EXPECT_EQ(r.frames, j.tape);
+    EXPECT_EQ(r.count(FrameStatus::extra), 300'000U);   // all of it, though only the margins were aligned
+    EXPECT_LE(r.problems.size(), 2 * 1000U + 2 * 12U);  // the margins' frames, each listed; not 300 000
+    EXPECT_TRUE(r.complete());
+}
+
+// Where only one other read lacks the stretch, nothing outvotes it: it is aligned as before.
+TEST(Round4Restore, AStretchOneOfTwoReadsHasIsAlignedAsBefore) {
+    JunkRead j(400, 5'000);
+    std::vector<std::span<const Frame>> reads{j.read, j.tape};
+    RestoreResult r = restore(reads, RestoreOptions{.code = FrameCode::iso()});
+    EXPECT_GE(r.problems.size(), 5'000U);
+}
+
+// A reader that ran on past the trailer over 2 M frames of something else, as a real process under a
+// bound of memory, with a deadline: each frame was a column voted and listed (gigabytes; the issue's
+// 8.6 M frames of leader, 12.2 GB).
+TEST(Round4Restore, ALongStretchOnlyOneReadHasIsRestoredInBoundedMemory) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: a bound on it says nothing here";
+#endif
+    JunkRead j(2000, 2'000'000, true);
+    TempDir dir;
+    write_frames(dir.file("a.ptp"), j.tape);
+    write_frames(dir.file("b.ptp"), j.read);
+    write_frames(dir.file("c.ptp"), j.tape);
+    const std::string restore = std::string("ulimit -v 400000 && exec \"$0\" restore ") + dir.file("a.ptp") + " " +
+                                dir.file("b.ptp") + " " + dir.file("c.ptp") + " -o " + dir.file("out.ptp");
+    Outcome o = run("/bin/sh", {"-c", restore, TAPE_BINARY}, dir, std::chrono::seconds(120));
+    EXPECT_EQ(o.status, 0) << o.err;
+    EXPECT_EQ(read_frames(dir.file("out.ptp")), j.tape);
+}

@@ -6,34 +6,14 @@
 #include <climits>
 #include <string>
 
+#include "hashed_runs.hpp"
 #include "tape/error.hpp"
 
 namespace tape {
-namespace {
+namespace detail {
 
-using Pairs = std::vector<std::pair<std::int32_t, std::int32_t>>;  // (reference frame, read frame)
-
-// Scores: a frame misread by one hole is still the same frame, so it stays in its column; frames
-// that differ more are a stain or a splice read as other frames, and stand apart from the frames the
-// others read there (two gaps cost less). A gap costs most where it opens: a reader loses or adds a
-// stretch at once, so one run of gaps is likelier than several, and two good reads then place a
-// frame that has an equal neighbour the same way whatever damage lies further back. Frames lost next
-// to frames added are one misread stretch, kept together: a gap of one kind opens a little cheaper
-// next to a gap of the other.
-int score(Frame a, Frame b) {
-    if (a == b) return 4;
-    unsigned x = a ^ b;
-    return (x & (x - 1)) == 0 ? -2 : -18;  // one hole apart
-}
-constexpr int gap_open = -8;    // the first frame of a run of gaps
-constexpr int gap_extend = -2;  // each further one
-constexpr int gap_switch = -7;  // a run of gaps of one kind opening next to one of the other
-
-// The rolling hash of every run of k frames that is not mostly blank (a run of leader anchors
-// nothing), with where it starts: sorted by hash, then by place. One run in four is kept, chosen by its
-// hash, so the same runs in every read: anchors a few frames apart cover the reads as well, at a
-// quarter of the sorting.
-using Runs = std::vector<std::pair<std::uint64_t, std::int32_t>>;
+// One run in four is kept, chosen by its hash, so the same runs in every read: anchors a few frames
+// apart cover the reads as well, at a quarter of the sorting.
 Runs hashed_runs(std::span<const Frame> s, std::size_t k) {
     Runs all;
     if (s.size() < k) return all;
@@ -56,6 +36,34 @@ Runs hashed_runs(std::span<const Frame> s, std::size_t k) {
     std::sort(all.begin(), all.end());
     return all;
 }
+
+std::size_t anchor_length(const AlignOptions& o) { return std::max<std::size_t>(o.anchor_length, 4); }
+
+}  // namespace detail
+
+namespace {
+
+using detail::anchor_length;
+using detail::hashed_runs;
+using detail::Runs;
+
+using Pairs = std::vector<std::pair<std::int32_t, std::int32_t>>;  // (reference frame, read frame)
+
+// Scores: a frame misread by one hole is still the same frame, so it stays in its column; frames
+// that differ more are a stain or a splice read as other frames, and stand apart from the frames the
+// others read there (two gaps cost less). A gap costs most where it opens: a reader loses or adds a
+// stretch at once, so one run of gaps is likelier than several, and two good reads then place a
+// frame that has an equal neighbour the same way whatever damage lies further back. Frames lost next
+// to frames added are one misread stretch, kept together: a gap of one kind opens a little cheaper
+// next to a gap of the other.
+int score(Frame a, Frame b) {
+    if (a == b) return 4;
+    unsigned x = a ^ b;
+    return (x & (x - 1)) == 0 ? -2 : -18;  // one hole apart
+}
+constexpr int gap_open = -8;    // the first frame of a run of gaps
+constexpr int gap_extend = -2;  // each further one
+constexpr int gap_switch = -7;  // a run of gaps of one kind opening next to one of the other
 
 // A run that occurs as many times in both reads (and no more than this) pairs its occurrences in
 // order: a program punched twice, or sections repeated in it, still anchor where each copy stands.
@@ -306,8 +314,6 @@ void align_stretch(std::span<const Frame> ref, std::span<const Frame> read, std:
 
 // The pairs of ref and read frames that stand in one column, in order.
 // ref_runs: hashed_runs(ref, anchor_length(o)).
-std::size_t anchor_length(const AlignOptions& o) { return std::max<std::size_t>(o.anchor_length, 4); }
-
 Pairs pair_up(std::span<const Frame> ref, const Runs& ref_runs, std::span<const Frame> read, const AlignOptions& o,
               double& anchored_share) {
     const std::size_t k = anchor_length(o);

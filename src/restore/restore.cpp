@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 
+#include "read_cuts.hpp"
 #include "repair.hpp"
 #include "repair_world.hpp"
 #include "vote.hpp"
@@ -61,48 +62,6 @@ void add_missing_end(RestoreResult& out, RestoreProblem p, bool start) {
         out.problems.push_back(std::move(p));
 }
 
-// Blank frames a read has at an end beyond the longest blank end of the other reads, and this many
-// more, are left out before the reads are aligned: a stretch no other read has is not aligned frame by
-// frame (a read with 8.6 M frames of leader beside two of 87 k took 12 GB and nine minutes). Their
-// length follows the majority of the reads in any case.
-constexpr std::size_t blank_margin = 1000;
-
-std::size_t blank_at(std::span<const Frame> r, bool start) {
-    auto blank = [](Frame f) { return f == blank_frame; };
-    return start ? static_cast<std::size_t>(std::find_if_not(r.begin(), r.end(), blank) - r.begin())
-                 : static_cast<std::size_t>(std::find_if_not(r.rbegin(), r.rend(), blank) - r.rbegin());
-}
-
-// The reads with such blank ends cut, and their doubts moved with them (counted from 1 in the read).
-std::vector<std::span<const Frame>> trim_blank_ends(std::span<const std::span<const Frame>> reads,
-                                                    std::vector<FrameDoubts>& doubts) {
-    std::vector<std::span<const Frame>> out(reads.begin(), reads.end());
-    if (reads.size() < 2) return out;
-    for (bool start : {true, false}) {
-        std::vector<std::size_t> blank;
-        for (const auto& r : out) blank.push_back(std::min(blank_at(r, start), r.size()));
-        for (std::size_t r = 0; r < out.size(); ++r) {
-            std::size_t others = 0;
-            for (std::size_t k = 0; k < out.size(); ++k)
-                if (k != r) others = std::max(others, blank[k]);
-            if (blank[r] <= others + blank_margin || blank[r] == out[r].size()) continue;
-            std::size_t cut = blank[r] - others - blank_margin;
-            out[r] = start ? out[r].subspan(cut) : out[r].first(out[r].size() - cut);
-            if (doubts.size() != out.size()) continue;  // refused by the vote, as given
-            std::vector<FrameDoubt> kept;
-            std::uint64_t shift = start ? cut : 0, size = out[r].size();
-            for (auto d : doubts[r].runs) {
-                if (d.last <= shift || d.first > shift + size) continue;
-                d.first = d.first > shift ? d.first - shift : 1;
-                d.last = std::min<std::uint64_t>(d.last - shift, size);
-                kept.push_back(std::move(d));
-            }
-            doubts[r].runs = std::move(kept);
-        }
-    }
-    return out;
-}
-
 }  // namespace
 
 std::string_view status_name(FrameStatus s) {
@@ -124,8 +83,9 @@ RestoreResult restore(std::span<const std::span<const Frame>> given, const Resto
     // Reads in another code than the one given: every frame would fail it and stand in doubt. They are
     // voted as frames of no code, nothing is repaired, and the result says the code does not fit.
     RestoreOptions o = options;
-    const std::vector<std::span<const Frame>> trimmed = trim_blank_ends(given, o.doubts);
-    const std::span<const std::span<const Frame>> reads(trimmed);
+    // Long stretches only one read has are left out before aligning (read_cuts.hpp).
+    const detail::CutReads cut = detail::cut_reads(given, o.doubts, o.align);
+    const std::span<const std::span<const Frame>> reads(cut.reads);
     bool misfit = false;
     if (o.code) {
         const std::span<const Frame>* longest = &reads.front();
@@ -158,6 +118,7 @@ RestoreResult restore(std::span<const std::span<const Frame>> given, const Resto
         out.unchecked = related == 1 && !o.code && !misfit;
     }
     make_image(std::move(vote), out);
+    out.counts[static_cast<std::size_t>(FrameStatus::extra)] += cut.unmatched;
     for (const auto& run : vote.runs) out.run_length_votes += !run.blank_end && run.decided(o.run_odds);
     out.code_misfit = misfit;
     if (o.code) {
