@@ -146,6 +146,12 @@ void code_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
     }
 }
 
+// A letter's slot, 1..26 for either case; 0 for anything else.
+unsigned letter_slot(char c) {
+    unsigned folded = static_cast<unsigned char>(c) | 32u;
+    return folded >= 'a' && folded <= 'z' ? folded & 31u : 0;
+}
+
 std::uint32_t index_of(const Block& b, const Word& w) { return static_cast<std::uint32_t>(&w - b.words.data() + 1); }
 
 // With two dialects close, a word is held to what both readings ask: the looser of the two.
@@ -153,9 +159,10 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
     const DialectRules& rules = dialect_rules(dialect);
     bool gost_dimensions = dialect == Dialect::gost && !close;
     bool lathe_cycles = dialect == Dialect::fanuc || close == Dialect::fanuc;
-    // By address and by group: which word came first, as its index in the block plus one (0: none yet);
-    // indices, not pointers, as the arrays are set to zero for every block.
-    std::array<std::uint32_t, 128> seen{}, group{};
+    // By address and by group (letters both, slot c & 31): which word came first, as its index in the
+    // block plus one (0: none yet); indices, not pointers, and 32 slots, as the arrays are set to zero
+    // for every block (128 slots made that zeroing a twentieth of linting a long program).
+    std::array<std::uint32_t, 32> seen{}, group{};
     int max_rank = -1;
     const Word* max_word = nullptr;
     const Word* previous = nullptr;
@@ -166,9 +173,9 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
     bool dimensions = !has_g(b, {65, 66});
     for (const auto& w : b.words) {
         if (!w.known) continue;
-        auto a = static_cast<unsigned char>(w.address);
+        unsigned a = letter_slot(w.address);
         bool dimension = gost_dimensions ? is_dimension(w.address) : is_axis_or_center(w.address);
-        if (dimension && dimensions) {
+        if (dimension && dimensions && a) {
             if (seen[a])
                 add(out, "repeated-dimension", w.where, b.ordinal,
                     w.text + " repeats " + b.words[seen[a] - 1].text +
@@ -179,7 +186,7 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
         auto code = w.address == 'G' ? w.integer() : std::nullopt;
         if (code)
             if (const NcFunction* f = find_nc_function('G', *code); f && f->group) {
-                auto g = static_cast<unsigned char>(f->group);
+                unsigned g = letter_slot(f->group);
                 // On a Fanuc lathe G90, G92 and G94 are turning cycles, not of the groups of table 4.
                 bool lathe_cycle = lathe_cycles && (*code == 90 || *code == 92 || *code == 94);
                 if (!lathe_cycle && group[g])
