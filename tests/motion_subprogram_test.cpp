@@ -92,6 +92,14 @@ TEST(MotionSubprograms, FanucM98WithRepeatsFollowed) {
     EXPECT_EQ(c.of(MoveKind::program_end).size(), 1u);  // M30; the M99s return
 }
 
+// Fanuc's ISO form of a program number, ":1000", is the program M98 P1000 calls (as search finds it).
+TEST(MotionSubprograms, ColonProgramNumberIsCalled) {
+    auto c =
+        run("%\n:0001\nN10 G90 G00 X0 Y0 Z5.\nN20 M98 P1000\nN30 M30\n:1000\nN1 G00 X4.\nN2 M99\n%\n", Dialect::fanuc);
+    EXPECT_TRUE(c.of(MoveKind::not_simulated).empty()) << c.of(MoveKind::not_simulated)[0].note;
+    expect_ends(c.paths(), {{0, 0, 3}, {4, 0, 7}});
+}
+
 // Haas M97 P100: block N100 of the same program, after M30, run as a subroutine up to its M99.
 TEST(MotionSubprograms, HaasM97LocalSubroutine) {
     auto c =

@@ -85,6 +85,10 @@ struct Block {
 /// True when the block holds one of the M codes in ends ("2 30", "2 30 99").
 bool holds_end_code(const Block& block, std::string_view ends);
 
+/// A program number without its 'O' or ':' and leading zeros ("O0012", ":12" -> "12"), so that the
+/// spellings of one number compare equal.
+std::string_view program_key(std::string_view number);
+
 struct Program {
     Location start;                       ///< the '%' that starts it, or its first block when none does
     std::optional<std::string> number{};  ///< between '%' and LF (§1.6), or Fanuc's "O1234"

@@ -24,8 +24,9 @@ bool may_call(std::string_view t) {
     return false;
 }
 
+// "O1000", ":1000" (Fanuc's main program number) or "1000" as the number M98 P calls.
 std::optional<long long> program_number(std::string_view s) {
-    if (!s.empty() && (s[0] == 'O' || s[0] == 'o')) s.remove_prefix(1);
+    s = program_key(s);
     if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
     long long n = 0;
     for (char c : s) n = n * 10 + (c - '0');

@@ -41,6 +41,12 @@ std::optional<long long> Word::integer() const {
     return sign == '-' ? -v : v;
 }
 
+std::string_view program_key(std::string_view s) {
+    if (!s.empty() && (s[0] == 'O' || s[0] == 'o' || s[0] == ':')) s.remove_prefix(1);
+    while (s.size() > 1 && s[0] == '0') s.remove_prefix(1);
+    return s;
+}
+
 bool holds_end_code(const Block& block, std::string_view ends) {
     return std::any_of(block.words.begin(), block.words.end(), [&](const Word& w) {
         if (w.address != 'M') return false;

@@ -12,13 +12,6 @@ void for_each_block(const LoadedTape& t, Fn fn) {
             if (!fn(BlockRef{&p, &b})) return;
 }
 
-// "O0012", ":12", "012" and "12" name one program: Fanuc writes its numbers with 'O' (or ':').
-std::string_view program_key(std::string_view s) {
-    if (!s.empty() && (s[0] == 'O' || s[0] == 'o' || s[0] == ':')) s.remove_prefix(1);
-    while (s.size() > 1 && s[0] == '0') s.remove_prefix(1);
-    return s;
-}
-
 }  // namespace
 
 std::uint64_t frame_offset(const LoadedTape& t, std::uint64_t frame) {
