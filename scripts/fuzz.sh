@@ -15,7 +15,8 @@ CXX=clang++-14 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebIn
 cmake --build build-fuzz -j2 --target $(printf '%s_fuzz ' $targets)
 for target in $targets; do
   scratch=$(mktemp -d)
-  options=(-max_total_time="$seconds" -max_len=4096 -print_final_stats=1)
+  # One input taking over a minute is a hang: said then, not after libFuzzer's default 20 minutes.
+  options=(-max_total_time="$seconds" -max_len=4096 -timeout=60 -print_final_stats=1)
   [ -f "tests/fuzz/$target.dict" ] && options+=(-dict="tests/fuzz/$target.dict")
   echo "fuzz: ${target}_fuzz for ${seconds} s"
   status=0

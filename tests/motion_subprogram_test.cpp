@@ -317,3 +317,16 @@ TEST(MotionSubprograms, RestartSendsTheOSubDefinitions) {
 }
 
 }  // namespace
+
+namespace {
+
+// A call without P after a block with one: the P of the block before is not taken for its own (it
+// was read through a word of a block already gone).
+TEST(MotionSubprograms, CallWithoutPNamesNoEarlierP) {
+    auto c = run("%\nO0001\nG0 X0 Y0\nG04 P100\nM97\nM98 P2\nM30\n%\n", Dialect::fanuc);
+    auto n = c.of(MoveKind::not_simulated);
+    ASSERT_FALSE(n.empty());
+    EXPECT_NE(n[0].note.find("M97: no P says which subprogram is called"), std::string::npos) << n[0].note;
+}
+
+}  // namespace

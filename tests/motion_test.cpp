@@ -275,6 +275,47 @@ TEST(MotionCycles, DrillingG81) {
     EXPECT_EQ(zs, want);
 }
 
+// G83 pecks every Q from R, back up to R after each; the last peck stops short of the bottom.
+TEST(MotionCycles, PeckingG83) {
+    auto c = run("G90 G0 X0 Y0 Z10\nG99 G83 X0 Y0 Z-10 R2 Q5 F100\nG80\nM2\n");
+    std::vector<double> zs;
+    for (const auto& m : c.moves)
+        if (m.depth == 1) zs.push_back(m.end.z);
+    EXPECT_EQ(zs, (std::vector<double>{10, 2, -3, 2, -3, -8, 2, -8, -10, 2}));
+    auto exact = run("G90 G0 X0 Y0 Z10\nG99 G83 X0 Y0 Z-8 R2 Q5 F100\nG80\nM2\n");
+    EXPECT_EQ(exact.count(MoveKind::linear), 2u);  // one peck at -3, then the bottom
+}
+
+// Hostile repeat counts and pecks: named at the block, never expanded into millions of moves.
+TEST(MotionCycles, ExpansionBounded) {
+    for (const char* text : {"G90 G0 X0 Y0 Z10\nG83 Z-100 R2 Q0.0001 F100\nG80\nM2\n",
+                             "G91 G0 X0 Y0 Z10\nG81 X1 Z-1 R-1 L1000000 F100\nG80\nM2\n"}) {
+        auto c = run(text);
+        auto n = c.of(MoveKind::not_simulated);
+        ASSERT_EQ(n.size(), 1u) << text;
+        EXPECT_NE(n[0].note.find("more than 100 000 moves"), std::string::npos);
+        EXPECT_LT(c.moves.size(), 10u);
+    }
+}
+
+// A program's cycles together: 10 million moves, then each further cycle named.
+TEST(MotionCycles, ExpansionBoundedByProgram) {
+    struct Count : tape::MotionVisitor {
+        std::size_t moves = 0;
+        std::vector<std::string> notes;
+        void move(const Move& m) override {
+            ++moves;
+            if (m.kind == MoveKind::not_simulated) notes.push_back(m.note);
+        }
+    } count;
+    std::string text = "G90 G0 X0 Y0 Z10\nG98 G81 X0 Y0 Z-1 R2 L16000 F100\n";
+    for (int i = 0; i < 105; ++i) text += "X1 L16000\n";  // L counts in its own block only
+    tape::interpret_each(text + "G80\nM2\n", {}, count, tape::motion_options(Dialect::linuxcnc));
+    ASSERT_EQ(count.notes.size(), 2u);
+    EXPECT_NE(count.notes[0].find("10 million"), std::string::npos);
+    EXPECT_LT(count.moves, 10'000'100u);
+}
+
 TEST(MotionNotSimulated, NamedAtItsBlock) {
     auto c = run("G90 G0 X0 Y0 Z0\nG0 X#1\nG1 X5 F10\nM2\n", Dialect::linuxcnc);
     auto n = c.of(MoveKind::not_simulated);

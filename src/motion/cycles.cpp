@@ -48,10 +48,8 @@ void MotionMachine::drill_cycle(const Point& end, unsigned end_known, unsigned n
     int repeat = 1;
     char count = w_.ok('K') ? 'K' : w_.ok('L') ? 'L' : 0;
     if (count) repeat = static_cast<int>(std::clamp(w_.get(count), 0.0, 1e6));
-    if (!cycle_r_ok_ || !cycle_z_ok_ || repeat > 10000) {
-        not_simulated(repeat > 10000 ? "a canned cycle repeated more than 10000 times is not drawn"
-                                     : "a canned cycle without its R or Z level: the control stops here",
-                      all_axes);
+    if (!cycle_r_ok_ || !cycle_z_ok_) {
+        not_simulated("a canned cycle without its R or Z level: the control stops here", all_axes);
         return;
     }
     // G91: R from the initial level, Z from R.
@@ -60,6 +58,9 @@ void MotionMachine::drill_cycle(const Point& end, unsigned end_known, unsigned n
     double bottom = inc ? r_level + cycle_z_ : cycle_z_;
     bool z_known = inc ? initial_known_ : true;
     unsigned zbit = z_known ? unsigned(axis_z) : 0u;
+    double pecks = peck_count(r_level, bottom);
+    // A hole: over it, to R, each peck (G83: down, up to R, back), the bottom, a dwell, out, up.
+    if (!expansion_allowed(std::max(repeat, 1) * (6 + 3 * pecks))) return;
     Point step{end.x - pos.x, end.y - pos.y, 0};
     for (int hole = 0; hole < repeat; ++hole) {
         Point at = pos;
@@ -71,8 +72,30 @@ void MotionMachine::drill_cycle(const Point& end, unsigned end_known, unsigned n
                 at.x += step.x, at.y += step.y;
             leg(MoveKind::rapid, at, k);
         }
-        drill_hole(at, r_level, bottom, zbit);
+        drill_hole(at, r_level, bottom, zbit, static_cast<int>(pecks));
     }
+}
+
+// G73/G83's pecks above the bottom: one every Q from R down, the last one short of the bottom.
+double MotionMachine::peck_count(double r_level, double bottom) const {
+    double q_mm = std::fabs(cycle_q_);
+    if ((cycle_ != 83 && cycle_ != 73) || !(q_mm > 0) || !(r_level - bottom > q_mm)) return 0;
+    return std::ceil((r_level - bottom) / q_mm) - 1;
+}
+
+// The moves cycles expand into are bounded, by cycle and by program (hostile repeat counts and peck
+// depths): past the bound a cycle is named, not drawn.
+bool MotionMachine::expansion_allowed(double moves) {
+    constexpr double max_per_cycle = 100'000, max_per_program = 10'000'000;
+    if (moves <= max_per_cycle && expanded_ + moves <= max_per_program) {
+        expanded_ += moves;
+        return true;
+    }
+    not_simulated(moves > max_per_cycle
+                      ? "a cycle of more than 100 000 moves (its repeats, pecks or passes) is not drawn"
+                      : "more than 10 million moves drawn from this program's cycles: the cycle is not drawn",
+                  all_axes);
+    return false;
 }
 
 void MotionMachine::lathe_cycle(int code, Point end, unsigned end_known, unsigned named) {
@@ -111,13 +134,13 @@ void MotionMachine::lathe_cycle(int code, Point end, unsigned end_known, unsigne
 }
 
 // One hole of a drilling cycle, the tool over it: down to R, pecks, the bottom, a dwell, back up.
-void MotionMachine::drill_hole(Point at, double r_level, double bottom, unsigned zbit) {
+void MotionMachine::drill_hole(Point at, double r_level, double bottom, unsigned zbit, int pecks) {
     at.z = r_level;
     leg(MoveKind::rapid, at, (known & ~axis_z) | zbit);
     double q_mm = std::fabs(cycle_q_);
-    bool pecks = (cycle_ == 83 || cycle_ == 73) && q_mm > 0 && (r_level - bottom) / q_mm < 10000;
-    for (double depth = r_level; pecks && depth - q_mm > bottom;) {
-        depth -= q_mm;
+    for (int n = 1; n <= pecks; ++n) {
+        // Counted, not stepped: a step below the depth's rounding would never reach the bottom.
+        double depth = r_level - n * q_mm;
         at.z = depth;
         leg(MoveKind::linear, at, known);
         if (cycle_ == 83) {

@@ -118,6 +118,7 @@ void MotionMachine::contour_replay(const Contour& c) {
     Point start = pos;
     unsigned start_known = known;
     if (opt_.findings_only) return;  // the tool ends where it started
+    if (!expansion_allowed(static_cast<double>(c.moves.size()) + 1)) return;
     for (std::size_t i = 0; i < c.moves.size(); ++i) {
         mv_ = c.moves[i];
         if (i == 0) mv_.start = start, mv_.known = start_known;
@@ -234,7 +235,8 @@ void MotionMachine::thread_cycle() {
                       xz);
         return;
     }
-    thread_passes(end, end_known, depths, height, taper);
+    if (expansion_allowed(4.0 * static_cast<double>(depths.size())))
+        thread_passes(end, end_known, depths, height, taper);
 }
 
 // Each pass as G92's: X in to the pass's depth, the thread along Z at the feed, X out, Z back. X given

@@ -47,6 +47,7 @@ void MotionMachine::reset() {
     plane_set_ = false;
     scaled_ = 0;
     initial_known_ = cycle_r_ok_ = cycle_z_ok_ = false;
+    expanded_ = 0;
     lathe_ = {};
     lathe_named_ = 0;
     corner_word_ = nullptr;

@@ -129,7 +129,9 @@ private:
     bool over_budget();
     // cycles.cpp
     void drill_cycle(const Point& end, unsigned end_known, unsigned named);
-    void drill_hole(Point at, double r_level, double bottom, unsigned zbit);
+    void drill_hole(Point at, double r_level, double bottom, unsigned zbit, int pecks);
+    double peck_count(double r_level, double bottom) const;
+    bool expansion_allowed(double moves);
     void lathe_cycle(int code, Point end, unsigned end_known, unsigned named);
     void leg(MoveKind kind, const Point& to, unsigned to_known);
     bool cycle_value(char letter, double& value);
@@ -172,6 +174,7 @@ private:
     // Canned cycles: the level the tool came from, and R, Z, Q, P kept from block to block.
     double initial_z_ = 0, cycle_r_ = 0, cycle_z_ = 0, cycle_q_ = 0, cycle_p_ = 0;
     bool initial_known_ = false, cycle_r_ok_ = false, cycle_z_ok_ = false;
+    double expanded_ = 0;     // moves drawn from cycles in this program (bounded: expansion_allowed)
     Point local_{};           // G52's shift from the work offset's zero
     std::string transform_;   // the G code of a coordinate transformation in force ("G68"), or empty
     bool plane_set_ = false;  // the program chose its plane (G17/G18/G19)

@@ -48,7 +48,8 @@ struct BlockWords {
     ValueState at(char a) const { return state[static_cast<std::size_t>(a - 'A')]; }
     double get(char a) const { return value[static_cast<std::size_t>(a - 'A')]; }
     bool scaled(char a) const { return implied[static_cast<std::size_t>(a - 'A')]; }
-    const Word* word_of(char a) const { return word[static_cast<std::size_t>(a - 'A')]; }
+    /// The letter's word in this block, or nullptr (word[] keeps an earlier block's pointers: not cleared).
+    const Word* word_of(char a) const { return has(a) ? word[static_cast<std::size_t>(a - 'A')] : nullptr; }
     bool has_g(int code10) const;
     bool has_m(int code) const;
 };
