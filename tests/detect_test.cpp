@@ -179,3 +179,40 @@ TEST(DetectCode, Koi7LettersAreSeen) {
     EXPECT_TRUE(looks_like_koi7(d.evidence)) << d.evidence.koi7_letters;
     EXPECT_FALSE(looks_like_koi7(detect_code(read_frames(sample_path("16k20f3s5-turning.iso.ptp"))).evidence));
 }
+
+namespace {
+
+std::vector<tape::Frame> random_frames(int n) {
+    std::vector<tape::Frame> t;
+    std::uint32_t x = 12345;
+    for (int i = 0; i < n; ++i) {
+        x = x * 1103515245 + 12345;
+        t.push_back(static_cast<tape::Frame>(x >> 16));
+    }
+    return t;
+}
+
+// Two reads of an ISO tape and a longer read of noise: the two decide, and the verdict is drawn from the
+// longer of them. EIA reads outnumbering ISO ones win; no read in a code gives the longest read's verdict.
+TEST(DetectCodeOfReads, MostReadsDecideNotTheLongest) {
+    using namespace tape;
+    std::string text = "%\nN1 G01 X10 Y20 F100\nN2 M02\n%\n";
+    auto iso = encode(text, {});
+    auto iso_long = encode(text, EncodeOptions{.leader = 2 * default_leader});
+    auto eia = encode(text, EncodeOptions{.code = Code::eia});
+    auto noise = random_frames(4000);
+    std::vector<std::span<const Frame>> reads{iso, noise, iso_long};
+    auto v = detect_code_of_reads(reads);
+    EXPECT_EQ(v.detection.code, Code::iso);
+    EXPECT_EQ(v.from, 2u);
+    EXPECT_EQ(v.agreeing, 2u);
+    std::vector<std::span<const Frame>> mixed{iso_long, eia, eia};
+    EXPECT_EQ(detect_code_of_reads(mixed).detection.code, Code::eia);
+    std::vector<std::span<const Frame>> none{noise, random_frames(100)};
+    auto n = detect_code_of_reads(none);
+    EXPECT_EQ(n.from, 0u);
+    EXPECT_EQ(n.agreeing, 0u);
+    EXPECT_EQ(n.detection.kind, TapeKind::binary);
+}
+
+}  // namespace

@@ -121,6 +121,16 @@ private:
 /// The verdict on frames (the whole tape, or as much of it as was read).
 CodeDetection detect_code(std::span<const Frame> frames, const CodeTable* eia_table = nullptr);
 
+/// Several reads of one tape: the verdict of the reading most reads fit (ISO, EIA or ASCII), so that a
+/// read of junk, however long, does not outvote the others; a tie goes to the reads with more frames.
+struct ReadsDetection {
+    CodeDetection detection;   ///< the verdict on read `from`, the longest read of the winning reading
+    std::size_t from = 0;      ///< the read it was drawn from (the longest read when none fits a code)
+    std::size_t agreeing = 0;  ///< how many reads fit that reading
+};
+ReadsDetection detect_code_of_reads(std::span<const std::span<const Frame>> reads,
+                                    const CodeTable* eia_table = nullptr);
+
 /// For a tape decoded with its closest reading (CodeDetection::closest): what that is and why it is only
 /// the closest, in words.
 std::string closest_reading_note(const CodeDetection& d);

@@ -88,10 +88,10 @@ RestoreResult restore(std::span<const std::span<const Frame>> given, const Resto
     const std::span<const std::span<const Frame>> reads(cut.reads);
     bool misfit = false;
     if (o.code) {
-        const std::span<const Frame>* longest = &reads.front();
-        for (const auto& r : reads)
-            if (r.size() > longest->size()) longest = &r;
-        misfit = detail::code_does_not_fit(*longest, *o.code);
+        // By most reads, not the longest: one read of noise must not undo the code the others fit.
+        auto failing = std::count_if(reads.begin(), reads.end(),
+                                     [&](std::span<const Frame> r) { return detail::code_does_not_fit(r, *o.code); });
+        misfit = 2 * static_cast<std::size_t>(failing) > reads.size();
         if (misfit) o.code.reset();
     }
     detail::VoteResult vote;

@@ -103,7 +103,7 @@ void add_restore(CLI::App& app) {
     sub->add_option("--format,-f", a->format, "Image format of the output: " + format_choices(true))
         ->check(format_check(true));
     sub->add_option("--code,-c", a->code,
-                    "Tape code: auto (from the longest read), iso, eia, or none (a binary tape: vote only)")
+                    "Tape code: auto (the code most reads fit), iso, eia, or none (a binary tape: vote only)")
         ->check(CLI::IsMember({"auto", "iso", "eia", "none"}))
         ->capture_default_str();
     sub->add_option("--parity,-p", a->parity,

@@ -119,11 +119,11 @@ std::optional<tape::FrameCode> code_for_reads(const std::string& code, const std
         name = c == tape::Code::eia ? "EIA" : "ISO with " + std::string(tape::parity_name(made.parity())) + " parity";
         return made;
     }
-    const TapeInput* longest = &reads.front();
-    for (const auto& r : reads)
-        if (r.frames.size() > longest->frames.size()) longest = &r;
-    tape::CodeDetection d = tape::detect_code(longest->frames, globals().table());
-    if (globals().verbosity > 0) say(display_name(longest->name), d.reason);
+    std::vector<std::span<const tape::Frame>> frames;
+    for (const auto& r : reads) frames.emplace_back(r.frames);
+    tape::ReadsDetection voted = tape::detect_code_of_reads(frames, globals().table());
+    const tape::CodeDetection& d = voted.detection;
+    if (globals().verbosity > 0) say(display_name(reads[voted.from].name), d.reason);
     if (!d.code || !d.reading ||
         (d.kind != tape::TapeKind::iso && d.kind != tape::TapeKind::eia && d.kind != tape::TapeKind::ascii)) {
         name = "none";

@@ -38,8 +38,8 @@ std::string restore_report_text(const RestoreReportInput& in);
 std::string restore_report_json(const RestoreReportInput& in);
 
 /// The code reads are in: iso, eia (with parity for iso: empty is even), none; or auto: ISO when a parity
-/// is given, else the code of the longest read (said with -v), none for a tape in no character code (a
-/// binary tape). name: how the report says it.
+/// is given, else the code most reads fit (tape::detect_code_of_reads, said with -v), none for a tape in no character
+/// code (a binary tape). name: how the report says it.
 std::optional<tape::FrameCode> code_for_reads(const std::string& code, const std::string& parity,
                                               const std::vector<TapeInput>& reads, std::string& name);
 
