@@ -171,6 +171,16 @@ TEST(MotionSubprograms, NestingPastFourLevelsNamed) {
     EXPECT_NE(named[0].note.find("deeper than the 4 levels"), std::string::npos) << named[0].note;
     EXPECT_EQ(named[0].where.line, 20u);          // O5's M98 P6
     EXPECT_EQ(c.of(MoveKind::rapid).size(), 5u);  // N10 and X1 in O2..O5; O6's Y1 never runs
+    EXPECT_NE(named[0].note.find("Fanuc control allows: the control stops"), std::string::npos);
+    // A ГОСТ control's own depth is not on tape: Fanuc's bound is followed, and said to be Fanuc's.
+    // (ГОСТ ends the program at M30: the bodies stand before it, and N30 calls the M30 after them.)
+    std::string local = "%\nN10 G90 G00 X0 Y0 Z5.\nN20 M97 P100\nN30 M97 P900\n";
+    for (int p = 1; p <= 5; ++p)
+        local += "N" + std::to_string(p * 100) + " G91 G00 X1.\nN" + std::to_string(p * 100 + 1) + " M97 P" +
+                 std::to_string(p * 100 + 100) + "\nN" + std::to_string(p * 100 + 2) + " M99\n";
+    auto gost = run(local + "N600 G91 G00 Y1.\nN601 M99\nN900 M30\n%\n", Dialect::gost).of(MoveKind::not_simulated);
+    ASSERT_FALSE(gost.empty());
+    EXPECT_NE(gost[0].note.find("this control's own limit is not known here"), std::string::npos) << gost[0].note;
 }
 
 TEST(MotionSubprograms, RecursionNamed) {

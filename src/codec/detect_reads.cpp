@@ -32,7 +32,8 @@ ReadsDetection detect_code_of_reads(std::span<const std::span<const Frame>> read
         verdicts.push_back(detect_code(reads[i], eia_table));
         if (reads[i].size() > reads[out.from].size()) out.from = i;
         if (!fits_a_code(verdicts[i])) continue;
-        auto v = std::find_if(votes.begin(), votes.end(), [&](const Vote& x) { return x.reading == *verdicts[i].reading; });
+        auto v =
+            std::find_if(votes.begin(), votes.end(), [&](const Vote& x) { return x.reading == *verdicts[i].reading; });
         if (v == votes.end()) v = votes.insert(votes.end(), Vote{.reading = *verdicts[i].reading, .longest = i});
         ++v->reads;
         v->frames += reads[i].size();
