@@ -1,6 +1,7 @@
 // Hex dumps read back as tape images: what xxd, hexdump -C and od -t x1 print, '*' lines included.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdlib>
 #include <fstream>
 
@@ -54,6 +55,20 @@ TEST(DumpImage, RepeatedLinesAreFilledInByTheOffsets) {
     ASSERT_EQ(frames.size(), 50U);
     EXPECT_EQ(frames[48], 0xA5);
     EXPECT_EQ(frames[49], 0x0A);
+}
+
+// A short line repeated far (a blank tape dumped with od -An -tx1 --width=3): filled by whole copies, in
+// order, to the byte; 3 is no power of two, so the doubling's last copy is a part.
+TEST(DumpImage, ShortLineRepeatedFarIsFilledWhole) {
+    TempDir dir;
+    std::ofstream(dir.file("d.txt")) << "00000000  80 01 02\n*\n01000002  0a\n01000003\n";
+    auto frames = read_image(dir.file("d.txt"));
+    ASSERT_EQ(frames.size(), 0x1000003U);
+    const std::array<Frame, 3> line{0x80, 1, 2};
+    std::size_t wrong = 0;
+    for (std::size_t i = 0; i + 1 < frames.size(); ++i) wrong += frames[i] != line[i % 3];
+    EXPECT_EQ(wrong, 0U);
+    EXPECT_EQ(frames.back(), 0x0A);
 }
 
 TEST(DumpImage, WordDumpsAndMissingLinesAreRefusedWithAdvice) {

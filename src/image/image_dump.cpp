@@ -3,6 +3,7 @@
 // stands for the line before it repeated up to the next offset (hexdump and od without -v print it);
 // the offsets are checked, so nothing is lost or doubled. od's and hexdump's default dumps of 2-byte
 // words are refused: which byte of a word came first on tape they do not show. Read only.
+#include <algorithm>
 #include <cctype>
 
 #include "image_formats.hpp"
@@ -146,8 +147,16 @@ private:
         repeat_ = false;
         if (offset < next_offset_ || (offset - next_offset_) % last_.size())
             fail("after '*' the offset " + std::to_string(offset) + " is no whole number of repeated lines");
-        for (std::uint64_t n = (offset - next_offset_) / last_.size(); n > 0; --n)
-            out.insert(out.end(), last_.begin(), last_.end());
+        // Up to 10^8 frames: written by doubling what is filled, not a line at a time (a 1-byte line
+        // repeated to the limit took 10^8 inserts).
+        std::size_t from = out.size(), total = static_cast<std::size_t>(offset - next_offset_);
+        out.resize(from + total);
+        if (total > 0) std::copy(last_.begin(), last_.end(), out.begin() + static_cast<std::ptrdiff_t>(from));
+        for (std::size_t done = last_.size(); done < total; done *= 2) {
+            std::size_t n = std::min(done, total - done);
+            std::copy_n(out.begin() + static_cast<std::ptrdiff_t>(from), n,
+                        out.begin() + static_cast<std::ptrdiff_t>(from + done));
+        }
         next_offset_ = offset;
     }
 
