@@ -132,3 +132,21 @@ TEST(DncControl, ManPageGivesTheBurstDefault) {
 }
 
 }  // namespace
+
+namespace {
+
+// machine = "fanuc-0" puts the profile's line (4800 baud, 7 bits, 2 stop bits, even parity) into the
+// device string where it does not say otherwise; the string's own flow=none stays.
+TEST(DncControl, MachineProfileSetsTheSerialLine) {
+    DncRun run(1);
+    DNC_OR_SKIP(run);
+    run.write_config("machine = \"fanuc-0\"", "flow=none");
+    ASSERT_TRUE(run.start()) << run.log();
+    TempDir out;
+    Process status({"dnc", "status", "--config", run.config()}, out);
+    ASSERT_EQ(status.wait(10s), 0) << status.err();
+    std::string text = read_text(out.file("stdout"));
+    EXPECT_NE(text.find("?flow=none&baud=4800&bits=7&stop=2&parity=even"), std::string::npos) << text;
+}
+
+}  // namespace

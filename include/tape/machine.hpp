@@ -136,6 +136,11 @@ std::string user_machine_folder();
 /// Throws Error(Errc::usage) naming the profiles there are when none matches, and the parse errors.
 MachineProfile load_machine(std::string_view name_or_path);
 
+/// A serial: device string with the profile's line settings (baud, bits, stop, flow, and on a 7-bit line
+/// the UART's parity, which stands for track 8) for the keys the string does not give; the string's own
+/// keys win. Another device is returned as it is: its line is not a serial port's.
+std::string device_with_machine_line(const std::string& device, const MachineLine& line);
+
 /// Every profile there is: the user's first (they hide a bundled one of the same name), then the
 /// bundled. A user's file that does not parse is listed, broken, with the error (its line and key) as
 /// its title.

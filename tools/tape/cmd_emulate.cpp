@@ -34,7 +34,7 @@ void machine_line(EmulateArgs& a) {
         return std::find(a.serial_only.begin(), a.serial_only.end(), option) != a.serial_only.end();
     };
     if (!given("--rate") && l.reader_frames_per_second > 0) a.rate = l.reader_frames_per_second;
-    a.device = with_machine_line(a.device, l);  // --flow, when given, still overrides the line's flow
+    a.device = tape::device_with_machine_line(a.device, l);  // --flow, when given, still overrides the line's flow
     if (!a.code_given && l.code) a.code = std::string(tape::code_name(*l.code));
     if (!a.parity_given && l.parity && a.code == "iso") a.parity = std::string(tape::parity_name(*l.parity));
 }

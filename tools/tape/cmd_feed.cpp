@@ -34,7 +34,7 @@ void machine_line(FeedArgs& a) {
     if (!a.parity_given && l.parity && (a.profile.choice.code == "iso" || a.profile.choice.code == "auto"))
         a.profile.choice.parity = std::string(tape::parity_name(*l.parity));
     if (a.profile.dialect == "auto") a.profile.dialect = std::string(tape::dialect_name(m->dialect));
-    a.device = with_machine_line(a.device, l);
+    a.device = tape::device_with_machine_line(a.device, l);
     if (l.dc_codes) a.wait_xon = true;
     if (m->kind == tape::MachineKind::lathe) a.lathe = true;  // a restart's approach: X clear, then Z
     if (a.rate == 0 && a.delay_ms == 0) a.rate = l.reader_frames_per_second;

@@ -33,11 +33,6 @@ private:
 /// The PATH of a "file:PATH" device string, or nullopt for another device.
 std::optional<std::string> file_device_path(const std::string& device);
 
-/// A serial: device string with machine line settings (baud, bits, stop, flow, and on a 7-bit line the
-/// UART's parity, which stands for track 8) for the keys the string does not give; the string's own keys
-/// win. Another device is returned as it is: its line is not a serial port's.
-std::string with_machine_line(const std::string& device, const tape::MachineLine& line);
-
 /// "--xon 0x11" style byte options; a bad one ends the program with status 2.
 std::uint8_t parse_byte(const std::string& text, const std::string& option);
 

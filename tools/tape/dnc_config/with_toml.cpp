@@ -176,9 +176,9 @@ void machine_key(const std::string& key, const Value& v, MachineSettings& m) {
 }
 
 // machine = "NAME": the profile's line settings (code, parity, dialect, flow, DC1 wait, reader speed) and
-// whether it is a lathe (a restart's approach), which
-// the [[machine]]'s own keys then override.
-void profile_settings(const Value& v, MachineSettings& m) {
+// whether it is a lathe (a restart's approach), which the [[machine]]'s own keys then override. Its
+// serial settings (baud, bits, stop) go into the device string once the device key is read.
+tape::MachineLine profile_settings(const Value& v, MachineSettings& m) {
     tape::MachineProfile p;
     std::string name = v.text();
     try {
@@ -194,6 +194,7 @@ void profile_settings(const Value& v, MachineSettings& m) {
     m.wait_xon = l.dc_codes;
     if (l.reader_frames_per_second > 0) m.rate = l.reader_frames_per_second;
     m.lathe = p.kind == tape::MachineKind::lathe;
+    return l;
 }
 
 MachineSettings read_machine(const toml::table& t, std::size_t index) {
@@ -201,12 +202,15 @@ MachineSettings read_machine(const toml::table& t, std::size_t index) {
     m.line = line_of(t);
     if (auto name = t["name"].value<std::string>()) m.name = *name;
     std::string who = "machine " + (m.name.empty() ? "#" + std::to_string(index + 1) : "'" + m.name + "'");
-    if (const toml::node* profile = t.get("machine")) profile_settings(Value{*profile, who + ": machine"}, m);
+    std::optional<tape::MachineLine> profile_line;
+    if (const toml::node* profile = t.get("machine"))
+        profile_line = profile_settings(Value{*profile, who + ": machine"}, m);
     for (auto&& [key, node] : t)
         if (key.str() != "machine")
             machine_key(std::string(key.str()), Value{node, who + ": " + std::string(key.str())}, m);
     if (m.name.empty()) bad(m.line, who + ": no name (name = \"mill-1\")");
     if (m.device.empty()) bad(m.line, who + ": no device (device = \"serial:/dev/ttyS0?baud=9600\")");
+    if (profile_line) m.device = tape::device_with_machine_line(m.device, *profile_line);
     if ((m.xon & 0x7F) == (m.xoff & 0x7F)) bad(m.line, who + ": xon and xoff are the same character");
     return m;
 }
