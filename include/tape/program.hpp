@@ -35,6 +35,10 @@ struct Word {
     bool macro = false;  ///< the value is a macro variable or expression ("X#1", "Z[#2*2]")
     bool known = true;   ///< false: the dialect does not know it; kept as written and reported once
     Location where;
+    /// The loader's reading of the digits as it met them, so that integer(), asked again by every
+    /// check, does not read the text again: digit_count -1 when the word was not made by the loader.
+    long long digits_value = 0;
+    int digit_count = -1;
 
     bool has_point() const { return point >= 0; }
     /// The digits without sign and point: "125" for.

@@ -33,8 +33,7 @@ std::string device_with_machine_line(const std::string& device, const MachineLin
     if (l.baud) add("baud", std::to_string(l.baud));
     if (l.data_bits) add("bits", std::to_string(l.data_bits));
     if (l.stop_bits) add("stop", std::to_string(l.stop_bits));
-    if (l.flow)
-        add("flow", *l.flow == Flow::xonxoff ? "xonxoff" : *l.flow == Flow::rtscts ? "rtscts" : "none");
+    if (l.flow) add("flow", *l.flow == Flow::xonxoff ? "xonxoff" : *l.flow == Flow::rtscts ? "rtscts" : "none");
     auto bits = query_value(out, "bits");
     bool even_or_odd = l.parity == Parity::even || l.parity == Parity::odd;
     if (bits == "7" && even_or_odd) add("parity", std::string(parity_name(*l.parity)));

@@ -30,6 +30,10 @@ std::string Word::digits() const {
 
 std::optional<long long> Word::integer() const {
     if (has_point() || macro || !known) return std::nullopt;
+    if (digit_count >= 0) {
+        if (digit_count == 0 || digit_count > 18) return std::nullopt;
+        return sign == '-' ? -digits_value : digits_value;
+    }
     long long v = 0;
     int n = 0;
     for (char c : text) {

@@ -230,6 +230,7 @@ Word& Loader::flagged_word(std::size_t i, std::string_view text) {
     w.point = -1;
     w.macro = false;
     w.known = false;
+    w.digit_count = -1;
     w.text.assign(text);
     return w;
 }

@@ -1,5 +1,6 @@
 // The loader's hot loop: one word, an address and its value (ГОСТ 20999-83 §3.1), or a macro value
 // where the dialect has them.
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -34,15 +35,20 @@ void Loader::word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t
     w.point = -1;
     w.macro = false;
     w.known = true;
-    if ((rules_->macro_b || rules_->o_words) && macro_word(i, e, next, w)) return;
+    w.digit_count = -1;
+    // A digit or point right after the letter is a plain number: most words, so macro_word is not asked.
+    bool plain = i + 1 < e && (char_class[static_cast<unsigned char>(text_[i + 1])] == CharClass::digit ||
+                               char_class[static_cast<unsigned char>(text_[i + 1])] == CharClass::point);
+    if ((rules_->macro_b || rules_->o_words) && !plain && macro_word(i, e, next, w)) return;
     int points = 0, digits = 0;
+    long long value = 0;
     std::size_t j = i + 1, end = j, first_blank = std::string_view::npos;
     for (; j < e; ++j) {
         char c = text_[j];
         CharClass k = char_class[static_cast<unsigned char>(c)];
-        if (k == CharClass::digit)
-            ++digits;
-        else if (k == CharClass::point) {
+        if (k == CharClass::digit) {
+            if (++digits <= 18) value = value * 10 + (c - '0');
+        } else if (k == CharClass::point) {
             if (++points == 1) w.point = digits;
         } else if (k == CharClass::sign && !w.sign && digits == 0 && points == 0)
             w.sign = c;
@@ -54,6 +60,8 @@ void Loader::word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t
         end = j + 1;
     }
     *next = j;
+    w.digits_value = value;
+    w.digit_count = std::min(digits, 19);
     std::string_view span = text_.substr(i, end - i);
     if (first_blank >= end) {
         w.text.resize(span.size());  // within the reused capacity: no allocation, one copy
