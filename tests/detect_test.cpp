@@ -208,7 +208,8 @@ TEST(DetectCodeOfReads, MostReadsDecideNotTheLongest) {
     EXPECT_EQ(v.agreeing, 2u);
     std::vector<std::span<const Frame>> mixed{iso_long, eia, eia};
     EXPECT_EQ(detect_code_of_reads(mixed).detection.code, Code::eia);
-    std::vector<std::span<const Frame>> none{noise, random_frames(100)};
+    auto short_noise = random_frames(100);
+    std::vector<std::span<const Frame>> none{noise, short_noise};
     auto n = detect_code_of_reads(none);
     EXPECT_EQ(n.from, 0u);
     EXPECT_EQ(n.agreeing, 0u);
