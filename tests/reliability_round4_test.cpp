@@ -233,6 +233,16 @@ TEST(Round4Pictures, ThePixelBoundIsReadFromTheHeader) {
     auto h = scan::read_picture_header(bytes_of(jpeg));
     ASSERT_TRUE(h);
     EXPECT_EQ(h->width * h->height, 400'000'000U);
+    // TIFF: a width written twice (a fuzzer's find: libtiff keeps the first, 135, where the last said 2):
+    // the larger counts, so the bound holds whichever a decoder takes.
+    std::string tiff = std::string("II*\0\x08\0\0\0\x03\0", 10) +
+                       std::string("\x00\x01\x03\0\x01\0\0\0\x87\0\0\0", 12) +
+                       std::string("\x01\x01\x03\0\x01\0\0\0\x2D\0\0\0", 12) +
+                       std::string("\x00\x01\x03\0\x01\0\0\0\x02\0\0\0", 12) + std::string(4, '\0');
+    auto t = scan::read_picture_header(bytes_of(tiff));
+    ASSERT_TRUE(t);
+    EXPECT_EQ(t->width, 135U);
+    EXPECT_EQ(t->height, 45U);
 }
 
 // The commands: a 20000 x 20000 PNG, /dev/zero, a damaged picture. Each refused by name, at

@@ -70,7 +70,10 @@ std::optional<PictureHeader> tiff(std::span<const std::uint8_t> b) {
         std::uint32_t tag = number(b, e, 2, big), type = number(b, e + 2, 2, big);
         if (tag != 256 && tag != 257) continue;
         if (type != 3 && type != 4) return std::nullopt;
-        (tag == 256 ? width : height) = number(b, e + 8, type == 3 ? 2 : 4, big);
+        // A tag written twice: libtiff keeps the first, another reader may keep the last; the bound
+        // holds for either when the larger counts.
+        auto& side = tag == 256 ? width : height;
+        side = std::max<std::uint64_t>(side, number(b, e + 8, type == 3 ? 2 : 4, big));
     }
     if (!width || !height) return std::nullopt;
     return PictureHeader{"TIFF", width, height};
