@@ -230,13 +230,13 @@ bool MotionMachine::call_allowed(const Body& body, const std::string& name, cons
     std::string call = call_text(c);
     std::size_t limit = nesting_limit(dialect_);
     if (calls_.stack.size() >= limit) {
-        std::string levels = call + ": a call nested deeper than the " + std::to_string(limit) + " levels ";
-        if (dialect_ == Dialect::linuxcnc || dialect_ == Dialect::fanuc)
-            levels += (dialect_ == Dialect::linuxcnc ? "LinuxCNC" : "a Fanuc control") +
-                      std::string(" allows: the control stops with an alarm; not followed");
-        else  // a ГОСТ control's depth is in its manual, not on tape: Fanuc's is the bound followed
-            levels += "a Fanuc control allows (this control's own limit is not known here): not followed";
-        not_simulated(std::move(levels), all_axes);
+        // A ГОСТ control's depth is in its manual, not on tape: Fanuc's is the bound followed, said so.
+        bool own = dialect_ == Dialect::linuxcnc || dialect_ == Dialect::fanuc;
+        not_simulated(call + ": a call nested deeper than the " + std::to_string(limit) + " levels " +
+                          (dialect_ == Dialect::linuxcnc ? "LinuxCNC" : "a Fanuc control") +
+                          (own ? " allows: the control stops with an alarm; not followed"
+                               : " allows (this control's own limit is not known here): not followed"),
+                      all_axes);
         return false;
     }
     // Running: the bodies called, and the program the calling block stands in (a program calling itself).
