@@ -155,6 +155,17 @@ TEST(Lint, UnknownCode) {
     EXPECT_EQ(count_in(Dialect::fanuc, "O1\nG#1 M#2\nM30\n", "unknown-code"), 0U);  // macro values
 }
 
+// A code's verdict is kept by its value (G1 as G01, G890 as G0890; M930 apart from G930), and past 999
+// by the text as written: each use reported, none carried to another code.
+TEST(Lint, UnknownCodeAskedOnceAndEachUseReported) {
+    EXPECT_EQ(count("%\nN1 G890 X1\nN2 G0890 X2\nN3 G01 X3 F100\nN4 G1 X4\nN5 M02\n", "unknown-code"), 2U);
+    EXPECT_EQ(count("%\nN1 G04 X1\nN2 M04\nN3 M930\nN4 G930\nN5 M02\n", "unknown-code"), 2U);
+    EXPECT_EQ(count("%\nN1 G1234 X1\nN2 G1234 X2\nN3 G01234 X3\nN4 M02\n", "unknown-code"), 3U);
+    // The verdicts are of the dialect read: a Fanuc code is known to Fanuc, not to ГОСТ.
+    EXPECT_EQ(count_in(Dialect::fanuc, "O1\nG54.1 P1\nG10 L2 P1 X0\nM30\n", "unknown-code"), 0U);
+    EXPECT_EQ(count("%\nN1 G10 X0\nN2 M02\n", "unknown-code"), count("%\nN1 G010 X0\nN2 M02\n", "unknown-code"));
+}
+
 namespace {
 std::vector<Finding> lint_as(Dialect dialect, std::string_view text, LintOptions options = {}) {
     return lint(load(std::string(text), {}, LoadOptions{dialect}), options);

@@ -155,3 +155,45 @@ TEST(Loader, ColumnsOnANonAsciiLineCountCharacters) {
     ASSERT_EQ(t.findings.size(), 1U);
     EXPECT_EQ(t.findings[0].where.column, 16U);
 }
+
+// The loader looks for a line's ';' and ')' once, sixteen bytes at a time and then byte by byte: a
+// ';' or a stray ')' in either part is found, on lines short and long, ASCII or not.
+TEST(Loader, SemicolonsAndStrayBracketsAnywhereOnTheLine) {
+    auto fanuc =
+        load("O1\nG0;X1\nG01 X1.23456 Y2.34567;G00 X0 Y0 Z0 (A;B) M05\nG01 (ДЕТАЛЬ) X1.25 Y2.5 Z0.1;M09\nM30\n", {},
+             LoadOptions{Dialect::fanuc});
+    ASSERT_EQ(fanuc.programs.size(), 1U);
+    std::vector<std::string> blocks;
+    for (const auto& b : fanuc.programs[0].blocks) blocks.push_back(b.text());
+    EXPECT_EQ(blocks, (std::vector<std::string>{"O1", "G0", "X1", "G01 X1.23456 Y2.34567", "G00 X0 Y0 Z0 M05 (A;B)",
+                                                "G01 X1.25 Y2.5 Z0.1 (ДЕТАЛЬ)", "M09", "M30"}));
+    for (std::string_view line :
+         {"N1 X1)\n", "N1 G01 X1.23456 Y2.34567 Z1 F100 LOST)\n", "N1 (Ж) G01 X1 Y2 Z3 F4 S5)\n"}) {
+        auto t = load("%\n" + std::string(line) + "N2 M02\n");
+        EXPECT_EQ(rules(t), std::vector<std::string_view>{"unexpected-character"}) << line;
+    }
+}
+
+// The block's number is kept from block to block for its string's sake: a block without one has none.
+TEST(Loader, ANumberIsNotCarriedToTheNextBlock) {
+    auto t = load("%\nN10 G01 X1\nG00 X2\nN30 M02\n");
+    const auto& b = t.programs.at(0).blocks;
+    ASSERT_EQ(b.size(), 3U);
+    EXPECT_EQ(b[0].number_text(), "N10");
+    EXPECT_FALSE(b[1].number.has_value());
+    EXPECT_EQ(b[2].number->integer(), 30);
+    EXPECT_EQ(b[2].number->where.line, 4U);
+}
+
+// Past 18 digits a word has no integer value (the loader's count wraps there, and says so).
+TEST(Loader, LongDigitRunsHaveNoIntegerValue) {
+    auto t = load("%\nN1 S123456789012345678 T1234567890123456789 M02\n");
+    const auto& w = t.programs.at(0).blocks.at(0).words;
+    ASSERT_EQ(w.size(), 3U);
+    EXPECT_EQ(w[0].integer(), 123456789012345678LL);
+    EXPECT_FALSE(w[1].integer().has_value());
+    Word by_hand;  // made by hand: its digits are read from the text
+    by_hand.address = 'S';
+    by_hand.text = "S123456789012345678";
+    EXPECT_EQ(by_hand.integer(), w[0].integer());
+}

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "test_util.hpp"
@@ -226,6 +228,23 @@ TEST(MotionWords, ImpliedPointPerDialect) {
     auto spec_read = run("%\nN1 G90 G00 X+12500 Y0\nN2 M02\n", o).of(MoveKind::rapid);
     ASSERT_EQ(spec_read.size(), 1u);
     EXPECT_NEAR(spec_read[0].end.x, 12.5, 1e-9);
+}
+
+// The loader's digits (Word::digits_value) are read as the nearest double to the number written, the
+// same as strtod; sixteen digits and more take the reading of the text, and a whole part of sixteen
+// digits is no value any control reads.
+TEST(MotionWords, NumbersAreTheNearestDoubles) {
+    const char* written[] = {"123.456", "-0.001", ".5", "0.1", "499.999", "-2.675", "12345678901.2345", "7"};
+    std::string text = "G90 G0 X0 Y0 Z0\n";
+    for (const char* x : written) text += std::string("X") + x + "\n";
+    text += "X1234567890.123456789\nX1234567890123456\nM2\n";
+    auto c = run(text);
+    auto r = c.of(MoveKind::rapid);
+    ASSERT_EQ(r.size(), std::size(written) + 2);
+    for (std::size_t k = 0; k < std::size(written); ++k)
+        EXPECT_EQ(r[k + 1].end.x, std::strtod(written[k], nullptr)) << written[k];
+    EXPECT_NEAR(r[std::size(written) + 1].end.x, 1234567890.123456789, 1e-6);  // 19 digits: the text's reading
+    EXPECT_EQ(c.count(MoveKind::not_simulated), 1u);                           // 16 whole digits: unread
 }
 
 TEST(MotionWords, InchIncrementalAndKnownAxes) {

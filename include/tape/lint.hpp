@@ -1,6 +1,7 @@
 // Checks of a loaded tape against ГОСТ 20999-83, and optionally against a controller format.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -16,6 +17,17 @@
 namespace tape {
 
 namespace lint_detail {
+/// Whether a G or M word is outside the dialect's code tables, asked once per code: by value for the
+/// plain codes below 1000 (G01 and G1 alike, no string made), by the text as written for the rest.
+struct CodeVerdicts {
+    enum : std::uint8_t { unasked, known, unknown };
+    std::array<std::uint8_t, 2000> plain{};  // G0..G999, then M0..M999
+    std::unordered_map<std::string, bool> written;
+    void clear() {
+        plain.fill(unasked);
+        written.clear();
+    }
+};
 class BlockTargets;
 class ArcChecks;
 class TravelChecks;
@@ -89,8 +101,8 @@ private:
     std::map<std::string_view, std::uint64_t> unlisted_, by_rule_;
     std::uint64_t arrived_ = 0, programs_ = 0;
     Dialect dialect_ = Dialect::gost;
-    std::optional<Dialect> close_{};                       // the runner-up: only the rules both have are checked
-    std::unordered_map<std::string, bool> unknown_codes_;  // G and M words as written: outside the tables?
+    std::optional<Dialect> close_{};  // the runner-up: only the rules both have are checked
+    lint_detail::CodeVerdicts unknown_codes_;
     std::uint64_t counts_[3] = {};
     bool any_program_ = false, in_program_ = false, program_points_ = false;
     bool quiet_ = false;  // checking a damaged block: its findings are not made

@@ -44,7 +44,16 @@ struct Word {
     /// The digits without sign and point: "125" for.
     std::string digits() const;
     /// The integer value of a word without a point (G01 -> 1), or nullopt (point, no digits, too long).
-    std::optional<long long> integer() const;
+    /// Inline: every check asks it of every word, and the loader has already read the digits.
+    std::optional<long long> integer() const {
+        if (has_point() || macro || !known) return std::nullopt;
+        if (digit_count < 0) return integer_of_text();
+        if (digit_count == 0 || digit_count > 18) return std::nullopt;
+        return sign == '-' ? -digits_value : digits_value;
+    }
+
+private:
+    std::optional<long long> integer_of_text() const;
 };
 
 struct Comment {

@@ -90,14 +90,28 @@ inline bool any16(bytes16 v) {
     return (w[0] | w[1]) != 0;
 }
 
-/// True when any of the n bytes at p has bit 7 set (a UTF-8 sequence in text).
-inline bool any_high_byte(const char* p, std::size_t n) {
+/// What a line of program text holds, found in one pass: a byte of a multi-byte character (columns
+/// must then count characters), a ';' (a Fanuc end of block or a comment), a ')' (a comment's end).
+struct LineMarks {
+    bool high = false, semicolon = false, close = false;
+};
+
+inline LineMarks line_marks(const char* p, std::size_t n) {
+    bytes16 high{}, semicolon{}, close{};
     std::size_t i = 0;
-    for (; i + 16 <= n; i += 16)
-        if (any16(load16(p + i) & 0x80)) return true;
-    for (; i < n; ++i)
-        if (static_cast<unsigned char>(p[i]) & 0x80) return true;
-    return false;
+    for (; i + 16 <= n; i += 16) {
+        bytes16 v = load16(p + i);
+        high |= v & 0x80;
+        semicolon |= reinterpret_cast<bytes16>(v == ';');
+        close |= reinterpret_cast<bytes16>(v == ')');
+    }
+    LineMarks m{.high = any16(high), .semicolon = any16(semicolon), .close = any16(close)};
+    for (; i < n; ++i) {
+        m.high |= (static_cast<unsigned char>(p[i]) & 0x80) != 0;
+        m.semicolon |= p[i] == ';';
+        m.close |= p[i] == ')';
+    }
+    return m;
 }
 
 /// One pass over text for the encoder: how many LF it holds, and whether any byte is NUL, CR or DEL

@@ -33,11 +33,12 @@ bool MotionMachine::target(Point& end, unsigned& end_known, unsigned& named) {
     scaled_start_ = scaled_;
     std::string unread;
     unsigned lost = 0;
-    static constexpr char absolute[3] = {'X', 'Y', 'Z'};
-    static constexpr char relative[3] = {'U', 0, 'W'};
+    // X Y Z, then a Fanuc lathe's incremental U and W: in the order of axes, absolute first.
+    static constexpr char letters[6] = {'X', 'U', 'Y', 0, 'Z', 'W'};
     for (int i = 0; i < 3; ++i) {
         unsigned bit = 1u << i;
-        for (char letter : {absolute[i], fanuc_lathe_ ? relative[i] : char(0)}) {
+        for (int k = 0; k < (fanuc_lathe_ ? 2 : 1); ++k) {
+            char letter = letters[2 * i + k];
             if (!letter || !w_.has(letter)) continue;
             named |= bit;
             if (!w_.ok(letter)) {
@@ -48,7 +49,7 @@ bool MotionMachine::target(Point& end, unsigned& end_known, unsigned& named) {
             }
             double v = w_.get(letter) * scale();
             if (i == 0 && st.diameter) v /= 2;
-            bool incremental = letter != absolute[i] || (st.incremental && !fanuc_lathe_);
+            bool incremental = k == 1 || (st.incremental && !fanuc_lathe_);
             if (incremental)
                 at(end, i) += v;  // unknown stays unknown
             else

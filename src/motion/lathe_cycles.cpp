@@ -82,9 +82,15 @@ bool MotionMachine::lathe_word(char letter, double& value, bool increment) {
 void MotionMachine::contour_cycle() {
     int code = once_ / 10;
     if (!w_.has('P') && !w_.has('Q')) return;  // G71 U(Δd) R(e): the roughing passes' depth, not drawn
-    auto p = w_.has('P') ? w_.word_of('P')->integer() : std::nullopt;
-    auto q = w_.has('Q') ? w_.word_of('Q')->integer() : std::nullopt;
-    if (!p || !q) {
+    // Plain numbers, not optionals: GCC 12 takes an optional read after its test for uninitialized.
+    long long p = 0, q = 0;
+    auto sequence = [this](char letter, long long& out) {
+        const Word* w = w_.word_of(letter);
+        auto v = w ? w->integer() : std::nullopt;
+        if (v) out = *v;
+        return v.has_value();
+    };
+    if (!sequence('P', p) || !sequence('Q', q)) {
         not_simulated(g_name(once_) +
                           ": the contour's first and last blocks (P and Q) are not both given as sequence numbers: "
                           "the cycle is not simulated",
@@ -93,11 +99,11 @@ void MotionMachine::contour_cycle() {
     }
     if (code == 70)
         for (const auto& c : lathe_.done)
-            if (c.p == *p && c.q == *q) return contour_replay(c);
+            if (c.p == p && c.q == q) return contour_replay(c);
     OpenContour o;
     o.code = code;
-    o.p = *p;
-    o.q = *q;
+    o.p = p;
+    o.q = q;
     o.start = o.at = pos;
     o.start_known = known;
     double du = 0, dw = 0;
@@ -107,9 +113,9 @@ void MotionMachine::contour_cycle() {
     o.group01 = group01_;
     o.block = block_->ordinal;
     o.where = block_->where;
-    o.name = cycle_name(code, *p, *q);
-    o.recorded.p = *p;
-    o.recorded.q = *q;
+    o.name = cycle_name(code, p, q);
+    o.recorded.p = p;
+    o.recorded.q = q;
     lathe_.open = std::move(o);
 }
 

@@ -50,10 +50,27 @@ bool word_at(std::string_view s, std::size_t i, std::string_view word) {
     return s.compare(i, word.size(), word) == 0;
 }
 
-bool mentions(std::string_view line, std::string_view name) {
-    for (std::size_t i = 0; i + name.size() <= line.size(); ++i)
-        if (starts_word(line, i, name)) return true;
-    return false;
+// The controls a line names (CAM posts name theirs in the header), in one pass over it: every line of
+// the sample is asked.
+struct Named {
+    bool linuxcnc = false, fanuc = false;
+};
+Named names_in(std::string_view line) {
+    Named n;
+    for (std::size_t i = 0; i < line.size(); ++i) switch (upper(line[i])) {
+            case 'L':
+                n.linuxcnc |= starts_word(line, i, "LINUXCNC");
+                break;
+            case 'F':
+                n.fanuc |= starts_word(line, i, "FANUC");
+                break;
+            case 'H':
+                n.fanuc |= starts_word(line, i, "HAAS");
+                break;
+            default:
+                break;
+        }
+    return n;
 }
 
 std::size_t skip(std::string_view s, std::size_t i) {
@@ -189,8 +206,9 @@ void Evidence::line(std::string_view s, std::uint64_t number) {
     if (i >= s.size()) return;
     if (in_leader_ && s[i] == '%') leader_ends(true);
     // CAM posts name their controller in the header: "(POST LINUXCNC.CPS ...)", "(FANUC 0I-MF)".
-    if (mentions(s, "LINUXCNC")) add(Clue::names_linuxcnc, number);
-    if (mentions(s, "FANUC") || mentions(s, "HAAS")) add(Clue::names_fanuc, number);
+    Named named = names_in(s);
+    if (named.linuxcnc) add(Clue::names_linuxcnc, number);
+    if (named.fanuc) add(Clue::names_fanuc, number);
     if (s[i] == '%') {
         std::size_t j = skip(s, std::min(s.find_first_not_of('%', i), s.size()));
         if (j < s.size() && s[j] == 'O' && j + 1 < s.size() && is_digit(s[j + 1]))
@@ -242,15 +260,17 @@ void Evidence::words(std::string_view s, std::size_t i, std::uint64_t number) {
         if (c == '#' && k + 1 < s.size() && s[k + 1] == '<') add(Clue::named_parameter, number);
         if ((c == 'o' || c == 'O') && (k == i || is_blank(s[k - 1])) && o_word_at(s, k)) add(Clue::o_word, number);
         lower |= is_lower(c);
-        for (std::string_view code : linuxcnc_codes)
-            if (word_at(s, k, code)) add(Clue::linuxcnc_code, number);
-        if (word_at(s, k, "M98") || word_at(s, k, "M97")) add(Clue::subprogram_call, number);
+        if (c == 'G')  // each code's first letter
+            for (std::string_view code : linuxcnc_codes)
+                if (word_at(s, k, code)) add(Clue::linuxcnc_code, number);
+        if (c == 'M' && (word_at(s, k, "M98") || word_at(s, k, "M97"))) add(Clue::subprogram_call, number);
         if (c == ',' && corner_word_at(s, k)) add(Clue::corner_word, number);
         if ((c == '^' || c == '@') && k + 1 < s.size() && (is_digit(s[k + 1]) || s[k + 1] == '.' || s[k + 1] == '-'))
             add(Clue::polar_word, number);
         if (!o_word_line &&
-            (c == '[' || word_at(s, k, "WHILE") || word_at(s, k, "GOTO") || word_at(s, k, "IF") ||
-             word_at(s, k, "G65") || word_at(s, k, "M99") || (c == '#' && k + 1 < s.size() && is_digit(s[k + 1]))))
+            (c == '[' || (c == 'W' && word_at(s, k, "WHILE")) || (c == 'G' && word_at(s, k, "GOTO")) ||
+             (c == 'I' && word_at(s, k, "IF")) || (c == 'G' && word_at(s, k, "G65")) ||
+             (c == 'M' && word_at(s, k, "M99")) || (c == '#' && k + 1 < s.size() && is_digit(s[k + 1]))))
             add(Clue::macro, number);
         if (c == '+' && k > i &&
             std::string_view("XYZUVWIJKABC").find(upper(s[s.find_last_not_of(" \t", k - 1)])) != std::string_view::npos)

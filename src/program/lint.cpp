@@ -40,24 +40,23 @@ constexpr Letters axis_or_center_letters("XYZUVWABCIJK"), end_point_letters("XYZ
 constexpr Letters unsigned_letters(unsigned_addresses);
 
 // Recommended order within a block (§2.2): G, X Y Z U V W P Q R A B C, I J K, F, S, T, M.
-// Addresses whose place a controller's format decides (D E H L O N) have no rank: -1.
-int order_rank(char a) {
-    if (a == 'G') return 0;
-    if (auto p = dimension_order.find(a); p != std::string_view::npos) return 10 + static_cast<int>(p);
-    if (auto p = interpolation_order.find(a); p != std::string_view::npos) return 30 + static_cast<int>(p);
-    switch (a) {
-        case 'F':
-            return 40;
-        case 'S':
-            return 50;
-        case 'T':
-            return 60;
-        case 'M':
-            return 70;
-        default:
-            return -1;
-    }
-}
+// Addresses whose place a controller's format decides (D E H L O N) have no rank: -1. A table, as
+// every word of every block asks.
+constexpr auto order_ranks = [] {
+    std::array<std::int8_t, 256> rank{};
+    rank.fill(-1);
+    rank['G'] = 0;
+    for (std::size_t p = 0; p < dimension_order.size(); ++p)
+        rank[static_cast<unsigned char>(dimension_order[p])] = static_cast<std::int8_t>(10 + p);
+    for (std::size_t p = 0; p < interpolation_order.size(); ++p)
+        rank[static_cast<unsigned char>(interpolation_order[p])] = static_cast<std::int8_t>(30 + p);
+    rank['F'] = 40;
+    rank['S'] = 50;
+    rank['T'] = 60;
+    rank['M'] = 70;
+    return rank;
+}();
+int order_rank(char a) { return order_ranks[static_cast<unsigned char>(a)]; }
 
 bool is_dimension(char a) { return dimension_letters.has(a); }
 bool is_axis_or_center(char a) { return axis_or_center_letters.has(a); }
@@ -128,20 +127,29 @@ void spec_checks(Add out, const FormatSpec& s, const Block& b, const SpecContext
 }
 
 // A G or M code outside the dialect's table (tape/code_tables.hpp); a macro value is not a code yet,
-// and the letters of a macro call (G65, G66) are its arguments (M0.070 is #13). A program uses few codes,
-// again and again: each word as written is looked up once (unknown: whether it is outside the tables).
+// and the letters of a macro call (G65, G66) are its arguments (M0.070 is #13): not asked of its block. A program uses
+// few codes, again and again: each word as written is looked up once (unknown: whether it is outside the tables).
 void code_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close,
-                 std::unordered_map<std::string, bool>& unknown) {
-    if (has_g(b, {65, 66})) return;
+                 lint_detail::CodeVerdicts& verdicts) {
+    using V = lint_detail::CodeVerdicts;
+    auto outside = [&](const Word& w) {
+        std::string value = code_value(std::string_view(w.text).substr(1));
+        return !value.empty() && !code_known(dialect, w.address, value) &&
+               !(close && code_known(*close, w.address, value));
+    };
     for (const auto& w : b.words) {
         if ((w.address != 'G' && w.address != 'M') || !w.known || w.macro || w.sign) continue;
-        auto [at, first] = unknown.try_emplace(w.text, false);
-        if (first) {
-            std::string value = code_value(std::string_view(w.text).substr(1));
-            at->second = !value.empty() && !code_known(dialect, w.address, value) &&
-                         !(close && code_known(*close, w.address, value));
+        bool unknown;
+        if (auto code = w.integer(); code && *code < 1000) {
+            std::uint8_t& v = verdicts.plain[static_cast<std::size_t>(*code) + (w.address == 'M' ? 1000 : 0)];
+            if (v == V::unasked) v = outside(w) ? V::unknown : V::known;
+            unknown = v == V::unknown;
+        } else {
+            auto [at, first] = verdicts.written.try_emplace(w.text, false);
+            if (first) at->second = outside(w);
+            unknown = at->second;
         }
-        if (at->second)
+        if (unknown)
             add(out, "unknown-code", w.where, b.ordinal, w.text + " " + unknown_code_reason(dialect, w.address));
     }
 }
@@ -155,14 +163,15 @@ unsigned letter_slot(char c) {
 std::uint32_t index_of(const Block& b, const Word& w) { return static_cast<std::uint32_t>(&w - b.words.data() + 1); }
 
 // With two dialects close, a word is held to what both readings ask: the looser of the two.
-void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close) {
+void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close, bool macro_call) {
     const DialectRules& rules = dialect_rules(dialect);
     bool gost_dimensions = dialect == Dialect::gost && !close;
     bool lathe_cycles = dialect == Dialect::fanuc || close == Dialect::fanuc;
     // By address and by group (letters both, slot c & 31): which word came first, as its index in the
-    // block plus one (0: none yet); indices, not pointers, and 32 slots, as the arrays are set to zero
-    // for every block (128 slots made that zeroing a twentieth of linting a long program).
-    std::array<std::uint32_t, 32> seen{}, group{};
+    // block plus one, read only where the slot's bit is set: zeroing the arrays for every block was a
+    // tenth of linting a long program.
+    std::array<std::uint32_t, 32> seen, group;
+    std::uint32_t seen_slots = 0, group_slots = 0;
     int max_rank = -1;
     const Word* max_word = nullptr;
     const Word* previous = nullptr;
@@ -170,18 +179,18 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
     bool order = rules.ordered_words &&
                  std::all_of(b.words.begin(), b.words.end(), [](const Word& w) { return w.known && !w.macro; });
     // Macro calls pass arguments by letter, and Fanuc's argument list II repeats I J K.
-    bool dimensions = !has_g(b, {65, 66});
+    bool dimensions = !macro_call;
     for (const auto& w : b.words) {
         if (!w.known) continue;
         unsigned a = letter_slot(w.address);
         bool dimension = gost_dimensions ? is_dimension(w.address) : is_axis_or_center(w.address);
         if (dimension && dimensions && a) {
-            if (seen[a])
+            if (seen_slots >> a & 1)
                 add(out, "repeated-dimension", w.where, b.ordinal,
                     w.text + " repeats " + b.words[seen[a] - 1].text +
                         ": a dimension or interpolation word may stand once in a block (§2.4)");
             else
-                seen[a] = index_of(b, w);
+                seen[a] = index_of(b, w), seen_slots |= 1u << a;
         }
         auto code = w.address == 'G' ? w.integer() : std::nullopt;
         if (code)
@@ -189,12 +198,12 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
                 unsigned g = letter_slot(f->group);
                 // On a Fanuc lathe G90, G92 and G94 are turning cycles, not of the groups of table 4.
                 bool lathe_cycle = lathe_cycles && (*code == 90 || *code == 92 || *code == 94);
-                if (!lathe_cycle && group[g])
+                if (!lathe_cycle && group_slots >> g & 1)
                     add(out, "g-group", w.where, b.ordinal,
                         w.text + " and " + b.words[group[g] - 1].text + " are both of group " + f->group +
                             " (§2.5, table 4)");
                 else if (!lathe_cycle)
-                    group[g] = index_of(b, w);
+                    group[g] = index_of(b, w), group_slots |= 1u << g;
             }
         if (w.sign && unsigned_letters.has(w.address))
             add(out, "sign-not-allowed", w.where, b.ordinal,
@@ -271,20 +280,21 @@ void LintVisitor::block(const Block& b) {
     quiet_ = b.damaged;  // the bad frame is the block's one finding; its modal state still counts
     ++program_blocks_;
     for (const auto& w : b.words) program_points_ |= w.has_point();
-    if (b.number) {
-        auto n = b.number->integer();
-        if (n && last_number_ && *n <= *last_number_)
+    if (auto n = b.number ? b.number->integer() : std::nullopt) {
+        long long number = *n;  // set as a number: an optional copied whole stalls the CPU here
+        if (last_number_ && number <= *last_number_)
             add(sink_, "block-number-order", b.number->where, b.ordinal,
                 "block number " + b.number->text + " does not increase (the block before is " +
                     std::to_string(*last_number_) + ")");
-        if (n) last_number_ = n;
+        last_number_ = number;
     }
     if (dialect_ == Dialect::fanuc) targets_->block(b);
     if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, "99");
-    word_checks(sink_, b, dialect_, close_);
+    bool macro_call = has_g(b, {65, 66});
+    word_checks(sink_, b, dialect_, close_, macro_call);
     if (arcs_) arcs_->next(b);
     if (travel_) travel_->next(b);
-    code_checks(sink_, b, dialect_, close_, unknown_codes_);
+    if (!macro_call) code_checks(sink_, b, dialect_, close_, unknown_codes_);
     motion_checks(b);
     flow_checks(b);
     if (options_.spec || options_.machine) held_.push_back(b);

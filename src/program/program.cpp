@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cstring>
 
 #include "codec/utf8.hpp"
@@ -28,12 +29,8 @@ std::string Word::digits() const {
     return d;
 }
 
-std::optional<long long> Word::integer() const {
-    if (has_point() || macro || !known) return std::nullopt;
-    if (digit_count >= 0) {
-        if (digit_count == 0 || digit_count > 18) return std::nullopt;
-        return sign == '-' ? -digits_value : digits_value;
-    }
+// A word not made by the loader (digit_count -1): its digits read from the text.
+std::optional<long long> Word::integer_of_text() const {
     long long v = 0;
     int n = 0;
     for (char c : text) {
@@ -51,17 +48,21 @@ std::string_view program_key(std::string_view s) {
     return s;
 }
 
+// Asked of every block by the loader: no string is made, and a block without M words costs a loop.
 bool holds_end_code(const Block& block, std::string_view ends) {
-    return std::any_of(block.words.begin(), block.words.end(), [&](const Word& w) {
-        if (w.address != 'M') return false;
+    for (const Word& w : block.words) {
+        if (w.address != 'M') continue;
         auto v = w.integer();
-        if (!v) return false;
-        std::string code = std::to_string(*v);
-        for (std::size_t at = ends.find(code); at != std::string_view::npos; at = ends.find(code, at + 1))
-            if ((at == 0 || ends[at - 1] == ' ') && (at + code.size() == ends.size() || ends[at + code.size()] == ' '))
-                return true;
-        return false;
-    });
+        if (!v) continue;
+        for (std::size_t at = 0; at < ends.size();) {
+            std::size_t stop = std::min(ends.find(' ', at), ends.size());
+            long long code = 0;
+            auto [past, error] = std::from_chars(ends.data() + at, ends.data() + stop, code);
+            if (error == std::errc() && past == ends.data() + stop && code == *v) return true;
+            at = stop + 1;
+        }
+    }
+    return false;
 }
 
 std::string Block::text() const {

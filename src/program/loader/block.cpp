@@ -47,7 +47,9 @@ std::string look_alike_hint(std::string_view token) {
 
 // Where the block starting at i ends: the end of the line, or Fanuc's ';' outside comments.
 std::size_t Loader::block_end(std::size_t i, std::size_t e) const {
-    if (!rules_->semicolon_ends_block) return e;
+    if (!rules_->semicolon_ends_block || (!line_semicolon_ && within_line(i, e)) || i >= e ||
+        !std::memchr(text_.data() + i, ';', e - i))
+        return e;
     bool in_comment = false;
     for (; i < e; ++i) {
         char c = text_[i];
@@ -91,9 +93,10 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
     blk.words.resize(words_used_);
     blk.comments.resize(comments_used_);
     blk.source.assign(trim_right(text_.substr(start_at, end - start_at)));
-    blk.ends = holds_end_code(blk, rules_->program_ends);
-    last_block_stops_ = stops_program(blk);
-    local_subprograms_ |= rules_->dialect == Dialect::fanuc && holds_end_code(blk, "97");  // Haas's M97 P calls
+    bool m_words = std::any_of(blk.words.begin(), blk.words.end(), [](const Word& w) { return w.address == 'M'; });
+    blk.ends = m_words && holds_end_code(blk, rules_->program_ends);
+    last_block_stops_ = !blk.statements.empty() && stops_program(blk);
+    local_subprograms_ |= m_words && rules_->dialect == Dialect::fanuc && holds_end_code(blk, "97");  // Haas's M97 P
     last_block_where_ = blk.where;
     last_block_ordinal_ = blk.ordinal;
     v_.block(blk);
@@ -122,11 +125,11 @@ std::size_t Loader::block_head(std::size_t i, std::size_t end) {
     Block& blk = blk_;
     words_used_ = comments_used_ = 0;
     blk.statements.clear();
-    blk.where = at(i);
+    locate(i, blk.where);
     blk.ordinal = ++ordinal_;
     blk.skip = blk.main = blk.ends = false;
     blk.skip_level = 0;
-    blk.number.reset();
+    bool numbered = false;  // the number's Word kept from the block before, its string's capacity with it
     last_line_was_block_ = true;
     if (text_[i] == '/') {
         blk.skip = true;
@@ -140,9 +143,11 @@ std::size_t Loader::block_head(std::size_t i, std::size_t end) {
     } else if (i < end && (text_[i] == 'N' || (rules_->lowercase && text_[i] == 'n') ||
                            (text_[i] == ':' && rules_->main_blocks))) {
         blk.main = text_[i] == ':';
-        blk.number.emplace();
+        if (!blk.number) blk.number.emplace();
         word(i, end, &i, blk.ordinal, *blk.number);
+        numbered = true;
     }
+    if (!numbered) blk.number.reset();
     return i;
 }
 
@@ -160,9 +165,9 @@ std::size_t Loader::block_item(std::size_t i, std::size_t end) {
                        "is a GRBL console command, not G-code: GRBL runs it when the file is streamed, LinuxCNC "
                        "stops on it",
                        "console-command");
-    if (std::size_t k = skip_blanks(i + 1, end); c == ';' && !rules_->semicolon_comment &&
-                                                 !rules_->semicolon_ends_block && k + 1 < end && is_letter(text_[k]) &&
-                                                 is_letter(text_[k + 1]))
+    if (std::size_t k = c == ';' ? skip_blanks(i + 1, end) : end; c == ';' && !rules_->semicolon_comment &&
+                                                                  !rules_->semicolon_ends_block && k + 1 < end &&
+                                                                  is_letter(text_[k]) && is_letter(text_[k + 1]))
         return flagged(i, end, end,
                        "is a ';' comment, which ГОСТ 20999-83 programs do not have: a comment stands in ( ) (§1.5)",
                        "unexpected-character");
@@ -182,7 +187,7 @@ std::size_t Loader::block_item(std::size_t i, std::size_t end) {
     if (rules_->o_words && (c == 'o' || c == 'O') && i + 1 < end && (is_digit(text_[i + 1]) || text_[i + 1] == '<'))
         return o_word(i, end);
     if (is_letter(c) && i + 1 < end && is_letter(text_[i + 1])) return letters(i, end);
-    if (std::size_t k = skip_blanks(i + 1, end);
+    if (std::size_t k = c == ',' ? skip_blanks(i + 1, end) : end;
         c == ',' && rules_->corner_words && k < end && (text_[k] == 'C' || text_[k] == 'R')) {
         Word& w = next_word();  // ",C1." chamfer, ",R2." corner (", R 15." as typed): a word of its own
         Location comma = at(i);
@@ -237,7 +242,8 @@ Word& Loader::flagged_word(std::size_t i, std::string_view text) {
 
 // The first ')' outside any comment from i to e, or npos.
 std::size_t Loader::stray_close(std::size_t i, std::size_t e) const {
-    if (i >= e || !std::memchr(text_.data() + i, ')', e - i)) return std::string_view::npos;  // most blocks
+    if (i >= e || (!line_close_ && within_line(i, e)) || !std::memchr(text_.data() + i, ')', e - i))
+        return std::string_view::npos;  // most blocks
     bool in_comment = false;
     for (; i < e; ++i) {
         if (text_[i] == '(') in_comment = true;

@@ -150,12 +150,17 @@ void Loader::begin_line(std::size_t b, std::size_t e) {
     ++line_no_;
     line_start_ = column_offset_ = b;
     column_ = 1;
-    line_ascii_ = !swar::any_high_byte(text_.data() + b, e - b);
+    line_end_ = e;
+    swar::LineMarks marks = swar::line_marks(text_.data() + b, e - b);
+    line_ascii_ = !marks.high;
+    line_semicolon_ = marks.semicolon;
+    line_close_ = marks.close;
 }
 
 // Columns count characters, not bytes: on a line that is not ASCII the count goes on from the last
 // place asked for (forwards or back), so that a line's findings cost its length once, not once each.
-Location Loader::at(std::size_t offset) const {
+// at()'s general case: a tape's frames, or a line with characters of more than one byte.
+Location Loader::located(std::size_t offset) const {
     Location l;
     l.offset = base_ + offset;
     if (!frame_of_.empty()) l.frame = frame_of_[std::min(offset, frame_of_.size() - 1)] + 1;

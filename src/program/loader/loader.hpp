@@ -49,7 +49,26 @@ private:
     void run(std::string_view text, std::span<const std::uint64_t> frame_of);
     Location end_location() const;
     void begin_line(std::size_t b, std::size_t e);
-    Location at(std::size_t offset) const;
+    /// Where byte offset of text_ stands. Inline for the plain case (an ASCII line of a text): asked
+    /// of every word.
+    Location at(std::size_t offset) const {
+        if (!line_ascii_ || !frame_of_.empty()) return located(offset);
+        return Location{
+            .offset = base_ + offset, .frame = std::nullopt, .line = line_no_, .column = offset - line_start_ + 1};
+    }
+    /// The same, written into l field by field: a Location made on the stack and copied whole reads
+    /// back what was just stored in a wider piece than it was stored in, and the CPU stalls on that.
+    void locate(std::size_t offset, Location& l) const {
+        if (!line_ascii_ || !frame_of_.empty()) {
+            l = located(offset);
+            return;
+        }
+        l.offset = base_ + offset;
+        l.frame.reset();
+        l.line = line_no_;
+        l.column = offset - line_start_ + 1;
+    }
+    Location located(std::size_t offset) const;
     void find(std::string_view rule, std::size_t offset, std::uint64_t block, std::string message);
     std::size_t skip_blanks(std::size_t i, std::size_t e) const;
 
@@ -131,6 +150,11 @@ private:
     std::uint64_t line_no_ = 0, ordinal_ = 0;
     std::size_t line_start_ = 0;
     bool line_ascii_ = true;
+    // The line [line_start_, line_end_) holds a ';' or a ')': where it holds none, no block of it needs
+    // to look for one.
+    std::size_t line_end_ = 0;
+    bool line_semicolon_ = true, line_close_ = true;
+    bool within_line(std::size_t i, std::size_t e) const { return i >= line_start_ && e <= line_end_; }
     mutable std::size_t column_offset_ = 0;  // the last place of a non-ASCII line a column was counted for
     mutable std::uint64_t column_ = 1;       // and that column
     bool any_program_ = false;

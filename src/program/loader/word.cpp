@@ -30,7 +30,7 @@ constexpr auto char_class = [] {
 // Scans first, then copies whole runs: this is the loader's hot loop.
 void Loader::word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t block_no, Word& w) {
     w.address = rules_->lowercase ? upper(text_[i]) : text_[i];
-    w.where = at(i);
+    locate(i, w.where);
     w.sign = 0;
     w.point = -1;
     w.macro = false;
@@ -41,17 +41,23 @@ void Loader::word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t
                                char_class[static_cast<unsigned char>(text_[i + 1])] == CharClass::point);
     if ((rules_->macro_b || rules_->o_words) && !plain && macro_word(i, e, next, w)) return;
     int points = 0, digits = 0;
-    long long value = 0;
+    // Wraps past 18 digits, when digit_count says 19 and no one reads it.
+    unsigned long long value = 0;
     std::size_t j = i + 1, end = j, first_blank = std::string_view::npos;
+    const char* s = text_.data();
     for (; j < e; ++j) {
-        char c = text_[j];
-        CharClass k = char_class[static_cast<unsigned char>(c)];
-        if (k == CharClass::digit) {
-            if (++digits <= 18) value = value * 10 + (c - '0');
-        } else if (k == CharClass::point) {
+        unsigned digit = static_cast<unsigned char>(s[j]) - unsigned{'0'};
+        if (digit < 10) {  // the common case first: one compare
+            value = value * 10 + digit;
+            ++digits;
+            end = j + 1;
+            continue;
+        }
+        CharClass k = char_class[static_cast<unsigned char>(s[j])];
+        if (k == CharClass::point) {
             if (++points == 1) w.point = digits;
         } else if (k == CharClass::sign && !w.sign && digits == 0 && points == 0)
-            w.sign = c;
+            w.sign = s[j];
         else if (k == CharClass::blank) {
             if (first_blank == std::string_view::npos) first_blank = j;
             continue;
@@ -60,7 +66,7 @@ void Loader::word(std::size_t i, std::size_t e, std::size_t* next, std::uint64_t
         end = j + 1;
     }
     *next = j;
-    w.digits_value = value;
+    w.digits_value = static_cast<long long>(value);
     w.digit_count = std::min(digits, 19);
     std::string_view span = text_.substr(i, end - i);
     if (first_blank >= end) {
