@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "tape/encode.hpp"
@@ -83,6 +84,30 @@ TEST(ProgramLoader, EverySplitPointGivesTheSameEvents) {
             loader.finish();
             ASSERT_EQ(pieces.events, whole.events) << "cut at " << cut << " and " << cut2;
         }
+    }
+}
+
+// A Fanuc program whose '%' holds comment lines back until its first block: they are loaded at their
+// own places in the text when it comes, and the line then goes on with what the loader knows of it (its
+// ';' ends of block, its stray ')'), wherever the text was cut.
+TEST(ProgramLoader, HeldCommentLinesAndEveryCutKeepTheLinesOwnMarks) {
+    const std::string fanuc = "%\n(HEADER)\n\n(" + std::string(100, 'A') + ")\nG0 X1;G1 X2 F1)\nM30\n%\n";
+    Recorder whole;
+    load_each(fanuc, {}, whole, LoadOptions{Dialect::fanuc});
+    auto has = [&](std::string_view start) {
+        return std::any_of(whole.events.begin(), whole.events.end(),
+                           [&](const std::string& e) { return e.starts_with(start); });
+    };
+    EXPECT_TRUE(has("block G0 X1 @"));  // the ';' ends the block
+    EXPECT_TRUE(has("block G1 X2 F1) @"));
+    EXPECT_TRUE(has("finding unexpected-character @121 'G1 X2 F1)' is taken as a comment"));
+    for (std::size_t cut = 0; cut <= fanuc.size(); ++cut) {
+        Recorder pieces;
+        ProgramLoader loader(pieces, LoadOptions{Dialect::fanuc});
+        loader.feed(std::string_view(fanuc).substr(0, cut));
+        loader.feed(std::string_view(fanuc).substr(cut));
+        loader.finish();
+        ASSERT_EQ(pieces.events, whole.events) << "cut at " << cut;
     }
 }
 

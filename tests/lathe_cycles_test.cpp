@@ -131,6 +131,19 @@ TEST(LatheCycles, ThreadDepths) {
     EXPECT_TRUE(tape::motion::thread_depths(1e9, 1e-9, 0, 0, 1).empty());
 }
 
+// Depths written in decimal are not exact in binary: a pass that reaches the thread's height but for
+// rounding reaches it, and a count of passes of exactly the bound is within it. K0.043075 D0.01076875
+// is 4 first cuts deep: 16 passes, however the two values were rounded; K0.007 D0.00007 is 10 000.
+TEST(LatheCycles, ThreadDepthsAreNotMadeByRounding) {
+    for (double first : {0.01076875, std::nextafter(0.01076875, 0.0), std::nextafter(0.01076875, 1.0)}) {
+        auto d = tape::motion::thread_depths(0.043075, first, 0, 0, 0);
+        ASSERT_EQ(d.size(), 16u) << first;
+        EXPECT_EQ(d.back(), 0.043075);
+    }
+    EXPECT_EQ(tape::motion::thread_depths(0.007, 0.00007, 0, 0, 0, 10000).size(), 10000u);
+    EXPECT_TRUE(tape::motion::thread_depths(0.007, 0.00007, 0, 0, 0, 9999).empty());
+}
+
 // G76 two-block, M30x1.5 outside: X26.16 is the root at the end (radius 13.08), P920 the height 0.92,
 // Q400 the first cut 0.4, Q100 the minimum 0.1, R0.05 the allowance. Each pass: X in to
 // 13.08 + (0.92 - depth), along Z to -20, X out to 15, Z back to 5.

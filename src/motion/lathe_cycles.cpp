@@ -30,11 +30,15 @@ std::vector<double> thread_depths(double height, double first, double min_cut, d
     bool sane = std::isfinite(height) && std::isfinite(first) && height > 0 && first > 0 && allowance >= 0 &&
                 allowance < height && min_cut >= 0 && finish_passes >= 0;
     double rough_to = height - allowance;
-    if (!sane || (rough_to / first) * (rough_to / first) > static_cast<double>(max_passes)) return out;
+    // Decimal depths in binary: a pass that reaches the depth but for rounding reaches it (K4. D1. makes
+    // 16 passes, not a 17th of 1e-16), and a count of passes of exactly max_passes is not over it.
+    double slack = rough_to * 1e-9;
+    double passes = (rough_to / first) * (rough_to / first);
+    if (!sane || passes > static_cast<double>(max_passes) * (1 + 1e-9)) return out;
     double before = 0;
     for (int n = 1; before < rough_to; ++n) {
         double depth = std::max(first * std::sqrt(static_cast<double>(n)), before + min_cut);
-        before = std::min(depth, rough_to);
+        before = depth >= rough_to - slack ? rough_to : depth;
         out.push_back(before);
     }
     for (int i = 0; i < finish_passes; ++i) out.push_back(height);

@@ -163,11 +163,13 @@ void Loader::replay_held() {
     std::vector<std::uint64_t> frames = std::move(held_frames_);
     held_.clear();
     held_frames_.clear();
-    auto saved = std::tuple(text_, frame_of_, base_, line_no_, line_start_, line_ascii_, column_offset_, column_);
+    auto saved = std::tuple(text_, frame_of_, base_, line_no_, line_start_, line_end_, line_ascii_, line_semicolon_,
+                            line_close_, column_offset_, column_);
     base_ = held_base_;
     line_no_ = held_line_;
     run(held, frames);
-    std::tie(text_, frame_of_, base_, line_no_, line_start_, line_ascii_, column_offset_, column_) = saved;
+    std::tie(text_, frame_of_, base_, line_no_, line_start_, line_end_, line_ascii_, line_semicolon_, line_close_,
+             column_offset_, column_) = saved;
 }
 
 // Text after a program's end or the end of the record: blank lines count once text has come.
