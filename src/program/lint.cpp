@@ -160,18 +160,30 @@ unsigned letter_slot(char c) {
     return folded >= 'a' && folded <= 'z' ? folded & 31u : 0;
 }
 
-std::uint32_t index_of(const Block& b, const Word& w) { return static_cast<std::uint32_t>(&w - b.words.data() + 1); }
+// The first word of a block in each of 32 slots (a letter's, either case: c & 31), kept as its index:
+// an index is read only where the slot's bit is set, as zeroing the arrays for every block was a tenth
+// of linting a long program.
+class FirstWords {
+public:
+    const Word* at(const Block& b, unsigned slot) const {
+        return slots_ >> slot & 1 ? &b.words[index_[slot]] : nullptr;
+    }
+    void set(const Block& b, unsigned slot, const Word& w) {
+        index_[slot] = static_cast<std::uint32_t>(&w - b.words.data());
+        slots_ |= 1u << slot;
+    }
+
+private:
+    std::array<std::uint32_t, 32> index_;
+    std::uint32_t slots_ = 0;
+};
 
 // With two dialects close, a word is held to what both readings ask: the looser of the two.
 void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect> close, bool macro_call) {
     const DialectRules& rules = dialect_rules(dialect);
     bool gost_dimensions = dialect == Dialect::gost && !close;
     bool lathe_cycles = dialect == Dialect::fanuc || close == Dialect::fanuc;
-    // By address and by group (letters both, slot c & 31): which word came first, as its index in the
-    // block plus one, read only where the slot's bit is set: zeroing the arrays for every block was a
-    // tenth of linting a long program.
-    std::array<std::uint32_t, 32> seen, group;
-    std::uint32_t seen_slots = 0, group_slots = 0;
+    FirstWords seen, group;  // by address, by G group
     int max_rank = -1;
     const Word* max_word = nullptr;
     const Word* previous = nullptr;
@@ -185,12 +197,12 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
         unsigned a = letter_slot(w.address);
         bool dimension = gost_dimensions ? is_dimension(w.address) : is_axis_or_center(w.address);
         if (dimension && dimensions && a) {
-            if (seen_slots >> a & 1)
+            if (const Word* first = seen.at(b, a))
                 add(out, "repeated-dimension", w.where, b.ordinal,
-                    w.text + " repeats " + b.words[seen[a] - 1].text +
+                    w.text + " repeats " + first->text +
                         ": a dimension or interpolation word may stand once in a block (§2.4)");
             else
-                seen[a] = index_of(b, w), seen_slots |= 1u << a;
+                seen.set(b, a, w);
         }
         auto code = w.address == 'G' ? w.integer() : std::nullopt;
         if (code)
@@ -198,12 +210,12 @@ void word_checks(Add out, const Block& b, Dialect dialect, std::optional<Dialect
                 unsigned g = letter_slot(f->group);
                 // On a Fanuc lathe G90, G92 and G94 are turning cycles, not of the groups of table 4.
                 bool lathe_cycle = lathe_cycles && (*code == 90 || *code == 92 || *code == 94);
-                if (!lathe_cycle && group_slots >> g & 1)
+                const Word* first = group.at(b, g);
+                if (!lathe_cycle && first)
                     add(out, "g-group", w.where, b.ordinal,
-                        w.text + " and " + b.words[group[g] - 1].text + " are both of group " + f->group +
-                            " (§2.5, table 4)");
+                        w.text + " and " + first->text + " are both of group " + f->group + " (§2.5, table 4)");
                 else if (!lathe_cycle)
-                    group[g] = index_of(b, w), group_slots |= 1u << g;
+                    group.set(b, g, w);
             }
         if (w.sign && unsigned_letters.has(w.address))
             add(out, "sign-not-allowed", w.where, b.ordinal,
