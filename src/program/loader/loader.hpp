@@ -49,15 +49,15 @@ private:
     void run(std::string_view text, std::span<const std::uint64_t> frame_of);
     Location end_location() const;
     void begin_line(std::size_t b, std::size_t e);
-    /// Where byte offset of text_ stands. Inline for the plain case (an ASCII line of a text): asked
-    /// of every word.
+    /// Where byte offset of text_ stands.
     Location at(std::size_t offset) const {
-        if (!line_ascii_ || !frame_of_.empty()) return located(offset);
-        return Location{
-            .offset = base_ + offset, .frame = std::nullopt, .line = line_no_, .column = offset - line_start_ + 1};
+        Location l;
+        locate(offset, l);
+        return l;
     }
-    /// The same, written into l field by field: a Location made on the stack and copied whole reads
-    /// back what was just stored in a wider piece than it was stored in, and the CPU stalls on that.
+    /// The same, written into l field by field, inline for the plain case (an ASCII line of a text), as
+    /// every word asks: a Location made on the stack and copied whole reads back what was just stored
+    /// in a wider piece than it was stored in, and the CPU stalls on that.
     void locate(std::size_t offset, Location& l) const {
         if (!line_ascii_ || !frame_of_.empty()) {
             l = located(offset);
