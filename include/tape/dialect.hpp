@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -22,21 +23,21 @@ std::optional<Dialect> parse_dialect(std::string_view name);
 /// What a dialect accepts: one row of the table in dialect.cpp.
 struct DialectRules {
     Dialect dialect;
-    bool needs_percent;             ///< text before the first '%' is label, not program (§1.8)
-    bool lowercase;                 ///< lowercase letters are addresses as their capitals
-    bool semicolon_ends_block;      ///< ';' is the end of block as manuals print it
-    bool semicolon_comment;         ///< ';' starts a comment to the end of the line
-    bool macro_b;                   ///< Custom Macro B: #n variables, [ ] expressions, IF/GOTO/WHILE/DO/END
-    bool o_words;                   ///< o-word subroutines and control flow, #<named> parameters
-    bool o_program_number;          ///< 'O' (or ':') and digits at a block's start is the program number
-    bool main_blocks;               ///< ':' in place of N marks a main block (§2.6)
-    bool skip_levels;               ///< "/1".."/9" optional block skip levels
-    bool closing_percent;           ///< a '%' after the end of program closes the record
-    bool ordered_words;             ///< the recommended word order (§2.2) is checked
-    bool increasing_numbers;        ///< block numbers are checked to increase
-    bool corner_words;              ///< \",C1.\" chamfer and \",R2.\" corner rounding after a move
-    std::string_view program_ends;  ///< the M codes that end a program, e.g. "2 30 99"
-    std::string_view reference;     ///< the document the dialect follows
+    bool needs_percent;                 ///< text before the first '%' is label, not program (§1.8)
+    bool lowercase;                     ///< lowercase letters are addresses as their capitals
+    bool semicolon_ends_block;          ///< ';' is the end of block as manuals print it
+    bool semicolon_comment;             ///< ';' starts a comment to the end of the line
+    bool macro_b;                       ///< Custom Macro B: #n variables, [ ] expressions, IF/GOTO/WHILE/DO/END
+    bool o_words;                       ///< o-word subroutines and control flow, #<named> parameters
+    bool o_program_number;              ///< 'O' (or ':') and digits at a block's start is the program number
+    bool main_blocks;                   ///< ':' in place of N marks a main block (§2.6)
+    bool skip_levels;                   ///< "/1".."/9" optional block skip levels
+    bool closing_percent;               ///< a '%' after the end of program closes the record
+    bool ordered_words;                 ///< the recommended word order (§2.2) is checked
+    bool increasing_numbers;            ///< block numbers are checked to increase
+    bool corner_words;                  ///< \",C1.\" chamfer and \",R2.\" corner rounding after a move
+    std::span<const int> program_ends;  ///< the M codes that end a program, e.g. 2 30 99
+    std::string_view reference;         ///< the document the dialect follows
 };
 
 const DialectRules& dialect_rules(Dialect d);

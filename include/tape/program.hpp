@@ -95,8 +95,8 @@ struct Block {
     std::string text() const;
 };
 
-/// True when the block holds one of the M codes in ends ("2 30", "2 30 99").
-bool holds_end_code(const Block& block, std::string_view ends);
+/// True when the block holds one of the M codes in ends (DialectRules::program_ends, or {99}).
+bool holds_end_code(const Block& block, std::span<const int> ends);
 
 /// A program number without its 'O' or ':' and leading zeros ("O0012", ":12" -> "12"), so that the
 /// spellings of one number compare equal.

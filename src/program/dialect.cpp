@@ -14,14 +14,15 @@ namespace {
 // o_program_number main_blocks skip_levels closing_percent ordered_words increasing_numbers corner_words.
 // none reads what every control has in common loosely enough that nothing of another control's syntax
 // is refused: any case, ';' and ( ) comments, '/1'-'/9', M02 and M30 as ends.
+constexpr int gost_ends[] = {2, 30, 102, 130}, fanuc_ends[] = {2, 30, 99}, plain_ends[] = {2, 30};
 constexpr std::array<DialectRules, 4> table = {{
-    {Dialect::gost, true, false, false, false, false, false, false, true, false, false, true, true, false,
-     "2 30 102 130", "ГОСТ 20999-83 (ISO 6983)"},
-    {Dialect::fanuc, false, false, true, false, true, false, true, false, true, true, false, false, true, "2 30 99",
+    {Dialect::gost, true, false, false, false, false, false, false, true, false, false, true, true, false, gost_ends,
+     "ГОСТ 20999-83 (ISO 6983)"},
+    {Dialect::fanuc, false, false, true, false, true, false, true, false, true, true, false, false, true, fanuc_ends,
      "Fanuc Series 0i/16i/18i/21i/30i operator's manual: program format, Custom Macro B"},
-    {Dialect::linuxcnc, false, true, false, true, false, true, false, false, false, true, false, false, false, "2 30",
-     "LinuxCNC G-code reference (RS274NGC): overview, O codes, parameters"},
-    {Dialect::none, false, true, false, true, false, false, false, false, true, false, false, false, false, "2 30",
+    {Dialect::linuxcnc, false, true, false, true, false, true, false, false, false, true, false, false, false,
+     plain_ends, "LinuxCNC G-code reference (RS274NGC): overview, O codes, parameters"},
+    {Dialect::none, false, true, false, true, false, false, false, false, true, false, false, false, false, plain_ends,
      "what holds for every control: characters, parity, block structure, comments"},
 }};
 

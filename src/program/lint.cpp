@@ -301,7 +301,8 @@ void LintVisitor::block(const Block& b) {
         last_number_ = number;
     }
     if (dialect_ == Dialect::fanuc) targets_->block(b);
-    if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, "99");
+    static constexpr int m99[] = {99};
+    if (b.ends && dialect_ == Dialect::fanuc) subprogram_ = holds_end_code(b, m99);
     bool macro_call = has_g(b, {65, 66});
     word_checks(sink_, b, dialect_, close_, macro_call);
     if (arcs_) arcs_->next(b);

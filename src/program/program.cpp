@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cstring>
 
 #include "codec/utf8.hpp"
@@ -48,20 +47,11 @@ std::string_view program_key(std::string_view s) {
     return s;
 }
 
-// Asked of every block by the loader: no string is made, and a block without M words costs a loop.
-bool holds_end_code(const Block& block, std::string_view ends) {
-    for (const Word& w : block.words) {
-        if (w.address != 'M') continue;
-        auto v = w.integer();
-        if (!v) continue;
-        for (std::size_t at = 0; at < ends.size();) {
-            std::size_t stop = std::min(ends.find(' ', at), ends.size());
-            long long code = 0;
-            auto [past, error] = std::from_chars(ends.data() + at, ends.data() + stop, code);
-            if (error == std::errc() && past == ends.data() + stop && code == *v) return true;
-            at = stop + 1;
-        }
-    }
+// Asked of every block by the loader: a block without M words costs a loop.
+bool holds_end_code(const Block& block, std::span<const int> ends) {
+    for (const Word& w : block.words)
+        if (auto v = w.address == 'M' ? w.integer() : std::nullopt)
+            if (std::find(ends.begin(), ends.end(), *v) != ends.end()) return true;
     return false;
 }
 

@@ -93,10 +93,10 @@ std::size_t Loader::block(std::size_t i, std::size_t e) {
     blk.words.resize(words_used_);
     blk.comments.resize(comments_used_);
     blk.source.assign(trim_right(text_.substr(start_at, end - start_at)));
-    bool m_words = std::any_of(blk.words.begin(), blk.words.end(), [](const Word& w) { return w.address == 'M'; });
-    blk.ends = m_words && holds_end_code(blk, rules_->program_ends);
+    static constexpr int m97[] = {97};
+    blk.ends = holds_end_code(blk, rules_->program_ends);
     last_block_stops_ = !blk.statements.empty() && stops_program(blk);
-    local_subprograms_ |= m_words && rules_->dialect == Dialect::fanuc && holds_end_code(blk, "97");  // Haas's M97 P
+    local_subprograms_ |= rules_->dialect == Dialect::fanuc && holds_end_code(blk, m97);  // Haas's M97 P calls
     last_block_where_ = blk.where;
     last_block_ordinal_ = blk.ordinal;
     v_.block(blk);
