@@ -1,6 +1,7 @@
 #include "tape/serial_settings.hpp"
 
 #include "device_query.hpp"
+#include "serial_keys.hpp"
 #include "serial_termios.hpp"
 #include "tape/error.hpp"
 
@@ -22,8 +23,6 @@ const BaudConstant* find_baud(unsigned baud) {
         if (b.baud == baud) return &b;
     return nullptr;
 }
-
-constexpr std::string_view serial_keys[] = {"baud", "bits", "parity", "stop", "flow"};
 
 }  // namespace
 
