@@ -203,3 +203,27 @@ TEST(MachineExplain, EveryCodeOfTheSampleIsNamed) {
               "S64: 2 digit(s) where S3 takes 3: not read, T102 tool 2, after the machine's acknowledgement, M104 "
               "spindle counter-clockwise, after the machine's acknowledgement");
 }
+
+// The profile's line fills the keys a serial: string does not give, read as the serial backend reads
+// them: a key given (even %XX-encoded) wins, parity follows the bits in force, and a string the port
+// would refuse is refused here with the same usage error. Other devices are left as they are.
+TEST(MachineLine, FillsTheKeysTheDeviceStringDoesNotGive) {
+    tape::MachineLine l;
+    l.baud = 4800;
+    l.data_bits = 7;
+    l.stop_bits = 2;
+    l.flow = tape::Flow::none;
+    l.parity = tape::Parity::even;
+    EXPECT_EQ(tape::device_with_machine_line("serial:/dev/ttyS0", l),
+              "serial:/dev/ttyS0?baud=4800&bits=7&stop=2&flow=none&parity=even");
+    EXPECT_EQ(tape::device_with_machine_line("serial:/dev/ttyS0?baud=9600&bits=%38", l),
+              "serial:/dev/ttyS0?baud=9600&bits=%38&stop=2&flow=none");  // 8 bits: no parity bit added
+    EXPECT_EQ(tape::device_with_machine_line("file:out.ptp", l), "file:out.ptp");
+    try {
+        tape::device_with_machine_line("serial:/dev/ttyS0?speed=9600", l);
+        FAIL() << "an unknown setting was taken";
+    } catch (const tape::Error& e) {
+        EXPECT_EQ(e.code(), tape::Errc::usage);
+        EXPECT_NE(std::string(e.what()).find("unknown setting 'speed'"), std::string::npos) << e.what();
+    }
+}
