@@ -36,3 +36,7 @@ inline std::vector<TapeFile> every_tape() {
     }
     return tapes;
 }
+
+/// How many tapes every_tape() finds at the least: the project's own samples in a clone alone, and more
+/// than 20 with ../shared/data beside it.
+inline std::size_t every_tape_minimum() { return shared_data_dir().empty() ? 15 : 21; }
